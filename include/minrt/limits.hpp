@@ -1,0 +1,31 @@
+// Scene and image limits shared by the core, the host tools and the firmware.
+// The SLD format allows 60 objects; the original holds 50 AND networks. The
+// other bounds are ours: the original had none (it grew OCaml arrays), so we
+// picked values well above anything a course scene uses and reject more with
+// an error instead of overrunning fixed storage.
+#pragma once
+
+#include <cstdint>
+
+namespace minrt::limits {
+
+inline constexpr int kMaxObjects = 60;
+inline constexpr int kMaxAndNetworks = 50;
+// Entries of one AND network (object indices), not counting the -1 terminator.
+inline constexpr int kMaxAndNetworkLength = 60;
+// OR networks (rows of the OR matrix), not counting the terminating row.
+inline constexpr int kMaxOrNetworks = 64;
+// Entries of one OR network: the range primitive plus AND network indices.
+inline constexpr int kMaxOrNetworkLength = 1 + kMaxAndNetworks;
+// Longest accepted number token; the original overflowed its stack on 1 MB.
+inline constexpr int kMaxTokenLength = 256;
+
+inline constexpr int kMaxImageWidth = 4096;
+inline constexpr int kMaxImageHeight = 4096;
+inline constexpr int kDefaultImageWidth = 512;
+inline constexpr int kDefaultImageHeight = 512;
+
+// Object index meaning "no range primitive" in an OR network.
+inline constexpr int kNoRangePrimitive = 99;
+
+}  // namespace minrt::limits
