@@ -1,0 +1,76 @@
+// Writes the image as the original prints it: "P3\nW H 255\n" then one
+// "R G B\n" line per pixel, or the same header with P6 and raw bytes.
+// Buffers a little and flushes after every row so rows stream as they finish.
+#pragma once
+
+#include <cstdint>
+
+#include "byte_io.hpp"
+
+namespace minrt {
+
+enum class PpmFormat { kP3, kP6 };
+
+class PpmWriter {
+ public:
+  PpmWriter(ByteSink out, PpmFormat format) : out_(out), format_(format) {}
+
+  void header(int width, int height) {
+    put('P');
+    put(format_ == PpmFormat::kP3 ? '3' : '6');
+    put('\n');
+    put_int(width);
+    put(' ');
+    put_int(height);
+    put(' ');
+    put_int(255);
+    put('\n');
+  }
+
+  // Channels already clamped to 0..255.
+  void pixel(int r, int g, int b) {
+    if (format_ == PpmFormat::kP6) {
+      put(static_cast<char>(r));
+      put(static_cast<char>(g));
+      put(static_cast<char>(b));
+      return;
+    }
+    put_int(r);
+    put(' ');
+    put_int(g);
+    put(' ');
+    put_int(b);
+    put('\n');
+  }
+
+  void end_row() { flush(); }
+
+  void flush() {
+    if (used_ != 0) out_.put(buf_, used_);
+    used_ = 0;
+  }
+
+ private:
+  void put(char c) {
+    if (used_ == sizeof buf_) flush();
+    buf_[used_++] = static_cast<std::uint8_t>(c);
+  }
+  void put_int(int v) {
+    char digits[12];
+    int n = 0;
+    unsigned u = v < 0 ? 0u - static_cast<unsigned>(v) : static_cast<unsigned>(v);
+    do {
+      digits[n++] = static_cast<char>('0' + u % 10);
+      u /= 10;
+    } while (u != 0);
+    if (v < 0) put('-');
+    while (n > 0) put(digits[--n]);
+  }
+
+  ByteSink out_;
+  PpmFormat format_;
+  std::uint8_t buf_[1024];
+  std::size_t used_ = 0;
+};
+
+}  // namespace minrt

@@ -1,0 +1,192 @@
+// minrt: the host renderer, a drop-in for the original min-rt. Reads an SLD
+// scene (stdin or a file), writes the PPM image (stdout or -o FILE).
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include <unistd.h>
+
+#include "render_variants.hpp"
+#include "stdio_stream.hpp"
+
+namespace {
+
+constexpr int kExitUsage = 2;
+constexpr int kExitSceneError = 2;
+constexpr int kExitIoError = 1;
+
+void print_help(std::FILE* f) {
+  std::fputs(
+      "usage: minrt [OPTIONS] [SCENE.sld]\n"
+      "Renders an SLD scene like the original min-rt: the scene comes from SCENE.sld\n"
+      "(or standard input), the PPM image goes to standard output.\n"
+      "\n"
+      "  --size WxH               image size (default 512x512, at most 4096x4096)\n"
+      "  --format p3|p6           PPM flavour (default p3, the original's text form)\n"
+      "  --precision double|float floating-point type (default double)\n"
+      "  --shims libm|portable|portable-fast\n"
+      "                           math routines: the C library (default) or the\n"
+      "                           add/sub/mul/div-only shims of the firmware (float only)\n"
+      "  -o, --output FILE        write the image to FILE (complete or not at all)\n"
+      "  -q, --quiet              no warnings on standard error\n"
+      "  -h, --help               this text\n"
+      "  --version                version\n"
+      "\n"
+      "double with libm reproduces the original program's output byte for byte.\n"
+      "Errors are printed as FILE:LINE:COL: error: MESSAGE; exit status 2.\n",
+      f);
+}
+
+[[noreturn]] void usage_error(const std::string& msg) {
+  std::fprintf(stderr, "minrt: %s (see minrt --help)\n", msg.c_str());
+  std::exit(kExitUsage);
+}
+
+bool parse_size(const char* s, int& w, int& h) {
+  char* end = nullptr;
+  errno = 0;
+  long a = std::strtol(s, &end, 10);
+  if (end == s || (*end != 'x' && *end != 'X')) return false;
+  const char* t = end + 1;
+  long b = std::strtol(t, &end, 10);
+  if (end == t || *end != 0 || errno != 0) return false;
+  if (a < 1 || b < 1 || a > minrt::limits::kMaxImageWidth || b > minrt::limits::kMaxImageHeight)
+    return false;
+  w = static_cast<int>(a);
+  h = static_cast<int>(b);
+  return true;
+}
+
+struct WarningContext {
+  const char* file;
+};
+
+void print_warning(void* ctx, const minrt::Diagnostic& d) {
+  const auto* w = static_cast<const WarningContext*>(ctx);
+  std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w->file, d.pos.line, d.pos.col, d.message);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  minrt::RenderOptions options;
+  minrt::host::Variant variant;
+  const char* scene_path = nullptr;
+  const char* output_path = nullptr;
+  bool quiet = false;
+
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* name) -> const char* {
+      if (i + 1 >= argc) usage_error(std::string(name) + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help") {
+      print_help(stdout);
+      return 0;
+    } else if (arg == "--version") {
+      std::printf("minrt %s\n", MINRT_VERSION);
+      return 0;
+    } else if (arg == "--size") {
+      const char* v = value("--size");
+      if (!parse_size(v, options.width, options.height))
+        usage_error(std::string("bad --size '") + v + "': expected WxH, each 1..4096");
+    } else if (arg == "--format") {
+      const std::string v = value("--format");
+      if (v == "p3" || v == "P3") options.format = minrt::PpmFormat::kP3;
+      else if (v == "p6" || v == "P6") options.format = minrt::PpmFormat::kP6;
+      else usage_error("bad --format '" + v + "': expected p3 or p6");
+    } else if (arg == "--precision") {
+      const std::string v = value("--precision");
+      if (v == "double") variant.precision = minrt::host::Precision::kDouble;
+      else if (v == "float") variant.precision = minrt::host::Precision::kFloat;
+      else usage_error("bad --precision '" + v + "': expected double or float");
+    } else if (arg == "--shims") {
+      const std::string v = value("--shims");
+      if (v == "libm") variant.shims = minrt::host::ShimSet::kLibm;
+      else if (v == "portable") variant.shims = minrt::host::ShimSet::kPortable;
+      else if (v == "portable-fast") variant.shims = minrt::host::ShimSet::kPortableFast;
+      else usage_error("bad --shims '" + v + "': expected libm, portable or portable-fast");
+    } else if (arg == "-o" || arg == "--output") {
+      output_path = value("--output");
+    } else if (arg == "-q" || arg == "--quiet") {
+      quiet = true;
+    } else if (arg == "-") {
+      scene_path = nullptr;
+    } else if (!arg.empty() && arg[0] == '-') {
+      usage_error("unknown option '" + arg + "'");
+    } else if (scene_path != nullptr) {
+      usage_error("more than one scene file given");
+    } else {
+      scene_path = argv[i];
+    }
+  }
+  if (minrt::host::variant_name(variant) == nullptr)
+    usage_error("this combination of --precision and --shims is not built (portable shims are float only)");
+
+  std::FILE* in = stdin;
+  const char* display_name = scene_path != nullptr ? scene_path : "<stdin>";
+  if (scene_path != nullptr) {
+    in = std::fopen(scene_path, "rb");
+    if (in == nullptr) {
+      std::fprintf(stderr, "minrt: cannot open %s: %s\n", scene_path, std::strerror(errno));
+      return kExitIoError;
+    }
+  }
+
+  // With -o the image goes to a temporary file renamed into place only once
+  // it is complete.
+  std::string temp_path;
+  std::FILE* out = stdout;
+  if (output_path != nullptr) {
+    temp_path = std::string(output_path) + ".partial";
+    out = std::fopen(temp_path.c_str(), "wb");
+    if (out == nullptr) {
+      std::fprintf(stderr, "minrt: cannot write %s: %s\n", temp_path.c_str(), std::strerror(errno));
+      return kExitIoError;
+    }
+  }
+
+  minrt::host::FileSource source{in};
+  minrt::host::FileSink sink{out};
+  WarningContext wctx{display_name};
+  minrt::WarningSink warnings;
+  if (!quiet) warnings = minrt::WarningSink{&print_warning, &wctx};
+  minrt::Diagnostic error;
+  const minrt::RenderStatus st =
+      minrt::host::render_variant(variant, source.source(), sink.sink(), options, error, warnings);
+  const bool read_failed = std::ferror(in) != 0;
+  if (in != stdin) std::fclose(in);
+  const bool write_failed = sink.failed || std::fflush(out) != 0;
+
+  auto discard = [&] {
+    if (output_path != nullptr) {
+      std::fclose(out);
+      std::remove(temp_path.c_str());
+    }
+  };
+  if (st != minrt::RenderStatus::kOk) {
+    discard();
+    if (error.has_pos)
+      std::fprintf(stderr, "%s:%d:%d: error: %s\n", display_name, error.pos.line, error.pos.col,
+                   error.message);
+    else
+      std::fprintf(stderr, "%s: error: %s\n", display_name, error.message);
+    return st == minrt::RenderStatus::kSceneError ? kExitSceneError : kExitIoError;
+  }
+  if (read_failed || write_failed) {
+    discard();
+    std::fprintf(stderr, "minrt: %s\n", read_failed ? "read error on the scene" : "write error on the image");
+    return kExitIoError;
+  }
+  if (output_path != nullptr) {
+    if (std::fclose(out) != 0 || std::rename(temp_path.c_str(), output_path) != 0) {
+      std::remove(temp_path.c_str());
+      std::fprintf(stderr, "minrt: cannot write %s: %s\n", output_path, std::strerror(errno));
+      return kExitIoError;
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,26 @@
+// The precision and shim combinations the host build carries, chosen at run
+// time. Each one is a separate instantiation of the same core template.
+#pragma once
+
+#include "byte_io.hpp"
+#include "diagnostic.hpp"
+#include "render.hpp"
+
+namespace minrt::host {
+
+enum class Precision { kDouble, kFloat };
+enum class ShimSet { kLibm, kPortable, kPortableFast };
+
+struct Variant {
+  Precision precision = Precision::kDouble;
+  ShimSet shims = ShimSet::kLibm;
+};
+
+// Name of the math policy behind a variant, or nullptr if not built.
+const char* variant_name(Variant v);
+
+// Allocates the arena once (sized from the limits and the width) and renders.
+RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
+                            Diagnostic& error, const WarningSink& warnings);
+
+}  // namespace minrt::host
