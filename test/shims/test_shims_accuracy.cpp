@@ -1,0 +1,86 @@
+// Accuracy of the portable shims against the host C library (double result,
+// compared before rounding to float) over the named ranges of
+// tools/shim_ulp/ulp_stats.hpp.  Each bound sits a little above what was
+// measured (docs/shims.md), so a change that makes a shim worse fails here.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+
+#include "math_portable.hpp"
+#include "ulp_stats.hpp"
+
+using namespace shim_ulp;
+
+namespace {
+
+// Course rule on the relative error, as log2 (0: must be exact).
+int course_rule_log2(Fn f) {
+  switch (f) {
+    case Fn::sqrt:
+    case Fn::atan: return -20;
+    case Fn::sin:
+    case Fn::cos: return -18;
+    case Fn::floor: return 0;
+  }
+  return 0;
+}
+
+struct Bound {
+  Fn fn;
+  int level;
+  double max_ulp;    // asserted: measured max ULP <= this
+  bool correctly_rounded;  // asserted: every sample equals the rounded reference
+};
+
+template <class P>
+void check(const Bound& b) {
+  for (const Range& r : ranges_for(b.fn, 1)) {
+    const Stats s = measure<P>(b.fn, r);
+    INFO(fn_name(b.fn) << " " << P::name << " over " << r.name << ": " << s.count
+                       << " samples, max " << s.max_ulp << " ULP at " << s.worst_arg
+                       << " (got " << s.worst_got << ", exact " << s.worst_ref
+                       << "), mean " << s.mean_ulp() << ", max rel " << s.max_rel
+                       << ", not correctly rounded " << s.not_correctly_rounded);
+    CHECK(s.count > 0);
+    CHECK(s.max_ulp <= b.max_ulp);
+    if (b.correctly_rounded) CHECK(s.not_correctly_rounded == 0);
+    const int rule = course_rule_log2(b.fn);
+    if (rule != 0) CHECK(s.max_rel < std::ldexp(1.0, rule));
+  }
+}
+
+void check_level(const Bound& b) {
+  if (b.level == 1) {
+    check<minrt::PortableFloatT<1>>(b);
+  } else {
+    check<minrt::PortableFloatT<2>>(b);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("floor is exact over all floats (sampled)", "[shims][floor][accuracy]") {
+  check_level({Fn::floor, 1, 0.0, true});
+  check_level({Fn::floor, 2, 0.0, true});
+}
+
+TEST_CASE("sqrt accuracy", "[shims][sqrt][accuracy]") {
+  check_level({Fn::sqrt, 2, 0.5, true});
+  check_level({Fn::sqrt, 1, 0.8, false});
+}
+
+TEST_CASE("sin accuracy", "[shims][sin][accuracy]") {
+  check_level({Fn::sin, 2, 0.9, false});
+  check_level({Fn::sin, 1, 2.4, false});
+}
+
+TEST_CASE("cos accuracy", "[shims][cos][accuracy]") {
+  check_level({Fn::cos, 2, 0.9, false});
+  check_level({Fn::cos, 1, 2.4, false});
+}
+
+TEST_CASE("atan accuracy", "[shims][atan][accuracy]") {
+  check_level({Fn::atan, 2, 0.95, false});
+  check_level({Fn::atan, 1, 2.75, false});
+}

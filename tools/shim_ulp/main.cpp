@@ -1,0 +1,123 @@
+// shim-ulp-table: prints a Markdown table of the accuracy of each math policy
+// (C library float, portable fast, portable accurate) over the named ranges
+// of tools/shim_ulp/ulp_stats.hpp, plus the int <-> float conversion checks.
+//
+//   shim-ulp-table [--refine N] [--exhaustive] [--only sqrt|floor|sin|cos|atan|conv]
+//                  [--no-libm]
+//
+// --refine N divides the sampling strides (default 16); --exhaustive visits
+// every float of every range (minutes per function).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "math_libm.hpp"
+#include "math_portable.hpp"
+#include "ulp_stats.hpp"
+
+namespace {
+
+using namespace shim_ulp;
+
+// log2 of the course's relative-error bound for each function (0: exact).
+int course_rule_log2(Fn f) {
+  switch (f) {
+    case Fn::sqrt: return -20;
+    case Fn::floor: return 0;
+    case Fn::sin:
+    case Fn::cos: return -18;
+    case Fn::atan: return -20;
+  }
+  return 0;
+}
+
+std::string log2_text(double v) {
+  if (v == 0.0) return "0";
+  if (!std::isfinite(v)) return "inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "2^%.1f", std::log2(v));
+  return buf;
+}
+
+template <class P>
+void table_rows(Fn f, std::int64_t refine) {
+  for (const Range& r : ranges_for(f, refine)) {
+    const Stats s = measure<P>(f, r);
+    const int rule = course_rule_log2(f);
+    const bool ok = rule == 0 ? s.max_ulp == 0.0
+                              : s.max_rel < std::ldexp(1.0, rule);
+    std::printf("| %s | %s | %s | %llu | %.3f | %.4f | %s | %.9g | %llu | %s |\n",
+                fn_name(f), P::name, r.name.c_str(),
+                static_cast<unsigned long long>(s.count), s.max_ulp,
+                s.mean_ulp(), log2_text(s.max_rel).c_str(),
+                double(s.worst_arg),
+                static_cast<unsigned long long>(s.not_correctly_rounded),
+                ok ? "yes" : "NO");
+    std::fflush(stdout);
+  }
+}
+
+// from_int against the host's correctly rounded conversion, to_int against
+// truncation, both for every `stride`-th value.
+template <class P>
+void conversion_rows(std::int64_t stride) {
+  unsigned long long n = 0, bad = 0;
+  for (std::int64_t i = INT32_MIN; i <= INT32_MAX; i += stride) {
+    ++n;
+    const float want = static_cast<float>(static_cast<std::int32_t>(i));
+    if (bits_of(P::from_int(std::int32_t(i))) != bits_of(want)) ++bad;
+  }
+  std::printf("| from_int | %s | every %lld-th int32 | %llu | mismatches: %llu |\n",
+              P::name, static_cast<long long>(stride), n, bad);
+  n = 0;
+  bad = 0;
+  const Range r{"abs(x) < 2^31", -0x1p31f, 0x1.fffffep30f, stride | 1};
+  for_each_float(r, [&](float x) {
+    ++n;
+    if (P::to_int(x) != static_cast<std::int32_t>(x)) ++bad;
+  });
+  std::printf("| to_int | %s | every %lld-th float with %s | %llu | mismatches: %llu |\n",
+              P::name, static_cast<long long>(stride | 1), r.name.c_str(), n, bad);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::int64_t refine = 16;
+  std::string only;
+  bool libm = true;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--refine") == 0 && i + 1 < argc) {
+      refine = std::atoll(argv[++i]);
+      if (refine < 1) refine = 1;
+    } else if (std::strcmp(argv[i], "--exhaustive") == 0) {
+      refine = std::int64_t(1) << 40;
+    } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
+      only = argv[++i];
+    } else if (std::strcmp(argv[i], "--no-libm") == 0) {
+      libm = false;
+    } else {
+      std::fprintf(stderr,
+                   "usage: %s [--refine N] [--exhaustive] [--only FN|conv] [--no-libm]\n",
+                   argv[0]);
+      return 2;
+    }
+  }
+  std::printf("| function | policy | range | samples | max ULP | mean ULP | "
+              "max rel err | worst arg | not CR | course rule |\n");
+  std::printf("|---|---|---|---:|---:|---:|---:|---:|---:|---|\n");
+  for (Fn f : {Fn::sqrt, Fn::floor, Fn::sin, Fn::cos, Fn::atan}) {
+    if (!only.empty() && only != fn_name(f)) continue;
+    if (libm) table_rows<minrt::LibmFloat>(f, refine);
+    table_rows<minrt::PortableFloatT<1>>(f, refine);
+    table_rows<minrt::PortableFloatT<2>>(f, refine);
+  }
+  if (only.empty() || only == "conv") {
+    const std::int64_t stride = refine >= (std::int64_t(1) << 40) ? 1 : 4097 / refine;
+    std::printf("\n| conversion | policy | values | count | result |\n|---|---|---|---:|---|\n");
+    conversion_rows<minrt::PortableFloatT<2>>(stride < 1 ? 1 : stride);
+  }
+  return 0;
+}
