@@ -4,7 +4,8 @@
 // renderer runs on a CPU whose FPU has nothing more (or on soft float).
 //
 // No libc, no <cmath>, no float<->int conversion instructions, no fma, no
-// double.  Freestanding headers only.  Algorithms and error analysis are in
+// double.  Like the rest of core/, it includes no C++ library header (only
+// the compiler's <stdint.h>), so it builds for a bare RISC-V target.  Algorithms and error analysis are in
 // docs/shims.md; the constants come from tools/shim_ulp/gen_coeffs.py.
 //
 //   PortableFloatT<2> (= PortableFloat, "float/portable"): sqrt correctly
@@ -18,18 +19,16 @@
 // round-to-nearest-even; the compensated steps below rely on both.
 #pragma once
 
-#include <bit>
-#include <cstdint>
-#include <limits>
+#include <stdint.h>
 
 #include "math_policy.hpp"
 
 namespace minrt {
 namespace portable_detail {
 
-using u32 = std::uint32_t;
-using i32 = std::int32_t;
-using u64 = std::uint64_t;
+using u32 = uint32_t;
+using i32 = int32_t;
+using u64 = uint64_t;
 
 inline constexpr u32 kSignBit = 0x80000000u;
 inline constexpr u32 kAbsMask = 0x7fffffffu;
@@ -38,8 +37,8 @@ inline constexpr u32 kFracMask = 0x007fffffu;
 inline constexpr u32 kHiddenBit = 0x00800000u;
 inline constexpr u32 kQuietNaN = 0x7fc00000u;
 
-constexpr u32 bits_of(float x) { return std::bit_cast<u32>(x); }
-constexpr float float_of(u32 b) { return std::bit_cast<float>(b); }
+constexpr u32 bits_of(float x) { return __builtin_bit_cast(u32, x); }
+constexpr float float_of(u32 b) { return __builtin_bit_cast(float, b); }
 constexpr bool nan_bits(u32 b) { return (b & kAbsMask) > kInfBits; }
 // Unbiased exponent field (subnormals and zero give -127, inf/NaN 128).
 constexpr int exponent_of(u32 b) { return int((b >> 23) & 0xffu) - 127; }
@@ -95,8 +94,7 @@ constexpr i32 to_int(float x) {
   if (e < 0) return 0;
   const bool neg = (b & kSignBit) != 0;
   if (e >= 31) {
-    return neg ? std::numeric_limits<i32>::min()
-               : std::numeric_limits<i32>::max();
+    return neg ? INT32_MIN : INT32_MAX;
   }
   const u32 m = (b & kFracMask) | kHiddenBit;
   const u32 mag = e >= 23 ? m << (e - 23) : m >> (23 - e);
@@ -485,10 +483,10 @@ struct PortableFloatT {
   static constexpr real sin(real x) { return portable_detail::sin<Level>(x); }
   static constexpr real cos(real x) { return portable_detail::cos<Level>(x); }
   static constexpr real atan(real x) { return portable_detail::atan<Level>(x); }
-  static constexpr real from_int(std::int32_t i) {
+  static constexpr real from_int(int32_t i) {
     return portable_detail::from_int(i);
   }
-  static constexpr std::int32_t to_int(real x) {
+  static constexpr int32_t to_int(real x) {
     return portable_detail::to_int(x);
   }
 };
