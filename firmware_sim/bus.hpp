@@ -1,0 +1,50 @@
+// The physical address space: RAM (fast path, inlined into the interpreter)
+// and the memory-mapped devices (slow path). The interpreter only calls into
+// this file when an access misses the RAM window or is misaligned.
+#pragma once
+#include <cstdint>
+#include <cstring>
+#include <memory>
+
+#include <minrt/memory_map.h>
+
+#include "finisher.hpp"
+#include "uart.hpp"
+
+namespace fwsim {
+
+inline constexpr uint32_t kRamBase = MINRT_RAM_BASE;
+
+class Bus {
+ public:
+  enum class Result : uint8_t { Ok, Fault, Misaligned, Stop };
+
+  explicit Bus(uint32_t ram_size);
+
+  uint8_t* ram() { return ram_.get(); }
+  const uint8_t* ram() const { return ram_.get(); }
+  uint32_t ram_size() const { return ram_size_; }
+  bool in_ram(uint32_t addr, uint32_t len) const {
+    return addr >= kRamBase && addr - kRamBase <= ram_size_ - len && len <= ram_size_;
+  }
+
+  void attach_uart(Uart* uart) { uart_ = uart; }
+  Uart* uart() const { return uart_; }
+  const Finisher& finisher() const { return finisher_; }
+
+  // Full accesses (RAM and devices); `now` is the simulated cycle count.
+  Result load(uint32_t addr, unsigned size, uint32_t& value, uint64_t now);
+  Result store(uint32_t addr, unsigned size, uint32_t value, uint64_t now);
+
+  // Reason a device wants the machine stopped (finisher, UART stall).
+  bool finished() const { return finished_; }
+
+ private:
+  std::unique_ptr<uint8_t[]> ram_;
+  uint32_t ram_size_;
+  Uart* uart_ = nullptr;
+  Finisher finisher_;
+  bool finished_ = false;
+};
+
+}  // namespace fwsim

@@ -1,0 +1,89 @@
+#include "cli_options.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+
+#include <minrt/memory_map.h>
+
+namespace fwsim {
+namespace {
+
+uint64_t parse_count(const std::string& opt, const std::string& v, bool allow_suffix) {
+  if (v.empty() || v[0] == '-') throw UsageError(opt + " needs a positive number, got '" + v + "'");
+  char* end = nullptr;
+  errno = 0;
+  unsigned long long n = std::strtoull(v.c_str(), &end, 0);
+  uint64_t mult = 1;
+  if (allow_suffix && *end && !end[1]) {
+    if (*end == 'K' || *end == 'k') mult = 1024, ++end;
+    else if (*end == 'M' || *end == 'm') mult = 1024 * 1024, ++end;
+  }
+  if (errno || *end || n == 0 || n > UINT64_MAX / mult)
+    throw UsageError(opt + " needs a positive number, got '" + v + "'");
+  return n * mult;
+}
+
+}  // namespace
+
+const char* cli_help_text() {
+  return "usage: firmware-sim [OPTIONS] ELF [-- ARGS...]\n"
+         "Runs a bare-metal RV32IMF ELF; exits with the firmware's exit code.\n"
+         "  --uart-in FILE         UART input from FILE (default stdin)\n"
+         "  --uart-out FILE        UART output to FILE (default stdout)\n"
+         "  --pty                  UART on a new pseudo-terminal (path printed on stderr)\n"
+         "  --baud N               pace the UART at N baud, 8N1, in simulated time\n"
+         "  --cycle-model FILE     cycle model file ('default' = built-in model)\n"
+         "  --profile-out FILE     per-function profile in callgrind format\n"
+         "  --folded-out FILE      folded call stacks (cycles) for flame graphs\n"
+         "  --max-instructions N   stop with an error after N instructions\n"
+         "  --ram-size N           RAM size in bytes (K/M suffix ok; default 4M)\n"
+         "  --stats                print instructions, cycles, host MIPS... on stderr\n"
+         "  --trace                print every executed instruction on stderr\n"
+         "  --help, --version\n"
+         "Exit status: firmware's code; 2 usage, 3 bad ELF, 4 trap, 5 instruction limit,\n"
+         "6 UART input exhausted while polled, 7 host I/O error.\n";
+}
+
+CliOptions parse_cli(const std::vector<std::string>& argv) {
+  CliOptions o;
+  size_t i = 0;
+  auto value = [&](const std::string& opt) -> std::string {
+    if (i + 1 >= argv.size()) throw UsageError(opt + " needs a value");
+    return argv[++i];
+  };
+  for (; i < argv.size(); ++i) {
+    const std::string& a = argv[i];
+    if (a == "--") {
+      o.args.assign(argv.begin() + static_cast<long>(i) + 1, argv.end());
+      break;
+    }
+    if (a == "--help" || a == "-h") o.help = true;
+    else if (a == "--version") o.version = true;
+    else if (a == "--uart-in") o.uart_in = value(a);
+    else if (a == "--uart-out") o.uart_out = value(a);
+    else if (a == "--pty") o.pty = true;
+    else if (a == "--baud") o.baud = parse_count(a, value(a), false);
+    else if (a == "--cycle-model") o.cycle_model = value(a);
+    else if (a == "--profile-out") o.profile_out = value(a);
+    else if (a == "--folded-out") o.folded_out = value(a);
+    else if (a == "--max-instructions") o.max_instructions = parse_count(a, value(a), false);
+    else if (a == "--ram-size") {
+      uint64_t r = parse_count(a, value(a), true);
+      if (r % 4096 || r < 65536 || r > 0x7ffff000ull)
+        throw UsageError("--ram-size must be a multiple of 4096 between 64K and 2047M");
+      o.ram_size = static_cast<uint32_t>(r);
+    } else if (a == "--stats") o.stats = true;
+    else if (a == "--trace") o.trace = true;
+    else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+    else if (o.elf.empty()) o.elf = a;
+    else throw UsageError("unexpected argument '" + a + "' (firmware arguments go after --)");
+  }
+  if (o.help || o.version) return o;
+  if (o.elf.empty()) throw UsageError("missing ELF file");
+  if (o.pty && (!o.uart_in.empty() || !o.uart_out.empty()))
+    throw UsageError("--pty cannot be combined with --uart-in/--uart-out");
+  if (!o.ram_size) o.ram_size = MINRT_RAM_DEFAULT_SIZE;
+  return o;
+}
+
+}  // namespace fwsim

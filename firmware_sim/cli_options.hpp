@@ -1,0 +1,34 @@
+// Command line of firmware-sim: `firmware-sim [OPTIONS] ELF [-- ARGS...]`.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fwsim {
+
+struct CliOptions {
+  std::string elf;
+  std::vector<std::string> args;  // after "--", passed to main(argc, argv)
+  std::string uart_in, uart_out;  // empty = stdin / stdout
+  bool pty = false;
+  uint64_t baud = 0;              // 0 = no pacing
+  std::string cycle_model;        // file, or "default"
+  std::string profile_out, folded_out;
+  uint64_t max_instructions = 0;  // 0 = unlimited
+  uint32_t ram_size = 0;          // 0 = MINRT_RAM_DEFAULT_SIZE
+  bool stats = false;
+  bool trace = false;
+  bool help = false, version = false;
+};
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws UsageError with a one-line message.
+CliOptions parse_cli(const std::vector<std::string>& argv);
+const char* cli_help_text();
+
+}  // namespace fwsim

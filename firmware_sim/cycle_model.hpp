@@ -1,0 +1,100 @@
+// Cycle model: per-class latencies, load-use stall, branch prediction and
+// optional caches, configured by a `key = value` file (docs/firmware_sim.md,
+// models/default.cfg). Only the interpreter's timed loop calls into it.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "branch_predictor.hpp"
+#include "cache_model.hpp"
+#include "decode_cache.hpp"
+#include "isa_table.hpp"
+
+namespace fwsim {
+
+struct CycleModelConfig {
+  uint64_t clock_hz = 100'000'000;
+  std::array<uint32_t, static_cast<size_t>(InsnClass::Count)> latency{};
+  uint32_t branch_taken = 1, branch_not_taken = 1, mispredict_penalty = 0, load_use_stall = 0;
+  PredictorKind predictor = PredictorKind::StaticNotTaken;
+  unsigned predictor_bits = 10;
+  CacheConfig icache, dcache;
+};
+
+// Parses a model; keys not given keep the compiled-in default model's value.
+// Throws std::runtime_error("origin:line: reason") on bad input.
+CycleModelConfig parse_cycle_model(const std::string& text, const std::string& origin);
+CycleModelConfig default_cycle_model();
+const char* default_cycle_model_text();  // models/default.cfg, embedded at build time
+
+class CycleModel {
+ public:
+  explicit CycleModel(const CycleModelConfig& cfg);
+  const CycleModelConfig& config() const { return cfg_; }
+
+  uint64_t cycles = 0;
+
+  // Called once per executed instruction, before its effects on timing of
+  // branches and memory are added.
+  void instruction(const Entry& e, uint32_t pc) {
+    ++op_count_[e.op];
+    cycles += op_latency_[e.op];
+    if (pending_load_ != kNoReg) {
+      if (reads(e, pending_load_)) {
+        cycles += cfg_.load_use_stall;
+        ++load_use_stalls_;
+      }
+      pending_load_ = kNoReg;
+    }
+    const uint8_t kind = load_dest_[e.op];
+    if (kind) pending_load_ = kind == 1 ? (e.rd == 32 ? kNoReg : e.rd) : static_cast<uint8_t>(32 + e.rd);
+    if (icache_.enabled()) {
+      const uint32_t line = pc >> icache_.line_shift();
+      if (line != last_fetch_line_) {
+        last_fetch_line_ = line;
+        if (!icache_.access(pc)) cycles += cfg_.icache.miss_penalty;
+      }
+    }
+  }
+  void branch(uint32_t pc, bool taken, bool backward) {
+    ++branches_;
+    cycles += taken ? cfg_.branch_taken : cfg_.branch_not_taken;
+    if (!predictor_.resolve(pc, taken, backward)) {
+      ++mispredicts_;
+      cycles += cfg_.mispredict_penalty;
+    }
+  }
+  void data(uint32_t addr) {
+    if (dcache_.enabled() && !dcache_.access(addr)) cycles += cfg_.dcache.miss_penalty;
+  }
+
+  uint64_t op_count(Op op) const { return op_count_[static_cast<size_t>(op)]; }
+  uint64_t branches() const { return branches_; }
+  uint64_t mispredicts() const { return mispredicts_; }
+  uint64_t load_use_stalls() const { return load_use_stalls_; }
+  const CacheModel& icache() const { return icache_; }
+  const CacheModel& dcache() const { return dcache_; }
+
+ private:
+  static constexpr uint8_t kNoReg = 0xff;
+  // Whether e reads unified register r (0..31 = x, 32..63 = f).
+  bool reads(const Entry& e, uint8_t r) const {
+    const uint8_t u = uses_[e.op];
+    return ((u & 1) && e.rs1 == r) || ((u & 2) && 32u + e.rs1 == r) || ((u & 4) && e.rs2 == r) ||
+           ((u & 8) && 32u + e.rs2 == r) || ((u & 16) && 32u + entry_rs3(e) == r);
+  }
+
+  CycleModelConfig cfg_;
+  std::array<uint32_t, 256> op_latency_{};
+  std::array<uint8_t, 256> uses_{};       // operand-read mask, see reads()
+  std::array<uint8_t, 256> load_dest_{};  // 1 = integer load, 2 = FP load
+  std::array<uint64_t, 256> op_count_{};
+  uint8_t pending_load_ = kNoReg;
+  uint32_t last_fetch_line_ = ~0u;
+  BranchPredictor predictor_;
+  CacheModel icache_, dcache_;
+  uint64_t branches_ = 0, mispredicts_ = 0, load_use_stalls_ = 0;
+};
+
+}  // namespace fwsim

@@ -1,0 +1,38 @@
+#include "decode_cache.hpp"
+
+#include "hart_state.hpp"
+
+namespace fwsim {
+
+void DecodeCache::fill(uint32_t index, uint32_t word) {
+  const DecodedInsn d = decode(word);
+  Entry e{static_cast<uint8_t>(d.op), d.rd, d.rs1, d.rs2, d.imm};
+  const Format fmt = op_info(d.op).format;
+  // Integer destinations of x0 go to the sink register.
+  switch (fmt) {
+    case Format::R: case Format::I: case Format::Shift: case Format::Load: case Format::U:
+    case Format::J: case Format::Jalr: case Format::Csr: case Format::CsrI: case Format::FCmp:
+    case Format::FCvtXF: case Format::FMvXF:
+      if (e.rd == 0) e.rd = kSinkReg;
+      break;
+    case Format::FR: case Format::FUnary: case Format::FCvtFX:
+      e.imm = d.rm;
+      break;
+    case Format::FR4:
+      e.imm = d.rm | (d.rs3 << 8);
+      break;
+    default:
+      break;
+  }
+  if (fmt == Format::Branch || fmt == Format::J) {
+    // Keep direct targets as entry offsets; targets off the word grid or
+    // outside RAM are checked when the jump is taken (slow path).
+    const int64_t target = int64_t{index} + d.imm / 4;
+    if ((d.imm & 3) || target < 0 || target >= count_) e.op = static_cast<uint8_t>(Op::SLOW_CTI);
+    e.imm = d.imm / 4;
+    if (e.op == static_cast<uint8_t>(Op::SLOW_CTI)) e.imm = d.imm;
+  }
+  entries_[index] = e;
+}
+
+}  // namespace fwsim

@@ -1,0 +1,48 @@
+// Pre-decoded instructions, one compact entry per RAM word, indexed by
+// (pc - RAM base) / 4. Entries are decoded lazily on first execution (op 0 =
+// UNDECODED), so any code in RAM works; code written after it first ran is
+// not re-decoded (self-modifying code is unsupported).
+#pragma once
+#include <cstdint>
+#include <cstdlib>
+#include <new>
+
+#include "decoder.hpp"
+
+namespace fwsim {
+
+struct Entry {
+  uint8_t op;              // Op
+  uint8_t rd, rs1, rs2;    // rd = kSinkReg when the instruction writes x0
+  int32_t imm;             // immediate; branch/jal: offset in entries;
+                           // FP: rm in bits 0..7, rs3 in bits 8..15
+};
+static_assert(sizeof(Entry) == 8);
+
+inline unsigned entry_rm(const Entry& e) { return static_cast<uint32_t>(e.imm) & 0xff; }
+inline unsigned entry_rs3(const Entry& e) { return (static_cast<uint32_t>(e.imm) >> 8) & 0xff; }
+
+class DecodeCache {
+ public:
+  // One entry per word plus a sentinel that faults when execution runs off
+  // the end of RAM. calloc keeps untouched pages unallocated.
+  explicit DecodeCache(uint32_t ram_size) : count_(ram_size / 4) {
+    entries_ = static_cast<Entry*>(std::calloc(count_ + 1, sizeof(Entry)));
+    if (!entries_) throw std::bad_alloc();
+    entries_[count_].op = static_cast<uint8_t>(Op::FETCH_FAULT);
+  }
+  ~DecodeCache() { std::free(entries_); }
+  DecodeCache(const DecodeCache&) = delete;
+  DecodeCache& operator=(const DecodeCache&) = delete;
+
+  Entry* entries() { return entries_; }
+  uint32_t count() const { return count_; }
+  // Fills entry `index` from the instruction word at that position.
+  void fill(uint32_t index, uint32_t word);
+
+ private:
+  Entry* entries_;
+  uint32_t count_;
+};
+
+}  // namespace fwsim

@@ -1,0 +1,94 @@
+#include "elf_loader.hpp"
+
+#include <elf.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <vector>
+
+namespace fwsim {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+  throw std::runtime_error(path + ": " + why);
+}
+
+template <typename T>
+T read_at(const std::vector<uint8_t>& f, uint64_t off, const std::string& path) {
+  if (off > f.size() || f.size() - off < sizeof(T)) fail(path, "truncated ELF file");
+  T v;
+  std::memcpy(&v, f.data() + off, sizeof v);
+  return v;
+}
+
+void read_symbols(const std::vector<uint8_t>& f, const Elf32_Ehdr& eh, const std::string& path,
+                  LoadedElf& out) {
+  if (eh.e_shoff == 0 || eh.e_shentsize != sizeof(Elf32_Shdr)) return;
+  std::vector<Elf32_Shdr> sh(eh.e_shnum);
+  for (unsigned i = 0; i < eh.e_shnum; ++i)
+    sh[i] = read_at<Elf32_Shdr>(f, eh.e_shoff + uint64_t{i} * sizeof(Elf32_Shdr), path);
+  for (const Elf32_Shdr& s : sh) {
+    if (s.sh_type != SHT_SYMTAB || s.sh_link >= sh.size()) continue;
+    const Elf32_Shdr& strtab = sh[s.sh_link];
+    for (uint32_t off = 0; off + sizeof(Elf32_Sym) <= s.sh_size; off += sizeof(Elf32_Sym)) {
+      auto sym = read_at<Elf32_Sym>(f, uint64_t{s.sh_offset} + off, path);
+      const unsigned type = ELF32_ST_TYPE(sym.st_info);
+      if (sym.st_shndx == SHN_UNDEF || sym.st_shndx >= sh.size()) continue;
+      if (!(sh[sym.st_shndx].sh_flags & SHF_EXECINSTR)) continue;
+      // Functions, plus untyped labels from assembly such as _start.
+      if (type != STT_FUNC && type != STT_NOTYPE) continue;
+      if (sym.st_name >= strtab.sh_size) continue;
+      const char* name = reinterpret_cast<const char*>(f.data() + strtab.sh_offset + sym.st_name);
+      size_t max_len = strtab.sh_size - sym.st_name;
+      std::string n(name, strnlen(name, max_len));
+      if (n.empty() || n[0] == '$' || n.rfind(".L", 0) == 0) continue;  // mapping symbols, locals
+      out.symbols.add({n, sym.st_value, type == STT_FUNC ? sym.st_size : 0});
+    }
+  }
+  out.symbols.finalize();
+}
+
+}  // namespace
+
+LoadedElf load_elf(const std::string& path, Bus& bus) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open file");
+  std::vector<uint8_t> f((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto eh = read_at<Elf32_Ehdr>(f, 0, path);
+  if (std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) fail(path, "not an ELF file");
+  if (eh.e_ident[EI_CLASS] != ELFCLASS32 || eh.e_ident[EI_DATA] != ELFDATA2LSB)
+    fail(path, "not a 32-bit little-endian ELF");
+  if (eh.e_machine != EM_RISCV) fail(path, "not a RISC-V ELF");
+  if (eh.e_type != ET_EXEC) fail(path, "not an executable ELF (ET_EXEC)");
+  if (eh.e_phentsize != sizeof(Elf32_Phdr)) fail(path, "bad program header size");
+  LoadedElf out;
+  out.entry = eh.e_entry;
+  bool have_text = false;
+  for (unsigned i = 0; i < eh.e_phnum; ++i) {
+    auto ph = read_at<Elf32_Phdr>(f, eh.e_phoff + uint64_t{i} * sizeof(Elf32_Phdr), path);
+    if (ph.p_type != PT_LOAD || ph.p_memsz == 0) continue;
+    if (ph.p_filesz > ph.p_memsz) fail(path, "segment file size exceeds memory size");
+    if (!bus.in_ram(ph.p_paddr, ph.p_memsz)) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "segment 0x%08x..0x%08x lies outside RAM 0x%08x..0x%08x",
+                    ph.p_paddr, ph.p_paddr + ph.p_memsz, kRamBase, kRamBase + bus.ram_size());
+      fail(path, buf);
+    }
+    if (uint64_t{ph.p_offset} + ph.p_filesz > f.size()) fail(path, "segment beyond end of file");
+    std::memcpy(bus.ram() + (ph.p_paddr - kRamBase), f.data() + ph.p_offset, ph.p_filesz);
+    if (ph.p_flags & PF_X) {
+      if (!have_text || ph.p_paddr < out.text_begin) out.text_begin = ph.p_paddr;
+      if (!have_text || ph.p_paddr + ph.p_memsz > out.text_end) out.text_end = ph.p_paddr + ph.p_memsz;
+      have_text = true;
+    }
+  }
+  if (!have_text) fail(path, "no executable segment");
+  if (!bus.in_ram(out.entry, 4) || (out.entry & 3)) fail(path, "entry point outside RAM or misaligned");
+  read_symbols(f, eh, path, out);
+  return out;
+}
+
+}  // namespace fwsim

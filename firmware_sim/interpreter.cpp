@@ -1,0 +1,451 @@
+// The hot loop: threaded dispatch (computed goto) over pre-decoded entries.
+// Plain variant: no per-instruction work beyond the semantics and one counter
+// increment; the instruction limit is checked only on taken control transfers
+// (every loop has one). Timed variant: the same handlers plus cycle-model,
+// profiler and trace hooks, selected at compile time.
+//
+// FP fast path: in round-to-nearest-even the host's IEEE single operations
+// give bit-identical results, and the host's sticky exception flags (MXCSR)
+// are exactly the RISC-V ones (both detect tininess after rounding), so they
+// are left to accumulate and merged into fflags when the firmware reads it.
+// Only NaN results need fixing (RISC-V returns the canonical NaN). Other
+// rounding modes and the fused ops go through the bit-exact soft FPU.
+#include <cstring>
+
+#include "decoder.hpp"
+#include "disassembler.hpp"
+#include "fpu.hpp"
+#include "machine.hpp"
+
+namespace fwsim {
+namespace {
+
+inline float as_float(uint32_t b) {
+  float f;
+  std::memcpy(&f, &b, 4);
+  return f;
+}
+inline uint32_t host_result(float r) {
+  uint32_t b;
+  std::memcpy(&b, &r, 4);
+  return fpu::is_nan(b) ? fpu::kCanonicalNaN : b;
+}
+
+bool branch_condition(Op op, uint32_t a, uint32_t b) {
+  switch (op) {
+    case Op::BEQ: return a == b;
+    case Op::BNE: return a != b;
+    case Op::BLT: return static_cast<int32_t>(a) < static_cast<int32_t>(b);
+    case Op::BGE: return static_cast<int32_t>(a) >= static_cast<int32_t>(b);
+    case Op::BLTU: return a < b;
+    case Op::BGEU: return a >= b;
+    default: return true;  // jal
+  }
+}
+
+uint32_t div_s(uint32_t a, uint32_t b) {
+  if (b == 0) return ~0u;
+  if (a == 0x80000000u && b == ~0u) return a;
+  return static_cast<uint32_t>(static_cast<int32_t>(a) / static_cast<int32_t>(b));
+}
+uint32_t rem_s(uint32_t a, uint32_t b) {
+  if (b == 0) return a;
+  if (a == 0x80000000u && b == ~0u) return 0;
+  return static_cast<uint32_t>(static_cast<int32_t>(a) % static_cast<int32_t>(b));
+}
+
+}  // namespace
+
+void Machine::trace_instruction(uint32_t pc) {
+  uint32_t word = 0;
+  std::memcpy(&word, bus_.ram() + (pc - kRamBase), 4);
+  std::fprintf(trace_, "%08x: %08x  %s\n", pc, word, disassemble(word, pc).c_str());
+}
+
+StopInfo Machine::run(uint64_t max_instructions) {
+  StopInfo s;
+  if (!bus_.in_ram(hart_.pc, 4)) {
+    s.cause = StopCause::FetchFault;
+    s.pc = s.addr = hart_.pc;
+    return s;
+  }
+  if (hart_.pc & 3) {
+    s.cause = StopCause::MisalignedFetch;
+    s.pc = s.addr = hart_.pc;
+    return s;
+  }
+  fpu::clear_host_flags();
+  s = (model_ || profiler_ || trace_) ? run_loop<true>(max_instructions) : run_loop<false>(max_instructions);
+  hart_.fflags |= fpu::take_host_flags();
+  return s;
+}
+
+template <bool Timed>
+StopInfo Machine::run_loop(uint64_t max_instructions) {
+  static const void* const kLabels[] = {
+#define FWSIM_LABEL(name, mn, cls, fmt) &&L_##name,
+      FWSIM_OPS(FWSIM_LABEL)
+#undef FWSIM_LABEL
+  };
+  CycleModel default_model(default_cycle_model());
+  CycleModel& model = model_ ? *model_ : default_model;
+  if constexpr (Timed) model.cycles = hart_.cycles;
+
+  Entry* const base = code_.entries();
+  Entry* ip = base + (hart_.pc - kRamBase) / 4;
+  uint32_t* const x = hart_.x;
+  uint32_t* const f = hart_.f;
+  uint8_t* const ram = bus_.ram();
+  const uint32_t ram_size = bus_.ram_size();
+  const uint64_t start = hart_.instret;
+  const uint64_t limit = max_instructions > start ? max_instructions - start : 0;
+  uint64_t n = 0;  // instructions retired in this call
+  StopInfo stop;
+  uint32_t addr = 0;
+  Bus::Result bus_result = Bus::Result::Ok;
+  bool retire_stopper = false;
+
+#define PC_OF(p) (kRamBase + static_cast<uint32_t>((p) - base) * 4u)
+#define NOW() (Timed ? model.cycles : start + n)
+#define SYNC()                                        \
+  do {                                                \
+    hart_.instret = start + n;                        \
+    hart_.cycles = Timed ? model.cycles : start + n;  \
+  } while (0)
+#define DISPATCH() goto* kLabels[ip->op]
+#define STEP()                                           \
+  do {                                                   \
+    if constexpr (Timed) {                               \
+      model.instruction(*ip, PC_OF(ip));                 \
+      if (trace_) trace_instruction(PC_OF(ip));          \
+    }                                                    \
+  } while (0)
+#define NEXT()   \
+  do {           \
+    STEP();      \
+    ++ip;        \
+    ++n;         \
+    DISPATCH();  \
+  } while (0)
+#define JUMP(target)                    \
+  do {                                  \
+    STEP();                             \
+    ip = (target);                      \
+    if (++n > limit) goto limit_reached; \
+    DISPATCH();                         \
+  } while (0)
+#define FAULT(c, a)      \
+  do {                   \
+    stop.cause = (c);    \
+    stop.addr = (a);     \
+    goto fault;          \
+  } while (0)
+#define BRANCH(cond)                                                   \
+  do {                                                                 \
+    const bool taken = (cond);                                         \
+    if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0);  \
+    if (taken) JUMP(ip + ip->imm);                                     \
+    NEXT();                                                            \
+  } while (0)
+#define RS1 x[ip->rs1]
+#define RS2 x[ip->rs2]
+#define RD x[ip->rd]
+#define ALU(expr) \
+  do {            \
+    RD = (expr);  \
+    NEXT();       \
+  } while (0)
+  // Loads: one range+alignment check for RAM, everything else on the bus.
+#define LOAD(T, dest)                                                                   \
+  do {                                                                                  \
+    addr = RS1 + static_cast<uint32_t>(ip->imm);                                        \
+    const uint32_t off = addr - kRamBase;                                               \
+    T v;                                                                                \
+    if (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1))) {                      \
+      std::memcpy(&v, ram + off, sizeof(T));                                            \
+    } else {                                                                            \
+      SYNC();                                                                           \
+      uint32_t raw = 0;                                                                 \
+      bus_result = bus_.load(addr, sizeof(T), raw, NOW());                              \
+      if (bus_result == Bus::Result::Misaligned) FAULT(StopCause::MisalignedLoad, addr); \
+      if (bus_result == Bus::Result::Fault) FAULT(StopCause::LoadFault, addr);          \
+      if (bus_result == Bus::Result::Stop) goto device_stop;                            \
+      v = static_cast<T>(raw);                                                          \
+    }                                                                                   \
+    if constexpr (Timed) model.data(addr);                                              \
+    dest = static_cast<uint32_t>(v);                                                    \
+    NEXT();                                                                             \
+  } while (0)
+#define STORE(T, value)                                                                  \
+  do {                                                                                   \
+    addr = RS1 + static_cast<uint32_t>(ip->imm);                                         \
+    const uint32_t off = addr - kRamBase;                                                \
+    const T v = static_cast<T>(value);                                                   \
+    if (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1))) {                       \
+      std::memcpy(ram + off, &v, sizeof(T));                                             \
+    } else {                                                                             \
+      SYNC();                                                                            \
+      bus_result = bus_.store(addr, sizeof(T), v, NOW());                                \
+      if (bus_result == Bus::Result::Misaligned) FAULT(StopCause::MisalignedStore, addr); \
+      if (bus_result == Bus::Result::Fault) FAULT(StopCause::StoreFault, addr);          \
+      if (bus_result == Bus::Result::Stop) {                                             \
+        retire_stopper = true;                                                           \
+        goto device_stop;                                                                \
+      }                                                                                  \
+    }                                                                                    \
+    if constexpr (Timed) model.data(addr);                                               \
+    NEXT();                                                                              \
+  } while (0)
+#define CSR(op, operand, write)                                                         \
+  do {                                                                                  \
+    SYNC();                                                                             \
+    uint32_t old;                                                                       \
+    if (!csr_.access(hart_, static_cast<unsigned>(ip->imm) & 0xfff, op, operand, write, old)) \
+      FAULT(StopCause::IllegalInstruction, 0);                                          \
+    RD = old;                                                                           \
+    NEXT();                                                                             \
+  } while (0)
+  // Effective rounding mode; reserved modes are illegal instructions.
+#define ROUNDING(var)                                                      \
+  const unsigned var = entry_rm(*ip) == fpu::DYN ? hart_.frm : entry_rm(*ip); \
+  if (var > fpu::RMM) FAULT(StopCause::IllegalInstruction, 0)
+#define FP_ARITH(host_expr, soft_fn)                                           \
+  do {                                                                         \
+    ROUNDING(rm);                                                              \
+    const float a = as_float(f[ip->rs1]), b = as_float(f[ip->rs2]);            \
+    (void)b;                                                                   \
+    f[ip->rd] = rm == fpu::RNE ? host_result(host_expr)                        \
+                               : soft_fn;                                      \
+    NEXT();                                                                    \
+  } while (0)
+#define FP_FUSED(neg_product, neg_addend)                                                    \
+  do {                                                                                       \
+    ROUNDING(rm);                                                                            \
+    f[ip->rd] = fpu::fma(f[ip->rs1], f[ip->rs2], f[entry_rs3(*ip)], neg_product, neg_addend, \
+                         rm, hart_.fflags);                                                  \
+    NEXT();                                                                                  \
+  } while (0)
+
+  DISPATCH();
+
+L_UNDECODED: {
+  uint32_t word;
+  std::memcpy(&word, ram + (PC_OF(ip) - kRamBase), 4);
+  code_.fill(static_cast<uint32_t>(ip - base), word);
+  DISPATCH();
+}
+L_ILLEGAL: FAULT(StopCause::IllegalInstruction, 0);
+L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
+L_SLOW_CTI: {
+  // A branch or jal whose target is outside RAM or not word aligned.
+  uint32_t word;
+  std::memcpy(&word, ram + (PC_OF(ip) - kRamBase), 4);
+  const DecodedInsn d = decode(word);
+  const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
+  if (!taken) {
+    if constexpr (Timed) model.branch(PC_OF(ip), false, false);
+    NEXT();
+  }
+  const uint32_t target = PC_OF(ip) + static_cast<uint32_t>(d.imm);
+  FAULT((target & 3) ? StopCause::MisalignedFetch : StopCause::FetchFault, target);
+}
+L_LUI: ALU(static_cast<uint32_t>(ip->imm));
+L_AUIPC: ALU(PC_OF(ip) + static_cast<uint32_t>(ip->imm));
+L_JAL: {
+  Entry* const target = ip + ip->imm;
+  const uint32_t link = PC_OF(ip) + 4;
+  RD = link;
+  STEP();
+  ++n;
+  if constexpr (Timed) {
+    if (profiler_ && ip->rd == 1) profiler_->call(PC_OF(target), link, Cost{start + n, model.cycles});
+  }
+  ip = target;
+  if (n > limit) goto limit_reached;
+  DISPATCH();
+}
+L_JALR: {
+  const uint32_t target = (RS1 + static_cast<uint32_t>(ip->imm)) & ~1u;
+  if (target & 3) FAULT(StopCause::MisalignedFetch, target);
+  if (target - kRamBase >= ram_size) FAULT(StopCause::FetchFault, target);
+  const uint32_t link = PC_OF(ip) + 4;
+  RD = link;
+  STEP();
+  ++n;
+  if constexpr (Timed) {
+    if (profiler_) {
+      const Cost now{start + n, model.cycles};
+      if (ip->rd == 1) profiler_->call(target, link, now);
+      else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler_->ret(target, now);
+    }
+  }
+  ip = base + (target - kRamBase) / 4;
+  if (n > limit) goto limit_reached;
+  DISPATCH();
+}
+L_BEQ: BRANCH(RS1 == RS2);
+L_BNE: BRANCH(RS1 != RS2);
+L_BLT: BRANCH(static_cast<int32_t>(RS1) < static_cast<int32_t>(RS2));
+L_BGE: BRANCH(static_cast<int32_t>(RS1) >= static_cast<int32_t>(RS2));
+L_BLTU: BRANCH(RS1 < RS2);
+L_BGEU: BRANCH(RS1 >= RS2);
+L_LB: LOAD(int8_t, RD);
+L_LH: LOAD(int16_t, RD);
+L_LW: LOAD(uint32_t, RD);
+L_LBU: LOAD(uint8_t, RD);
+L_LHU: LOAD(uint16_t, RD);
+L_SB: STORE(uint8_t, RS2);
+L_SH: STORE(uint16_t, RS2);
+L_SW: STORE(uint32_t, RS2);
+L_ADDI: ALU(RS1 + static_cast<uint32_t>(ip->imm));
+L_SLTI: ALU(static_cast<int32_t>(RS1) < ip->imm);
+L_SLTIU: ALU(RS1 < static_cast<uint32_t>(ip->imm));
+L_XORI: ALU(RS1 ^ static_cast<uint32_t>(ip->imm));
+L_ORI: ALU(RS1 | static_cast<uint32_t>(ip->imm));
+L_ANDI: ALU(RS1 & static_cast<uint32_t>(ip->imm));
+L_SLLI: ALU(RS1 << ip->imm);
+L_SRLI: ALU(RS1 >> ip->imm);
+L_SRAI: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> ip->imm));
+L_ADD: ALU(RS1 + RS2);
+L_SUB: ALU(RS1 - RS2);
+L_SLL: ALU(RS1 << (RS2 & 31));
+L_SLT: ALU(static_cast<int32_t>(RS1) < static_cast<int32_t>(RS2));
+L_SLTU: ALU(RS1 < RS2);
+L_XOR: ALU(RS1 ^ RS2);
+L_SRL: ALU(RS1 >> (RS2 & 31));
+L_SRA: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> (RS2 & 31)));
+L_OR: ALU(RS1 | RS2);
+L_AND: ALU(RS1 & RS2);
+L_FENCE: NEXT();
+L_ECALL: FAULT(StopCause::Ecall, 0);
+L_EBREAK: FAULT(StopCause::Ebreak, 0);
+L_MUL: ALU(RS1 * RS2);
+L_MULH: ALU(static_cast<uint32_t>((int64_t{static_cast<int32_t>(RS1)} * static_cast<int32_t>(RS2)) >> 32));
+L_MULHSU: ALU(static_cast<uint32_t>((int64_t{static_cast<int32_t>(RS1)} * int64_t{RS2}) >> 32));
+L_MULHU: ALU(static_cast<uint32_t>((uint64_t{RS1} * RS2) >> 32));
+L_DIV: ALU(div_s(RS1, RS2));
+L_DIVU: ALU(RS2 ? RS1 / RS2 : ~0u);
+L_REM: ALU(rem_s(RS1, RS2));
+L_REMU: ALU(RS2 ? RS1 % RS2 : RS1);
+L_CSRRW: CSR(CsrOp::Write, RS1, true);
+L_CSRRS: CSR(CsrOp::Set, RS1, ip->rs1 != 0);
+L_CSRRC: CSR(CsrOp::Clear, RS1, ip->rs1 != 0);
+L_CSRRWI: CSR(CsrOp::Write, ip->rs1, true);
+L_CSRRSI: CSR(CsrOp::Set, ip->rs1, ip->rs1 != 0);
+L_CSRRCI: CSR(CsrOp::Clear, ip->rs1, ip->rs1 != 0);
+L_FLW: LOAD(uint32_t, f[ip->rd]);
+L_FSW: STORE(uint32_t, f[ip->rs2]);
+L_FMADD_S: FP_FUSED(false, false);
+L_FMSUB_S: FP_FUSED(false, true);
+L_FNMSUB_S: FP_FUSED(true, false);
+L_FNMADD_S: FP_FUSED(true, true);
+L_FADD_S: FP_ARITH(a + b, fpu::add(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+L_FSUB_S: FP_ARITH(a - b, fpu::sub(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+L_FMUL_S: FP_ARITH(a * b, fpu::mul(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+L_FDIV_S: FP_ARITH(a / b, fpu::div(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+L_FSQRT_S: FP_ARITH(__builtin_sqrtf(a), fpu::sqrt(f[ip->rs1], rm, hart_.fflags));
+L_FSGNJ_S: {
+  f[ip->rd] = (f[ip->rs1] & 0x7fffffffu) | (f[ip->rs2] & 0x80000000u);
+  NEXT();
+}
+L_FSGNJN_S: {
+  f[ip->rd] = (f[ip->rs1] & 0x7fffffffu) | (~f[ip->rs2] & 0x80000000u);
+  NEXT();
+}
+L_FSGNJX_S: {
+  f[ip->rd] = f[ip->rs1] ^ (f[ip->rs2] & 0x80000000u);
+  NEXT();
+}
+L_FMIN_S: {
+  f[ip->rd] = fpu::min(f[ip->rs1], f[ip->rs2], hart_.fflags);
+  NEXT();
+}
+L_FMAX_S: {
+  f[ip->rd] = fpu::max(f[ip->rs1], f[ip->rs2], hart_.fflags);
+  NEXT();
+}
+L_FCVT_W_S: {
+  ROUNDING(rm);
+  ALU(fpu::to_int32(f[ip->rs1], rm, hart_.fflags));
+}
+L_FCVT_WU_S: {
+  ROUNDING(rm);
+  ALU(fpu::to_uint32(f[ip->rs1], rm, hart_.fflags));
+}
+L_FMV_X_W: ALU(f[ip->rs1]);
+L_FEQ_S: ALU(fpu::eq(f[ip->rs1], f[ip->rs2], hart_.fflags));
+L_FLT_S: ALU(fpu::lt(f[ip->rs1], f[ip->rs2], hart_.fflags));
+L_FLE_S: ALU(fpu::le(f[ip->rs1], f[ip->rs2], hart_.fflags));
+L_FCLASS_S: ALU(fpu::classify(f[ip->rs1]));
+L_FCVT_S_W: {
+  ROUNDING(rm);
+  f[ip->rd] = rm == fpu::RNE ? host_result(static_cast<float>(static_cast<int32_t>(RS1)))
+                             : fpu::from_int32(static_cast<int32_t>(RS1), rm, hart_.fflags);
+  NEXT();
+}
+L_FCVT_S_WU: {
+  ROUNDING(rm);
+  f[ip->rd] = rm == fpu::RNE ? host_result(static_cast<float>(RS1)) : fpu::from_uint32(RS1, rm, hart_.fflags);
+  NEXT();
+}
+L_FMV_W_X: {
+  f[ip->rd] = RS1;
+  NEXT();
+}
+
+device_stop:
+  // A device ended the run: the finisher (the store retires), a UART whose
+  // input is exhausted while the firmware keeps polling, or a host I/O error.
+  if (retire_stopper) {
+    STEP();
+    ++ip;
+    ++n;
+  }
+  stop.pc = PC_OF(ip) - (retire_stopper ? 4 : 0);
+  stop.addr = addr;
+  if (bus_.finished()) {
+    stop.cause = StopCause::Exit;
+    stop.exit_code = bus_.finisher().code();
+  } else if (bus_.uart() && bus_.uart()->stalled()) {
+    stop.cause = StopCause::UartStall;
+  } else {
+    stop.cause = StopCause::HostIo;
+  }
+  goto out;
+limit_reached:
+  stop.cause = StopCause::InstructionLimit;
+  stop.pc = PC_OF(ip);
+  goto out;
+fault:
+  stop.pc = PC_OF(ip);
+out:
+  hart_.pc = PC_OF(ip);
+  SYNC();
+  x[0] = 0;
+  return stop;
+
+#undef PC_OF
+#undef NOW
+#undef SYNC
+#undef DISPATCH
+#undef STEP
+#undef NEXT
+#undef JUMP
+#undef FAULT
+#undef BRANCH
+#undef RS1
+#undef RS2
+#undef RD
+#undef ALU
+#undef LOAD
+#undef STORE
+#undef CSR
+#undef ROUNDING
+#undef FP_ARITH
+#undef FP_FUSED
+}
+
+template StopInfo Machine::run_loop<true>(uint64_t);
+template StopInfo Machine::run_loop<false>(uint64_t);
+
+}  // namespace fwsim

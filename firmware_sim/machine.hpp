@@ -1,0 +1,50 @@
+// One RV32IMF hart with its RAM, devices and pre-decoded code; runs the
+// interpreter (interpreter.cpp) in a plain or a timed variant.
+#pragma once
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+
+#include "bus.hpp"
+#include "csr.hpp"
+#include "cycle_model.hpp"
+#include "decode_cache.hpp"
+#include "hart_state.hpp"
+#include "profiler.hpp"
+#include "stop_reason.hpp"
+
+namespace fwsim {
+
+class Machine {
+ public:
+  explicit Machine(uint32_t ram_size) : bus_(ram_size), code_(ram_size) {}
+
+  Bus& bus() { return bus_; }
+  HartState& hart() { return hart_; }
+  CsrFile& csr() { return csr_; }
+
+  // With a model (and optionally a profiler or a trace stream) the timed
+  // variant runs; without, the plain one, which counts instructions only.
+  void set_cycle_model(CycleModel* m) { model_ = m; }
+  void set_profiler(Profiler* p) { profiler_ = p; }
+  void set_trace(std::FILE* out) { trace_ = out; }
+
+  // Runs from hart().pc until the firmware stops, faults, or more than
+  // `max_instructions` (total, counted from reset) have retired.
+  StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
+
+ private:
+  template <bool Timed>
+  StopInfo run_loop(uint64_t max_instructions);
+  void trace_instruction(uint32_t pc);
+
+  Bus bus_;
+  HartState hart_;
+  CsrFile csr_;
+  DecodeCache code_;
+  CycleModel* model_ = nullptr;
+  Profiler* profiler_ = nullptr;
+  std::FILE* trace_ = nullptr;
+};
+
+}  // namespace fwsim

@@ -1,0 +1,164 @@
+// firmware-sim: wires the command line to a Machine, runs it, reports.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "boot_args.hpp"
+#include "cli_options.hpp"
+#include "disassembler.hpp"
+#include "elf_loader.hpp"
+#include "machine.hpp"
+#include "profile_writers.hpp"
+#include "pty_backend.hpp"
+#include "run_report.hpp"
+
+#ifndef FWSIM_VERSION
+#define FWSIM_VERSION "0"
+#endif
+
+namespace {
+
+using namespace fwsim;
+
+struct ExitNow {
+  int status;
+};
+
+[[noreturn]] void die(int status, const std::string& msg) {
+  std::fprintf(stderr, "firmware-sim: error: %s\n", msg.c_str());
+  throw ExitNow{status};
+}
+
+int open_file(const std::string& path, int flags) {
+  int fd = ::open(path.c_str(), flags | O_CLOEXEC, 0644);
+  if (fd < 0) die(kExitIo, path + ": " + std::strerror(errno));
+  return fd;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) die(kExitUsage, path + ": cannot read cycle model");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+template <typename Writer>
+void write_output(const std::string& path, Writer w) {
+  std::ofstream out(path);
+  if (!out) die(kExitIo, path + ": cannot write");
+  w(out);
+  if (!out.flush()) die(kExitIo, path + ": write failed");
+}
+
+int run(const std::vector<std::string>& argv) {
+  CliOptions opt;
+  try {
+    opt = parse_cli(argv);
+  } catch (const UsageError& e) {
+    die(kExitUsage, std::string(e.what()) + " (see --help)");
+  }
+  if (opt.help) {
+    std::fputs(cli_help_text(), stdout);
+    return 0;
+  }
+  if (opt.version) {
+    std::printf("firmware-sim %s\n", FWSIM_VERSION);
+    return 0;
+  }
+
+  std::unique_ptr<CycleModel> model;
+  CycleModelConfig model_cfg = default_cycle_model();
+  const bool timed = !opt.cycle_model.empty() || !opt.profile_out.empty() || !opt.folded_out.empty();
+  try {
+    if (!opt.cycle_model.empty() && opt.cycle_model != "default")
+      model_cfg = parse_cycle_model(read_text(opt.cycle_model), opt.cycle_model);
+  } catch (const std::runtime_error& e) {
+    die(kExitUsage, e.what());
+  }
+  if (timed) model = std::make_unique<CycleModel>(model_cfg);
+
+  Machine m(opt.ram_size);
+  LoadedElf elf;
+  try {
+    elf = load_elf(opt.elf, m.bus());
+    std::vector<std::string> fw_args{opt.elf};
+    fw_args.insert(fw_args.end(), opt.args.begin(), opt.args.end());
+    place_boot_args(m.bus(), m.hart(), fw_args);
+  } catch (const std::runtime_error& e) {
+    die(kExitLoad, e.what());
+  }
+  m.hart().pc = elf.entry;
+  m.csr().set_clock_hz(model_cfg.clock_hz);
+
+  Uart::Config ucfg;
+  if (opt.pty) {
+    try {
+      ucfg.in_fd = ucfg.out_fd = open_uart_pty();
+    } catch (const std::runtime_error& e) {
+      die(kExitIo, e.what());
+    }
+    ucfg.interactive = true;
+  }
+  if (!opt.uart_in.empty()) ucfg.in_fd = open_file(opt.uart_in, O_RDONLY);
+  if (!opt.uart_out.empty()) ucfg.out_fd = open_file(opt.uart_out, O_WRONLY | O_CREAT | O_TRUNC);
+  if (opt.baud) ucfg.cycles_per_byte = model_cfg.clock_hz * 10 / opt.baud;
+  if (opt.baud && !ucfg.cycles_per_byte) ucfg.cycles_per_byte = 1;
+  Uart uart(ucfg);
+  m.bus().attach_uart(&uart);
+
+  std::unique_ptr<Profiler> profiler;
+  if (!opt.profile_out.empty() || !opt.folded_out.empty())
+    profiler = std::make_unique<Profiler>(elf.symbols, elf.entry);
+  m.set_cycle_model(model.get());
+  m.set_profiler(profiler.get());
+  if (opt.trace) m.set_trace(stderr);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const StopInfo stop = m.run(opt.max_instructions ? opt.max_instructions : UINT64_MAX);
+  const auto t1 = std::chrono::steady_clock::now();
+  uart.flush();
+  if (!timed) m.hart().cycles = m.hart().instret;
+
+  if (stop.cause != StopCause::Exit) {
+    uint32_t word = 0;
+    if (m.bus().in_ram(stop.pc, 4)) std::memcpy(&word, m.bus().ram() + (stop.pc - kRamBase), 4);
+    std::fprintf(stderr, "%s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
+  }
+  if (profiler) {
+    profiler->finish(Cost{m.hart().instret, m.hart().cycles});
+    std::string cmd = "firmware-sim " + opt.elf;
+    for (const auto& a : opt.args) cmd += " " + a;
+    if (!opt.profile_out.empty())
+      write_output(opt.profile_out, [&](std::ostream& o) { write_callgrind(*profiler, o, cmd, opt.elf); });
+    if (!opt.folded_out.empty())
+      write_output(opt.folded_out, [&](std::ostream& o) { write_folded(*profiler, o); });
+  }
+  if (opt.stats) {
+    RunSummary s{m.hart().instret, m.hart().cycles,
+                 std::chrono::duration<double, std::micro>(t1 - t0).count(), model.get(), model_cfg,
+                 opt.cycle_model.empty() ? (timed ? "default" : "none") : opt.cycle_model,
+                 uart.bytes_out(), uart.bytes_in(), opt.baud, profiler.get()};
+    print_stats(s, stderr);
+  }
+  return exit_status(stop);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const ExitNow& e) {
+    return e.status;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "firmware-sim: error: out of memory\n");
+    return kExitIo;
+  }
+}

@@ -1,0 +1,46 @@
+#include "pty_backend.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+namespace fwsim {
+
+int open_uart_pty() {
+  int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
+    throw std::runtime_error(std::string("cannot create pty: ") + std::strerror(errno));
+  const char* name = ::ptsname(master);
+  if (!name) throw std::runtime_error("cannot name pty");
+  const std::string slave = name;
+  // Raw mode is a property of the slave's line discipline: set it through a
+  // temporary slave descriptor; it persists while the master stays open.
+  int s = ::open(slave.c_str(), O_RDWR | O_NOCTTY);
+  if (s < 0) throw std::runtime_error("cannot open " + slave + ": " + std::strerror(errno));
+  termios t{};
+  if (::tcgetattr(s, &t) == 0) {
+    ::cfmakeraw(&t);
+    ::tcsetattr(s, TCSANOW, &t);
+  }
+  ::close(s);
+  std::fprintf(stderr, "firmware-sim: uart on %s\n", slave.c_str());
+  std::fflush(stderr);
+  // While no process has the slave open, the master reports POLLHUP.
+  for (;;) {
+    pollfd p{master, POLLIN, 0};
+    if (::poll(&p, 1, 50) < 0 && errno != EINTR)
+      throw std::runtime_error(std::string("poll on pty: ") + std::strerror(errno));
+    if (!(p.revents & POLLHUP)) break;
+    ::usleep(20000);
+  }
+  return master;
+}
+
+}  // namespace fwsim

@@ -1,0 +1,13 @@
+// Pseudo-terminal backend for the UART: the host program (a terminal, a
+// serial tool, a test) opens the slave side like a real serial port.
+#pragma once
+#include <string>
+
+namespace fwsim {
+
+// Creates a raw-mode pty, prints "firmware-sim: uart on /dev/pts/N" on
+// stderr, and blocks until a host opens the slave. Returns the master fd;
+// throws std::runtime_error on failure.
+int open_uart_pty();
+
+}  // namespace fwsim

@@ -1,0 +1,31 @@
+// Function symbols from the ELF, for "function+offset" in messages and for
+// per-function profiles.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fwsim {
+
+struct Symbol {
+  std::string name;
+  uint32_t addr;
+  uint32_t size;  // 0 = unknown, extends to the next symbol
+};
+
+class SymbolTable {
+ public:
+  void add(Symbol s) { syms_.push_back(std::move(s)); }
+  void finalize();  // sort, drop duplicates, close sizes
+  // Index of the function containing addr, or -1.
+  int find(uint32_t addr) const;
+  const Symbol& at(int i) const { return syms_[static_cast<size_t>(i)]; }
+  size_t size() const { return syms_.size(); }
+  // "name+0x1c" or "0x80001234" when no symbol covers addr.
+  std::string describe(uint32_t addr) const;
+
+ private:
+  std::vector<Symbol> syms_;
+};
+
+}  // namespace fwsim

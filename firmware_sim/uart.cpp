@@ -1,0 +1,112 @@
+#include "uart.hpp"
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+#include <minrt/memory_map.h>
+
+namespace fwsim {
+namespace {
+constexpr uint8_t kLcrDlab = 0x80;
+constexpr uint32_t kRegIer = 1, kRegLcr = 3, kRegScr = 7;
+}  // namespace
+
+bool Uart::fill_input() {
+  if (in_pos_ < in_buf_.size()) return true;
+  if (eof_) return false;
+  // Never block: the firmware decides whether to wait by polling LSR.
+  pollfd p{cfg_.in_fd, POLLIN, 0};
+  int r = ::poll(&p, 1, 0);
+  if (r < 0 && errno == EINTR) return false;
+  if (r == 0) return false;
+  in_buf_.resize(4096);
+  ssize_t n = ::read(cfg_.in_fd, in_buf_.data(), in_buf_.size());
+  if (n < 0 && (errno == EAGAIN || errno == EINTR)) n = -2;
+  // A pty master reports EIO once the host side has closed: that is EOF.
+  if (n == 0 || n == -1) eof_ = true;
+  in_buf_.resize(n > 0 ? static_cast<size_t>(n) : 0);
+  in_pos_ = 0;
+  return n > 0;
+}
+
+bool Uart::data_ready(uint64_t now) {
+  if (!holding_) {
+    if (!fill_input()) return false;
+    holding_ = true;
+    // Back-to-back bytes arrive one frame apart on the wire.
+    uint64_t start = now > rx_ready_at_ ? now : rx_ready_at_;
+    rx_ready_at_ = start + cfg_.cycles_per_byte;
+  }
+  return now >= rx_ready_at_;
+}
+
+uint8_t Uart::read(uint32_t offset, uint64_t now) {
+  const bool dlab = lcr_ & kLcrDlab;
+  switch (offset) {
+    case MINRT_UART_REG_DATA: {
+      if (dlab) return dll_;
+      eof_polls_ = 0;
+      if (!data_ready(now)) return 0;
+      holding_ = false;
+      ++bytes_in_;
+      return in_buf_[in_pos_++];
+    }
+    case kRegIer: return dlab ? dlm_ : 0;
+    case kRegLcr: return lcr_;
+    case kRegScr: return scr_;
+    case MINRT_UART_REG_LSR: {
+      uint8_t lsr = 0;
+      if (data_ready(now)) {
+        lsr |= MINRT_UART_LSR_DATA_READY;
+      } else if (eof_) {
+        ++eof_polls_;
+      } else {
+        flush();  // the firmware is waiting for input: show what it printed
+      }
+      if (now >= tx_free_at_) lsr |= MINRT_UART_LSR_THR_EMPTY | 0x40;  // THRE + TEMT
+      return lsr;
+    }
+    default: return 0;
+  }
+}
+
+void Uart::write(uint32_t offset, uint8_t value, uint64_t now) {
+  const bool dlab = lcr_ & kLcrDlab;
+  switch (offset) {
+    case MINRT_UART_REG_DATA:
+      if (dlab) {
+        dll_ = value;
+        return;
+      }
+      eof_polls_ = 0;
+      out_buf_.push_back(value);
+      ++bytes_out_;
+      tx_free_at_ = (now > tx_free_at_ ? now : tx_free_at_) + cfg_.cycles_per_byte;
+      if (out_buf_.size() >= 65536 || (cfg_.interactive && value == '\n')) flush();
+      return;
+    case kRegIer:
+      if (dlab) dlm_ = value;
+      return;
+    case kRegLcr: lcr_ = value; return;
+    case kRegScr: scr_ = value; return;
+    default: return;
+  }
+}
+
+void Uart::flush() {
+  size_t done = 0;
+  while (done < out_buf_.size()) {
+    ssize_t n = ::write(cfg_.out_fd, out_buf_.data() + done, out_buf_.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      io_error_ = true;
+      break;
+    }
+    done += static_cast<size_t>(n);
+  }
+  out_buf_.clear();
+}
+
+}  // namespace fwsim

@@ -1,0 +1,56 @@
+// NS16550A-style UART as seen by the firmware: data register at +0, line
+// status at +5, divisor latch behind LCR.DLAB so a real init sequence works,
+// every other register reads 0 and ignores writes. The host side is a pair of
+// file descriptors (stdin/stdout, files, or a pty master).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fwsim {
+
+class Uart {
+ public:
+  struct Config {
+    int in_fd = 0;
+    int out_fd = 1;
+    bool interactive = false;        // pty: flush output eagerly
+    uint64_t cycles_per_byte = 0;    // 0 = no pacing
+    uint64_t stall_polls = 2000000;  // LSR polls after input EOF before giving up
+  };
+
+  explicit Uart(const Config& cfg) : cfg_(cfg) {}
+  ~Uart() { flush(); }
+  Uart(const Uart&) = delete;
+  Uart& operator=(const Uart&) = delete;
+
+  // `now` is the current simulated cycle, used only for baud pacing.
+  uint8_t read(uint32_t offset, uint64_t now);
+  void write(uint32_t offset, uint8_t value, uint64_t now);
+
+  bool stalled() const { return eof_polls_ >= cfg_.stall_polls; }
+  bool io_error() const { return io_error_; }
+  void flush();
+
+  uint64_t bytes_out() const { return bytes_out_; }
+  uint64_t bytes_in() const { return bytes_in_; }
+
+ private:
+  bool fill_input();  // true when at least one byte is buffered
+  bool data_ready(uint64_t now);
+
+  Config cfg_;
+  std::vector<uint8_t> in_buf_;
+  size_t in_pos_ = 0;
+  bool eof_ = false;
+  bool holding_ = false;        // a byte sits in the receive register
+  uint64_t rx_ready_at_ = 0;    // cycle at which the held byte becomes readable
+  uint64_t tx_free_at_ = 0;     // cycle at which the transmitter is empty again
+  uint64_t eof_polls_ = 0;
+  std::vector<uint8_t> out_buf_;
+  uint8_t lcr_ = 0, dll_ = 0, dlm_ = 0, scr_ = 0;
+  uint64_t bytes_out_ = 0, bytes_in_ = 0;
+  bool io_error_ = false;
+};
+
+}  // namespace fwsim
