@@ -214,3 +214,23 @@ TEMPLATE_TEST_CASE("to_int truncates toward zero", "[shims][to_int]",
     REQUIRE(P::to_int(-(float(n) + 0.5f)) == -n);
   }
 }
+
+TEST_CASE("Payne-Hanek and Cody-Waite reductions agree where both apply",
+          "[shims][sin][cos][reduction]") {
+  namespace d = minrt::portable_detail;
+  const double half_pi = 1.5707963267948966;
+  double worst = 0.0;
+  for (std::uint32_t b = bits_of(2.0f); b < bits_of(8192.0f); b += 997) {
+    const d::Reduced ph = d::reduce_payne_hanek(b);
+    const d::Reduced cw = d::reduce_cody_waite<true>(float_of(b));
+    // The quadrants may differ by one where r is close to +-pi/4.
+    const int dq = int((ph.quadrant - cw.quadrant) & 3u);
+    const double turn = dq == 3 ? -1.0 : double(dq);
+    REQUIRE(dq != 2);
+    const double diff = (double(ph.hi) + double(ph.lo)) -
+                        (double(cw.hi) + double(cw.lo)) + turn * half_pi;
+    worst = std::fmax(worst, std::fabs(diff));
+  }
+  INFO("largest difference " << worst);
+  CHECK(worst < 0x1p-44);
+}

@@ -21,18 +21,6 @@ namespace {
 
 using namespace shim_ulp;
 
-// log2 of the course's relative-error bound for each function (0: exact).
-int course_rule_log2(Fn f) {
-  switch (f) {
-    case Fn::sqrt: return -20;
-    case Fn::floor: return 0;
-    case Fn::sin:
-    case Fn::cos: return -18;
-    case Fn::atan: return -20;
-  }
-  return 0;
-}
-
 std::string log2_text(double v) {
   if (v == 0.0) return "0";
   if (!std::isfinite(v)) return "inf";

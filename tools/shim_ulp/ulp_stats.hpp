@@ -27,6 +27,19 @@ inline const char* fn_name(Fn f) {
   return "?";
 }
 
+// The course's bound on the relative error of each function, as log2
+// (add/sub 2^-23, mul 2^-22, div 2^-20 for reference); 0 means exact.
+inline int course_rule_log2(Fn f) {
+  switch (f) {
+    case Fn::sqrt:
+    case Fn::atan: return -20;
+    case Fn::sin:
+    case Fn::cos: return -18;
+    case Fn::floor: return 0;
+  }
+  return 0;
+}
+
 inline double reference(Fn f, float x) {
   const double d = x;
   switch (f) {
@@ -160,16 +173,16 @@ inline std::vector<Range> ranges_for(Fn f, std::int64_t refine) {
     case Fn::cos:
       return {{"renderer [-1e4, 1e4]", -1e4f, 1e4f, st(255)},
               {"large [1e4, 1e7]", 1e4f, 1e7f, st(255)},
-              {"all finite (sampled)", -kMaxFloat, kMaxFloat, st(255 * 17)}};
+              {"all finite", -kMaxFloat, kMaxFloat, st(255 * 17)}};
     case Fn::atan:
       return {{"renderer [0, 1e6]", 0.0f, 1e6f, st(255 * 3)},
               {"negatives [-1e6, 0]", -1e6f, -0.0f, st(255 * 7)},
-              {"all (sampled)", -INFINITY, INFINITY, st(255 * 17)}};
+              {"all", -INFINITY, INFINITY, st(255 * 17)}};
     case Fn::sqrt:
       return {{"renderer [0, 1e12]", 0.0f, 1e12f, st(255 * 3)},
-              {"all non-negative (sampled)", 0.0f, INFINITY, st(255 * 9)}};
+              {"all non-negative", 0.0f, INFINITY, st(255 * 9)}};
     case Fn::floor:
-      return {{"all (sampled)", -INFINITY, INFINITY, st(255 * 3)}};
+      return {{"all", -INFINITY, INFINITY, st(255 * 3)}};
   }
   return {};
 }
