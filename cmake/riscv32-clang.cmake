@@ -1,0 +1,45 @@
+# Toolchain file: bare-metal 32-bit RISC-V with clang and ld.lld.
+#
+#   cmake -S runtime/firmware -B build-rv \
+#     -DCMAKE_TOOLCHAIN_FILE=cmake/riscv32-clang.cmake \
+#     [-DMINRT_RV_MARCH=rv32im -DMINRT_RV_MABI=ilp32]
+#
+# MINRT_RV_MARCH/MINRT_RV_MABI choose the ISA (default rv32imf/ilp32f, the
+# reference CPU; rv32im/ilp32 for a CPU without FPU, with soft float).
+# MINRT_CLANG and MINRT_LLD may name the tools; otherwise they are searched.
+set(CMAKE_SYSTEM_NAME Generic)
+set(CMAKE_SYSTEM_PROCESSOR riscv32)
+
+set(MINRT_RV_MARCH "rv32imf" CACHE STRING "RISC-V -march for the firmware")
+set(MINRT_RV_MABI "ilp32f" CACHE STRING "RISC-V -mabi for the firmware")
+find_program(MINRT_CLANG NAMES clang clang-14 REQUIRED)
+find_program(MINRT_LLD NAMES ld.lld ld.lld-14 REQUIRED)
+get_filename_component(_minrt_clang_dir "${MINRT_CLANG}" DIRECTORY)
+find_program(MINRT_CLANGXX NAMES clang++ clang++-14 HINTS "${_minrt_clang_dir}" REQUIRED)
+
+set(_minrt_target riscv32-unknown-elf)
+set(CMAKE_C_COMPILER "${MINRT_CLANG}")
+set(CMAKE_CXX_COMPILER "${MINRT_CLANGXX}")
+set(CMAKE_ASM_COMPILER "${MINRT_CLANG}")
+set(CMAKE_C_COMPILER_TARGET ${_minrt_target})
+set(CMAKE_CXX_COMPILER_TARGET ${_minrt_target})
+set(CMAKE_ASM_COMPILER_TARGET ${_minrt_target})
+
+# There is no C library to link a test program against.
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+
+set(_minrt_common
+    "-march=${MINRT_RV_MARCH} -mabi=${MINRT_RV_MABI} -mcmodel=medany -ffreestanding -nostdlib -ffp-contract=off -ffunction-sections -fdata-sections")
+set(CMAKE_C_FLAGS_INIT "${_minrt_common}")
+set(CMAKE_ASM_FLAGS_INIT "${_minrt_common}")
+set(CMAKE_CXX_FLAGS_INIT "${_minrt_common} -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
+set(CMAKE_EXE_LINKER_FLAGS_INIT "--ld-path=${MINRT_LLD} -nostdlib -static -Wl,--gc-sections")
+
+# -O2 for release builds (CMake's own default would be -O3).
+foreach(_lang C CXX ASM)
+  set(CMAKE_${_lang}_FLAGS_RELEASE "-O2 -DNDEBUG" CACHE STRING "")
+endforeach()
+
+set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
+set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
+set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)

@@ -1,0 +1,43 @@
+/* What travels over the serial link between a host and the min-rt firmware.
+ * Shared by the firmware (runtime/) and the host tools that talk to it
+ * (host-send). Plain C so both sides, and C test code, can include it.
+ *
+ * Host -> firmware: the SLD scene as plain bytes, nothing around it. The
+ *   firmware stops reading after the scene's final terminator, so a valid
+ *   scene needs no end marker. For an incomplete scene the firmware needs
+ *   to learn that nothing more will come; either
+ *     - the sender appends MINRT_END_OF_INPUT (a byte no SLD text contains), or
+ *     - the line stays idle for MINRT_IDLE_POLLS_DEFAULT consecutive UART
+ *       status polls with no byte (firmware-sim gives up on a firmware that
+ *       polls an exhausted input 2,000,000 times, so this must stay below).
+ *   Either way the reader sees end of input and reports the scene as
+ *   truncated.
+ *
+ * Firmware -> host: exactly one of
+ *   - the PPM image (starts with 'P'), streamed row by row, or
+ *   - one text line: MINRT_ERROR_MARKER, then "LINE:COL: message" for a scene
+ *     error or just "message" for anything else, then '\n'. Nothing else
+ *     follows.
+ *   The machine then halts with one of the MINRT_STATUS_* codes (through the
+ *   test finisher, so a simulator or QEMU exits with it).
+ */
+#ifndef MINRT_SERIAL_PROTOCOL_H
+#define MINRT_SERIAL_PROTOCOL_H
+
+/* '!' cannot begin a PPM (which begins with 'P'). */
+#define MINRT_ERROR_MARKER "!minrt-error: "
+
+/* ASCII EOT (Ctrl-D): optional end-of-input byte after the scene. */
+#define MINRT_END_OF_INPUT 0x04
+
+/* Empty UART status polls after which the firmware takes the input as ended. */
+#define MINRT_IDLE_POLLS_DEFAULT 1000000
+
+/* Halt status. */
+#define MINRT_STATUS_OK 0
+#define MINRT_STATUS_USAGE 2         /* bad firmware arguments (like `minrt`) */
+#define MINRT_STATUS_SCENE_ERROR 2   /* the SLD input was rejected */
+#define MINRT_STATUS_OUT_OF_MEMORY 3 /* the scene does not fit the arena */
+#define MINRT_STATUS_TRAP 4          /* unexpected CPU exception */
+
+#endif

@@ -1,0 +1,71 @@
+/* Linker script of the firmware, preprocessed with `clang -E -P -x c` so the
+ * addresses come from include/minrt/memory_map.h and firmware_layout.h.
+ * One RAM region; the ELF loader (firmware-sim, QEMU -kernel) puts every
+ * section at its final address. */
+#include <minrt/memory_map.h>
+#include "firmware_layout.h"
+
+#if __has_include("boot_args.hpp")
+#include "boot_args.hpp"
+#if FWSIM_BOOT_ARGS_MAX > MINRT_FW_BOOT_ARGS_RESERVE
+#error "MINRT_FW_BOOT_ARGS_RESERVE is smaller than firmware-sim's argument block"
+#endif
+#if FWSIM_BOOT_MAGIC != MINRT_FW_BOOT_MAGIC
+#error "MINRT_FW_BOOT_MAGIC differs from firmware-sim's FWSIM_BOOT_MAGIC"
+#endif
+#endif
+
+OUTPUT_ARCH(riscv)
+ENTRY(_start)
+
+MEMORY
+{
+  RAM (rwx) : ORIGIN = MINRT_RAM_BASE, LENGTH = MINRT_RAM_DEFAULT_SIZE
+}
+
+SECTIONS
+{
+  .text : {
+    __text_start = .;
+    KEEP(*(.text.init))
+    *(.text .text.*)
+    __text_end = .;
+  } > RAM
+
+  .rodata : ALIGN(16) {
+    __rodata_start = .;
+    *(.rodata .rodata.* .srodata .srodata.*)
+    . = ALIGN(4);
+    __init_array_start = .;
+    KEEP(*(SORT(.init_array.*)))
+    KEEP(*(.init_array))
+    __init_array_end = .;
+    __rodata_end = .;
+  } > RAM
+
+  /* Loaded in place: LOADADDR equals ADDR, so crt0's copy loop finds nothing
+   * to do. A board with ROM would put `AT> ROM` here. */
+  .data : ALIGN(16) {
+    __data_start = .;
+    *(.data .data.* .sdata .sdata.*)
+    . = ALIGN(4);
+    __data_end = .;
+  } > RAM
+  __data_load_start = LOADADDR(.data);
+
+  .bss (NOLOAD) : ALIGN(16) {
+    __bss_start = .;
+    *(.sbss .sbss.* .bss .bss.* COMMON)
+    . = ALIGN(4);
+    __bss_end = .;
+  } > RAM
+
+  /* Everything between .bss and the stack is the render arena. */
+  __arena_start = ALIGN(__bss_end, 16);
+  __stack_top = ORIGIN(RAM) + LENGTH(RAM) - MINRT_FW_BOOT_ARGS_RESERVE;
+  __stack_bottom = __stack_top - MINRT_FW_STACK_SIZE;
+  __arena_end = __stack_bottom;
+  ASSERT(__arena_end > __arena_start, "the image leaves no room for the arena and the stack")
+
+  /DISCARD/ : { *(.eh_frame .eh_frame_hdr .comment .note .note.*) }
+}

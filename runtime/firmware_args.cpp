@@ -1,0 +1,95 @@
+#include "firmware_args.hpp"
+
+#include <minrt/limits.hpp>
+#include <minrt/serial_protocol.h>
+
+namespace minrt::fw {
+namespace {
+
+bool equal(const char* a, const char* b) {
+  while (*a != 0 && *a == *b) {
+    ++a;
+    ++b;
+  }
+  return *a == *b;
+}
+
+int length(const char* s) {
+  int n = 0;
+  while (s[n] != 0) ++n;
+  return n;
+}
+
+// Decimal digits up to `stop` (or the end); false when empty or above `max`.
+bool parse_decimal(const char*& s, char stop, uint32_t max, uint32_t& value) {
+  const char* start = s;
+  uint32_t v = 0;
+  for (; *s != 0 && *s != stop; ++s) {
+    if (*s < '0' || *s > '9') return false;
+    const uint32_t digit = static_cast<uint32_t>(*s - '0');
+    if (v > (max - digit) / 10) return false;
+    v = v * 10 + digit;
+  }
+  value = v;
+  return s != start;
+}
+
+bool parse_size(const char* s, RenderOptions& options) {
+  uint32_t w = 0;
+  uint32_t h = 0;
+  if (!parse_decimal(s, 'x', limits::kMaxImageWidth, w) || *s++ != 'x') return false;
+  if (!parse_decimal(s, 0, limits::kMaxImageHeight, h) || w == 0 || h == 0) return false;
+  options.width = static_cast<int>(w);
+  options.height = static_cast<int>(h);
+  return true;
+}
+
+Diagnostic& bad_value(Diagnostic& error, const char* option, const char* value) {
+  return error.text("bad ").text(option).text(" ").quoted(value, length(value)).text(": expected ");
+}
+
+}  // namespace
+
+bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic& error) {
+  options.idle_polls = MINRT_IDLE_POLLS_DEFAULT;
+  for (int i = 1; i < argc; ++i) {
+    const char* arg = argv[i];
+    const bool takes_value =
+        equal(arg, "--size") || equal(arg, "--format") || equal(arg, "--idle-polls");
+    if (takes_value && i + 1 >= argc) {
+      error.text(arg).text(" needs a value");
+      return false;
+    }
+    if (equal(arg, "--size")) {
+      const char* v = argv[++i];
+      if (!parse_size(v, options.render)) {
+        bad_value(error, arg, v).text("WxH, each 1..").number(limits::kMaxImageWidth);
+        return false;
+      }
+    } else if (equal(arg, "--format")) {
+      const char* v = argv[++i];
+      if (equal(v, "p3") || equal(v, "P3")) {
+        options.render.format = PpmFormat::kP3;
+      } else if (equal(v, "p6") || equal(v, "P6")) {
+        options.render.format = PpmFormat::kP6;
+      } else {
+        bad_value(error, arg, v).text("p3 or p6");
+        return false;
+      }
+    } else if (equal(arg, "--idle-polls")) {
+      const char* v = argv[++i];
+      if (!parse_decimal(v, 0, 0xffffffffu, options.idle_polls)) {
+        bad_value(error, arg, argv[i]).text("a count of polls (0: wait forever)");
+        return false;
+      }
+    } else if (equal(arg, "--footprint")) {
+      options.footprint = true;
+    } else {
+      error.text("unknown argument ").quoted(arg, length(arg));
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace minrt::fw

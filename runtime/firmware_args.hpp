@@ -1,0 +1,40 @@
+// The firmware's command line (passed by firmware-sim, see
+// firmware_sim/boot_args.hpp; empty under QEMU):
+//
+//   --size WxH         image size, 1..4096 each
+//   --format p3|p6     PPM flavour
+//   --idle-polls N     empty UART polls that end the input (0: never)
+//   --footprint        render, discard the image and print the memory report
+//
+// Defaults are build-time settings (MINRT_FW_DEFAULT_* in runtime/CMakeLists.txt).
+#pragma once
+
+#include <stdint.h>
+
+#include "diagnostic.hpp"
+#include "render.hpp"
+
+#ifndef MINRT_FW_DEFAULT_WIDTH
+#define MINRT_FW_DEFAULT_WIDTH 512
+#endif
+#ifndef MINRT_FW_DEFAULT_HEIGHT
+#define MINRT_FW_DEFAULT_HEIGHT 512
+#endif
+#ifndef MINRT_FW_DEFAULT_P6
+#define MINRT_FW_DEFAULT_P6 0
+#endif
+
+namespace minrt::fw {
+
+struct FirmwareOptions {
+  RenderOptions render{MINRT_FW_DEFAULT_WIDTH, MINRT_FW_DEFAULT_HEIGHT,
+                       MINRT_FW_DEFAULT_P6 ? PpmFormat::kP6 : PpmFormat::kP3};
+  uint32_t idle_polls;
+  bool footprint = false;
+};
+
+// Fills `options` from argv[1..argc-1]; on a usage error returns false with
+// the message in `error`.
+bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic& error);
+
+}  // namespace minrt::fw

@@ -1,0 +1,49 @@
+// The core's ByteSource and ByteSink on the UART.
+//
+// Input ends (read returns -1) at MINRT_END_OF_INPUT or after `idle_polls`
+// consecutive status polls without a byte (0: wait forever); see
+// include/minrt/serial_protocol.h. A valid scene never gets there: the SLD
+// reader stops after the final terminator.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "byte_io.hpp"
+#include "ns16550.hpp"
+
+namespace minrt::fw {
+
+class SerialInput {
+ public:
+  SerialInput(Ns16550 uart, uint32_t idle_polls) : uart_(uart), idle_polls_(idle_polls) {}
+
+  ByteSource source() { return ByteSource{&read_fn, this}; }
+  bool ended() const { return ended_; }
+
+ private:
+  static int read_fn(void* ctx);
+  int next();
+
+  Ns16550 uart_;
+  uint32_t idle_polls_;
+  bool ended_ = false;
+};
+
+// Sends everything to the UART, or with `discard` only counts it.
+class SerialOutput {
+ public:
+  SerialOutput(Ns16550 uart, bool discard) : uart_(uart), discard_(discard) {}
+
+  ByteSink sink() { return ByteSink{&write_fn, this}; }
+  size_t bytes() const { return bytes_; }
+
+ private:
+  static void write_fn(void* ctx, const uint8_t* data, size_t size);
+
+  Ns16550 uart_;
+  bool discard_;
+  size_t bytes_ = 0;
+};
+
+}  // namespace minrt::fw
