@@ -3,41 +3,41 @@
 // and nothing afterwards.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
+#include <stddef.h>
+#include <stdint.h>
 
 namespace minrt {
 
 class Arena {
  public:
-  Arena(void* base, std::size_t size) : base_(static_cast<std::uint8_t*>(base)), size_(size) {}
+  Arena(void* base, size_t size) : base_(static_cast<uint8_t*>(base)), size_(size) {}
 
   // Zero-filled storage for n objects of T, or nullptr when it does not fit.
   template <class T>
-  T* alloc_zeroed(std::size_t n) {
-    const std::size_t align = alignof(T);
-    std::size_t start = (used_ + align - 1) & ~(align - 1);
-    const std::size_t bytes = n * sizeof(T);
+  T* alloc_zeroed(size_t n) {
+    const size_t align = alignof(T);
+    size_t start = (used_ + align - 1) & ~(align - 1);
+    const size_t bytes = n * sizeof(T);
     if (start > size_ || bytes > size_ - start) return nullptr;
-    std::uint8_t* p = base_ + start;
-    for (std::size_t i = 0; i < bytes; ++i) p[i] = 0;
+    uint8_t* p = base_ + start;
+    for (size_t i = 0; i < bytes; ++i) p[i] = 0;
     used_ = start + bytes;
     return reinterpret_cast<T*>(p);
   }
 
-  std::size_t used() const { return used_; }
-  std::size_t capacity() const { return size_; }
+  size_t used() const { return used_; }
+  size_t capacity() const { return size_; }
 
   // Bytes `n` objects of T take, with worst-case alignment padding.
   template <class T>
-  static constexpr std::size_t footprint(std::size_t n) {
+  static constexpr size_t footprint(size_t n) {
     return n * sizeof(T) + alignof(T);
   }
 
  private:
-  std::uint8_t* base_;
-  std::size_t size_;
-  std::size_t used_ = 0;
+  uint8_t* base_;
+  size_t size_;
+  size_t used_ = 0;
 };
 
 }  // namespace minrt

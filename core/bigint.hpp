@@ -3,7 +3,7 @@
 // runs the same on a CPU without an FPU).
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 namespace minrt {
 
@@ -13,12 +13,12 @@ class BigUint {
   static constexpr int kLimbs = 128;
 
   BigUint() = default;
-  explicit BigUint(std::uint64_t v) { set_u64(v); }
+  explicit BigUint(uint64_t v) { set_u64(v); }
 
-  void set_u64(std::uint64_t v) {
+  void set_u64(uint64_t v) {
     size_ = 0;
     while (v != 0) {
-      limb_[size_++] = static_cast<std::uint32_t>(v);
+      limb_[size_++] = static_cast<uint32_t>(v);
       v >>= 32;
     }
   }
@@ -26,16 +26,16 @@ class BigUint {
 
   // Returns false when the result would not fit (the caller treats that as
   // overflow to infinity / underflow to zero before it can happen).
-  bool mul_add_small(std::uint32_t mul, std::uint32_t add) {
-    std::uint64_t carry = add;
+  bool mul_add_small(uint32_t mul, uint32_t add) {
+    uint64_t carry = add;
     for (int i = 0; i < size_; ++i) {
-      std::uint64_t t = static_cast<std::uint64_t>(limb_[i]) * mul + carry;
-      limb_[i] = static_cast<std::uint32_t>(t);
+      uint64_t t = static_cast<uint64_t>(limb_[i]) * mul + carry;
+      limb_[i] = static_cast<uint32_t>(t);
       carry = t >> 32;
     }
     if (carry != 0) {
       if (size_ == kLimbs) return false;
-      limb_[size_++] = static_cast<std::uint32_t>(carry);
+      limb_[size_++] = static_cast<uint32_t>(carry);
     }
     return true;
   }
@@ -43,7 +43,7 @@ class BigUint {
   bool mul_pow10(int n) {
     for (; n >= 9; n -= 9)
       if (!mul_add_small(1000000000u, 0)) return false;
-    static constexpr std::uint32_t kPow10[9] = {1, 10, 100, 1000, 10000, 100000,
+    static constexpr uint32_t kPow10[9] = {1, 10, 100, 1000, 10000, 100000,
                                                 1000000, 10000000, 100000000};
     return mul_add_small(kPow10[n], 0);
   }
@@ -56,8 +56,8 @@ class BigUint {
     // Top-down so each source limb is read before it is overwritten.
     for (int i = new_size - 1; i >= 0; --i) {
       const int src = i - words;
-      const std::uint32_t hi = (src >= 0 && src < size_) ? limb_[src] : 0;
-      const std::uint32_t lo = (src >= 1 && src - 1 < size_) ? limb_[src - 1] : 0;
+      const uint32_t hi = (src >= 0 && src < size_) ? limb_[src] : 0;
+      const uint32_t lo = (src >= 1 && src - 1 < size_) ? limb_[src - 1] : 0;
       limb_[i] = rem == 0 ? hi : (hi << rem) | (lo >> (32 - rem));
     }
     size_ = new_size;
@@ -67,7 +67,7 @@ class BigUint {
 
   void shift_right_one() {
     for (int i = 0; i < size_; ++i) {
-      std::uint32_t next = i + 1 < size_ ? limb_[i + 1] : 0;
+      uint32_t next = i + 1 < size_ ? limb_[i + 1] : 0;
       limb_[i] = (limb_[i] >> 1) | (next << 31);
     }
     trim();
@@ -85,14 +85,14 @@ class BigUint {
   bool any_below(int n) const {
     for (int i = 0; i < size_ && i * 32 < n; ++i) {
       const int keep = n - i * 32;
-      const std::uint32_t mask = keep >= 32 ? 0xffffffffu : ((1u << keep) - 1u);
+      const uint32_t mask = keep >= 32 ? 0xffffffffu : ((1u << keep) - 1u);
       if ((limb_[i] & mask) != 0) return true;
     }
     return false;
   }
   // Bits [lo, lo+64) as an integer.
-  std::uint64_t bits_from(int lo) const {
-    std::uint64_t v = 0;
+  uint64_t bits_from(int lo) const {
+    uint64_t v = 0;
     for (int i = 63; i >= 0; --i) v = (v << 1) | (bit(lo + i) ? 1u : 0u);
     return v;
   }
@@ -105,12 +105,12 @@ class BigUint {
   }
   // *this -= o; requires *this >= o.
   void subtract(const BigUint& o) {
-    std::int64_t borrow = 0;
+    int64_t borrow = 0;
     for (int i = 0; i < size_; ++i) {
-      std::int64_t t = static_cast<std::int64_t>(limb_[i]) - borrow -
-                       (i < o.size_ ? static_cast<std::int64_t>(o.limb_[i]) : 0);
+      int64_t t = static_cast<int64_t>(limb_[i]) - borrow -
+                       (i < o.size_ ? static_cast<int64_t>(o.limb_[i]) : 0);
       borrow = t < 0 ? 1 : 0;
-      limb_[i] = static_cast<std::uint32_t>(t + (borrow << 32));
+      limb_[i] = static_cast<uint32_t>(t + (borrow << 32));
     }
     trim();
   }
@@ -120,7 +120,7 @@ class BigUint {
     while (size_ > 0 && limb_[size_ - 1] == 0) --size_;
   }
 
-  std::uint32_t limb_[kLimbs] = {};
+  uint32_t limb_[kLimbs] = {};
   int size_ = 0;
 };
 

@@ -3,8 +3,8 @@
 // host tool, the firmware's UART loop and the tests.
 #pragma once
 
-#include <cstddef>
-#include <cstdint>
+#include <stddef.h>
+#include <stdint.h>
 
 namespace minrt {
 
@@ -17,17 +17,17 @@ struct ByteSource {
 };
 
 struct ByteSink {
-  void (*write)(void* ctx, const std::uint8_t* data, std::size_t size);
+  void (*write)(void* ctx, const uint8_t* data, size_t size);
   void* ctx;
 
-  void put(const std::uint8_t* data, std::size_t size) { write(ctx, data, size); }
+  void put(const uint8_t* data, size_t size) { write(ctx, data, size); }
 };
 
 // Reads from an in-memory buffer; handy for tests and the course protocol.
 struct MemorySource {
-  const std::uint8_t* data;
-  std::size_t size;
-  std::size_t pos = 0;
+  const uint8_t* data;
+  size_t size;
+  size_t pos = 0;
 
   static int read_fn(void* ctx) {
     auto* self = static_cast<MemorySource*>(ctx);

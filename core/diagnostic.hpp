@@ -2,7 +2,7 @@
 // without printf so the core stays freestanding.
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 namespace minrt {
 
@@ -12,6 +12,13 @@ struct SourcePos {
 };
 
 struct Diagnostic {
+  // p / 10 for a power of ten p >= 10, by table instead of division.
+  static uint64_t tenth(uint64_t p) {
+    uint64_t q = 1;
+    while (q * 10 != p) q *= 10;
+    return q;
+  }
+
   SourcePos pos;
   bool has_pos = false;
   char message[200] = {};
@@ -22,17 +29,27 @@ struct Diagnostic {
     message[length] = 0;
     return *this;
   }
-  Diagnostic& number(std::int64_t v) {
-    char digits[24];
-    int n = 0;
-    std::uint64_t u = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
-    do {
-      digits[n++] = static_cast<char>('0' + u % 10);
-      u /= 10;
-    } while (u != 0);
-    if (v < 0) digits[n++] = '-';
+  Diagnostic& number(int64_t v) {
+    // Digits by subtracting powers of ten: no 64-bit division, which a
+    // 32-bit target would have to call a runtime routine for.
+    uint64_t u = v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
     char out[24];
-    for (int i = 0; i < n; ++i) out[i] = digits[n - 1 - i];
+    int n = 0;
+    if (v < 0) out[n++] = '-';
+    bool started = false;
+    for (uint64_t p = 10000000000000000000ull;; ) {
+      char d = '0';
+      while (u >= p) {
+        u -= p;
+        ++d;
+      }
+      if (d != '0' || started || p == 1) {
+        out[n++] = d;
+        started = true;
+      }
+      if (p == 1) break;
+      p = tenth(p);
+    }
     out[n] = 0;
     return text(out);
   }

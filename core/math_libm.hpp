@@ -4,7 +4,7 @@
 // touches libm, and the symbols they pull in are the documented externals.
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 extern "C" {
 double sqrt(double);
@@ -29,8 +29,8 @@ struct LibmDouble {
   static real sin(real x) { return ::sin(x); }
   static real cos(real x) { return ::cos(x); }
   static real atan(real x) { return ::atan(x); }
-  static real from_int(std::int32_t i) { return static_cast<real>(i); }
-  static std::int32_t to_int(real x) { return static_cast<std::int32_t>(x); }
+  static real from_int(int32_t i) { return static_cast<real>(i); }
+  static int32_t to_int(real x) { return static_cast<int32_t>(x); }
 };
 
 struct LibmFloat {
@@ -41,8 +41,8 @@ struct LibmFloat {
   static real sin(real x) { return ::sinf(x); }
   static real cos(real x) { return ::cosf(x); }
   static real atan(real x) { return ::atanf(x); }
-  static real from_int(std::int32_t i) { return static_cast<real>(i); }
-  static std::int32_t to_int(real x) { return static_cast<std::int32_t>(x); }
+  static real from_int(int32_t i) { return static_cast<real>(i); }
+  static int32_t to_int(real x) { return static_cast<int32_t>(x); }
 };
 
 }  // namespace minrt

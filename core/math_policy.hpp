@@ -2,25 +2,38 @@
 // template over one of these; each provides the floating type and the few
 // functions the original program takes from its runtime. Everything else
 // (add, sub, mul, div, compare, negate, abs) is plain arithmetic on `real`.
+//
+// The core includes no C++ library headers (only the compiler's own
+// <stdint.h>/<stddef.h>), so it builds for a bare RISC-V target that has no
+// C++ library at all; hence the home-made same_as below.
 #pragma once
 
-#include <concepts>
-#include <cstdint>
+#include <stdint.h>
 
 namespace minrt {
 
+namespace policy_detail {
+template <class A, class B>
+inline constexpr bool kSame = false;
+template <class A>
+inline constexpr bool kSame<A, A> = true;
+}  // namespace policy_detail
+
+template <class A, class B>
+concept SameAs = policy_detail::kSame<A, B>;
+
 template <class M>
-concept MathPolicy = requires(typename M::real x, std::int32_t i) {
-  { M::sqrt(x) } -> std::same_as<typename M::real>;
-  { M::floor(x) } -> std::same_as<typename M::real>;
-  { M::sin(x) } -> std::same_as<typename M::real>;
-  { M::cos(x) } -> std::same_as<typename M::real>;
-  { M::atan(x) } -> std::same_as<typename M::real>;
+concept MathPolicy = requires(typename M::real x, int32_t i) {
+  { M::sqrt(x) } -> SameAs<typename M::real>;
+  { M::floor(x) } -> SameAs<typename M::real>;
+  { M::sin(x) } -> SameAs<typename M::real>;
+  { M::cos(x) } -> SameAs<typename M::real>;
+  { M::atan(x) } -> SameAs<typename M::real>;
   // float_of_int: exact for the small integers the renderer converts.
-  { M::from_int(i) } -> std::same_as<typename M::real>;
+  { M::from_int(i) } -> SameAs<typename M::real>;
   // int_of_float: truncation toward zero; only called with 0 <= x < 256.
-  { M::to_int(x) } -> std::same_as<std::int32_t>;
-  { M::name } -> std::convertible_to<const char*>;
+  { M::to_int(x) } -> SameAs<int32_t>;
+  { M::name } -> SameAs<const char* const&>;
 };
 
 }  // namespace minrt

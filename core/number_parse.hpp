@@ -4,7 +4,7 @@
 // conversion runs bit for bit on the host and on a CPU without an FPU.
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 #include "bigint.hpp"
 
@@ -22,14 +22,14 @@ template <class R>
 struct IeeeFormat;
 template <>
 struct IeeeFormat<double> {
-  using Bits = std::uint64_t;
+  using Bits = uint64_t;
   static constexpr int kPrecision = 53;  // significand bits incl. the hidden one
   static constexpr int kBias = 1023;
   static constexpr int kMaxBiased = 2046;
 };
 template <>
 struct IeeeFormat<float> {
-  using Bits = std::uint32_t;
+  using Bits = uint32_t;
   static constexpr int kPrecision = 24;
   static constexpr int kBias = 127;
   static constexpr int kMaxBiased = 254;
@@ -41,7 +41,7 @@ namespace number_detail {
 // the nearest representable value, ties to even, subnormals and overflow
 // included. Returns the bit pattern of the magnitude.
 template <class R>
-typename IeeeFormat<R>::Bits round_to_format(std::uint64_t m, int e, bool sticky) {
+typename IeeeFormat<R>::Bits round_to_format(uint64_t m, int e, bool sticky) {
   using F = IeeeFormat<R>;
   using Bits = typename F::Bits;
   constexpr int P = F::kPrecision;
@@ -51,7 +51,7 @@ typename IeeeFormat<R>::Bits round_to_format(std::uint64_t m, int e, bool sticky
   const int top = e + (63 - __builtin_clzll(m));
   int lsb = (top < kEmin ? kEmin : top) - (P - 1);
   const int shift = lsb - e;
-  std::uint64_t mant;
+  uint64_t mant;
   if (shift <= 0) {
     mant = m << -shift;  // exact: m has at most P bits here
   } else if (shift > 64) {
@@ -59,14 +59,14 @@ typename IeeeFormat<R>::Bits round_to_format(std::uint64_t m, int e, bool sticky
   } else {
     mant = shift == 64 ? 0 : m >> shift;
     const bool half = ((m >> (shift - 1)) & 1u) != 0;
-    const std::uint64_t below = shift - 1 == 0 ? 0 : (m & ((std::uint64_t{1} << (shift - 1)) - 1));
+    const uint64_t below = shift - 1 == 0 ? 0 : (m & ((uint64_t{1} << (shift - 1)) - 1));
     if (half && (sticky || below != 0 || (mant & 1u) != 0)) ++mant;
   }
-  if (mant == (std::uint64_t{1} << P)) {
+  if (mant == (uint64_t{1} << P)) {
     mant >>= 1;
     ++lsb;
   }
-  if (mant >= (std::uint64_t{1} << (P - 1))) {
+  if (mant >= (uint64_t{1} << (P - 1))) {
     const int biased = lsb + (P - 1) + F::kBias;
     if (biased > F::kMaxBiased) return kInf;
     return (static_cast<Bits>(biased) << (P - 1)) |
@@ -95,7 +95,7 @@ inline bool equals_nocase(const char* s, int n, const char* word) {
 // Hexadecimal float ("0x1.8p3"), which OCaml's float_of_string accepts.
 template <class R>
 NumberStatus parse_hex_magnitude(const char* s, int n, typename IeeeFormat<R>::Bits& out) {
-  std::uint64_t m = 0;
+  uint64_t m = 0;
   int e = 0, i = 0, digits = 0;
   bool sticky = false, seen_point = false;
   for (; i < n; ++i) {
@@ -195,11 +195,11 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
     den.shift_left(-k);
   }
   den.shift_left(63);
-  std::uint64_t q = 0;
+  uint64_t q = 0;
   for (int bit = 63; bit >= 0; --bit) {
     if (den.compare(d) <= 0) {
       d.subtract(den);
-      q |= std::uint64_t{1} << bit;
+      q |= uint64_t{1} << bit;
     }
     den.shift_right_one();
   }
@@ -251,7 +251,7 @@ NumberStatus parse_real(const char* s, int n, R& out) {
 // Parses a whole token as OCaml's int_of_string would on a 64-bit machine
 // (63-bit ints; 0x/0o/0b prefixes are unsigned and wrap; underscores allowed
 // after the first digit).
-inline NumberStatus parse_int(const char* s, int n, std::int64_t& out) {
+inline NumberStatus parse_int(const char* s, int n, int64_t& out) {
   int i = 0;
   bool negative = false;
   if (i < n && (s[i] == '-' || s[i] == '+')) negative = s[i++] == '-';
@@ -269,25 +269,33 @@ inline NumberStatus parse_int(const char* s, int n, std::int64_t& out) {
   if (i == n) return NumberStatus::kInvalid;
   int d = number_detail::digit_value(s[i]);
   if (d < 0 || d >= base) return NumberStatus::kInvalid;
-  constexpr std::uint64_t kLimit = std::uint64_t{1} << 63;  // 2^nbits for 63-bit ints
-  std::uint64_t v = static_cast<unsigned>(d);
+  constexpr uint64_t kLimit = uint64_t{1} << 63;  // 2^nbits for 63-bit ints
+  uint64_t v = static_cast<unsigned>(d);
   for (++i; i < n; ++i) {
     if (s[i] == '_') continue;
     d = number_detail::digit_value(s[i]);
     if (d < 0 || d >= base) return NumberStatus::kInvalid;
-    if (v > (kLimit - static_cast<unsigned>(d)) / static_cast<unsigned>(base))
+    // Overflow check by multiplication: 64-bit division is a library call on
+    // a 32-bit CPU.
+    uint64_t scaled = 0;
+    if (__builtin_mul_overflow(v, static_cast<uint64_t>(base), &scaled) ||
+        scaled + static_cast<unsigned>(d) > kLimit)
       return NumberStatus::kOutOfRange;
-    v = v * static_cast<unsigned>(base) + static_cast<unsigned>(d);
+    v = scaled + static_cast<unsigned>(d);
   }
-  constexpr std::uint64_t kHalf = std::uint64_t{1} << 62;
+  constexpr uint64_t kHalf = uint64_t{1} << 62;
   if (is_signed) {
     if (negative ? v > kHalf : v >= kHalf) return NumberStatus::kOutOfRange;
   } else if (v >= kLimit) {
     return NumberStatus::kOutOfRange;
   }
   // Unsigned forms wrap into the 63-bit range, as OCaml's ints do.
-  std::int64_t r = v >= kHalf ? static_cast<std::int64_t>(v) - static_cast<std::int64_t>(kLimit - 1) - 1
-                              : static_cast<std::int64_t>(v);
+  if (is_signed) {
+    out = negative ? -static_cast<int64_t>(v) : static_cast<int64_t>(v);
+    return NumberStatus::kOk;
+  }
+  const int64_t r = v >= kHalf ? static_cast<int64_t>(v) - static_cast<int64_t>(kLimit - 1) - 1
+                               : static_cast<int64_t>(v);
   out = negative ? -r : r;
   return NumberStatus::kOk;
 }

@@ -3,7 +3,7 @@
 // Buffers a little and flushes after every row so rows stream as they finish.
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 #include "byte_io.hpp"
 
@@ -53,7 +53,7 @@ class PpmWriter {
  private:
   void put(char c) {
     if (used_ == sizeof buf_) flush();
-    buf_[used_++] = static_cast<std::uint8_t>(c);
+    buf_[used_++] = static_cast<uint8_t>(c);
   }
   void put_int(int v) {
     char digits[12];
@@ -69,8 +69,8 @@ class PpmWriter {
 
   ByteSink out_;
   PpmFormat format_;
-  std::uint8_t buf_[1024];
-  std::size_t used_ = 0;
+  uint8_t buf_[1024];
+  size_t used_ = 0;
 };
 
 }  // namespace minrt

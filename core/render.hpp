@@ -1,10 +1,10 @@
 // The core's one entry point: SLD bytes in, PPM bytes out, everything taken
-// from one arena the platform provides. Nothing is written unless the whole
-// scene was read and checked, so a bad input never leaves half an image.
+// from a fixed RenderState and one arena the platform provides. Nothing is
+// written unless the whole scene was read and checked, so a bad input never
+// leaves half an image.
 #pragma once
 
-#include <cstddef>
-#include <new>
+#include <stddef.h>
 
 #include <minrt/limits.hpp>
 
@@ -27,15 +27,18 @@ struct RenderOptions {
 
 enum class RenderStatus { kOk, kBadOptions, kSceneError, kOutOfMemory };
 
+// The fixed-size state of one render: the scene as read and the tracer's
+// tables. Platforms give it static storage (firmware) or allocate it once.
+template <MathPolicy M>
+struct RenderState {
+  Scene<typename M::real> scene;
+  Tracer<M> tracer;
+};
+
 // Arena bytes that suffice for any valid scene at this image width.
 template <MathPolicy M>
-constexpr std::size_t arena_bytes_for_width(int width) {
-  using R = typename M::real;
-  constexpr std::size_t kDirvecs = Tracer<M>::kDirvecGroups * Tracer<M>::kDirvecsPerGroup + 1 +
-                                   Tracer<M>::kMaxReflections;
-  return Arena::footprint<Scene<R>>(1) + Arena::footprint<Tracer<M>>(1) +
-         Arena::footprint<R>(kDirvecs * limits::kMaxObjects * 6) +
-         Tracer<M>::pixel_line_bytes(width);
+constexpr size_t arena_bytes_for_width(int width) {
+  return Tracer<M>::max_arena_bytes(width);
 }
 
 inline bool valid_size(int width, int height) {
@@ -44,8 +47,9 @@ inline bool valid_size(int width, int height) {
 }
 
 template <MathPolicy M>
-RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& options, Arena& arena,
-                        Diagnostic& error, const WarningSink& warnings = {}) {
+RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& options,
+                        RenderState<M>& state, Arena& arena, Diagnostic& error,
+                        const WarningSink& warnings = {}) {
   using R = typename M::real;
   if (!valid_size(options.width, options.height)) {
     error.text("image size must be between 1x1 and ")
@@ -54,27 +58,21 @@ RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& option
         .number(limits::kMaxImageHeight);
     return RenderStatus::kBadOptions;
   }
-  Scene<R>* scene = arena.alloc_zeroed<Scene<R>>(1);
-  Tracer<M>* tracer = arena.alloc_zeroed<Tracer<M>>(1);
-  if (scene == nullptr || tracer == nullptr) {
-    error.text("out of memory for the scene tables");
-    return RenderStatus::kOutOfMemory;
-  }
-  new (scene) Scene<R>();
+  Scene<R>& scene = state.scene;
   SldReader<R> reader(in, warnings);
-  if (!reader.read(*scene, error)) return RenderStatus::kSceneError;
-  new (tracer) Tracer<M>();
-  const std::size_t before = arena.used();
-  if (!tracer->init(*scene, options.width, options.height, arena)) {
+  if (!reader.read(scene, error)) return RenderStatus::kSceneError;
+  Tracer<M>& tracer = state.tracer;
+  const size_t before = arena.used();
+  if (!tracer.init(scene, options.width, options.height, arena)) {
     error.text("out of memory: this scene needs ")
-        .number(static_cast<std::int64_t>(before + Tracer<M>::arena_bytes(*scene, options.width)))
+        .number(static_cast<int64_t>(before + Tracer<M>::arena_bytes(scene, options.width)))
         .text(" bytes of arena, ")
-        .number(static_cast<std::int64_t>(arena.capacity()))
+        .number(static_cast<int64_t>(arena.capacity()))
         .text(" available");
     return RenderStatus::kOutOfMemory;
   }
   PpmWriter writer(out, options.format);
-  tracer->render(writer);
+  tracer.render(writer);
   return RenderStatus::kOk;
 }
 

@@ -4,7 +4,7 @@
 // after the final terminator: over a serial line nothing more may come.
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 #include <minrt/limits.hpp>
 
@@ -41,7 +41,7 @@ class SldReader {
     if (!real(s.screen_rotation_deg[0], {"screen rotation (x axis)"}) ||
         !real(s.screen_rotation_deg[1], {"screen rotation (y axis)"}))
       return false;
-    std::int64_t count = 0;
+    int64_t count = 0;
     if (!integer(count, {"light count"})) return false;
     s.light_count = saturate(count);
     return real(s.light_rotation_deg[0], {"light direction angle 1"}) &&
@@ -51,7 +51,7 @@ class SldReader {
 
   bool read_objects(Scene<R>& s) {
     for (int n = 0;; ++n) {
-      std::int64_t texture = 0;
+      int64_t texture = 0;
       const What what{"texture", "object", n};
       if (!integer(texture, what)) return false;
       if (texture == -1) {
@@ -67,10 +67,10 @@ class SldReader {
     }
   }
 
-  bool read_object(SceneObject<R>& o, int n, std::int64_t texture) {
+  bool read_object(SceneObject<R>& o, int n, int64_t texture) {
     o.pos = last_.pos;
     o.texture = saturate(texture);
-    std::int64_t form = 0, refl = 0, rot = 0;
+    int64_t form = 0, refl = 0, rot = 0;
     if (!integer(form, {"form", "object", n}) || !integer(refl, {"reflection type", "object", n}) ||
         !integer(rot, {"rotation flag", "object", n}))
       return false;
@@ -126,10 +126,10 @@ class SldReader {
 
   bool read_and_networks(Scene<R>& s) {
     for (int n = 0;; ++n) {
-      std::int16_t* net = s.and_nets[n];
+      int16_t* net = s.and_nets[n];
       int len = 0;
       for (;; ++len) {
-        std::int64_t v = 0;
+        int64_t v = 0;
         if (!integer(v, {"object index", "AND network", n})) return false;
         if (v == -1) break;
         if (n == limits::kMaxAndNetworkDefinitions)
@@ -160,7 +160,7 @@ class SldReader {
                                      .text(" has more than ")
                                      .number(limits::kMaxAndNetworkLength)
                                      .text(" entries"));
-        net[len] = static_cast<std::int16_t>(v);
+        net[len] = static_cast<int16_t>(v);
       }
       net[len] = -1;
       if (len == 0) {
@@ -172,11 +172,11 @@ class SldReader {
 
   bool read_or_networks(Scene<R>& s) {
     for (int n = 0;; ++n) {
-      std::int16_t* net = s.or_nets[n];
-      std::int64_t previous = -2;
+      int16_t* net = s.or_nets[n];
+      int64_t previous = -2;
       int len = 0;
       for (;; ++len) {
-        std::int64_t v = 0;
+        int64_t v = 0;
         if (!integer(v, {len == 0 ? "range primitive" : "AND network index", "OR network", n}))
           return false;
         if (v == -1) break;
@@ -237,7 +237,7 @@ class SldReader {
                                      .text(" has more than ")
                                      .number(limits::kMaxOrNetworkLength)
                                      .text(" entries"));
-        net[len] = static_cast<std::int16_t>(v);
+        net[len] = static_cast<int16_t>(v);
         if (len > 0) previous = v;
       }
       net[len] = -1;
@@ -266,7 +266,7 @@ class SldReader {
     return false;
   }
 
-  bool integer(std::int64_t& out, const What& what) {
+  bool integer(int64_t& out, const What& what) {
     if (!token(what)) return false;
     const NumberStatus st = parse_int(last_.text, last_.length, out);
     if (st == NumberStatus::kOk) return true;
@@ -306,10 +306,10 @@ class SldReader {
     warnings_.emit(d);
   }
 
-  static std::int32_t saturate(std::int64_t v) {
+  static int32_t saturate(int64_t v) {
     if (v > INT32_MAX) return INT32_MAX;
     if (v < INT32_MIN) return INT32_MIN;
-    return static_cast<std::int32_t>(v);
+    return static_cast<int32_t>(v);
   }
 
   SldLexer lex_;

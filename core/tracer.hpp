@@ -7,7 +7,7 @@
 // are kept on purpose and marked "original:".
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 #include <minrt/limits.hpp>
 
@@ -17,6 +17,22 @@
 #include "scene.hpp"
 
 namespace minrt {
+
+// int_of_float then clamp to 0..255, with the original's x86-64 OCaml
+// behaviour for huge values: the conversion yields a 64-bit integer and OCaml
+// keeps its low 63 bits, so NaN and x >= 2^62 print 0, and -2^63 < x < -2^62
+// prints 255.
+template <MathPolicy M>
+int pixel_channel(typename M::real x) {
+  using R = typename M::real;
+  constexpr R k2p62 = R(4611686018427387904.0);
+  constexpr R k2p63 = R(9223372036854775808.0);
+  if (!(x < k2p62)) return 0;  // NaN too
+  if (x >= R(256.0)) return 255;
+  if (x > -k2p63 && x < -k2p62) return 255;
+  if (x < R(1.0)) return 0;
+  return M::to_int(x);
+}
 
 template <MathPolicy M>
 class Tracer {
@@ -29,14 +45,20 @@ class Tracer {
   static constexpr int kMaxDepth = 5;        // reflection levels 0..4
 
   // Arena bytes needed to render `scene` at image width `width`.
-  static std::size_t arena_bytes(const Scene<R>& scene, int width) {
-    const std::size_t dirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
+  static size_t arena_bytes(const Scene<R>& scene, int width) {
+    const size_t dirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
     return Arena::footprint<R>(dirvecs * consts_total(scene)) + pixel_line_bytes(width);
   }
 
+  // Arena bytes that suffice for any valid scene at this width.
+  static constexpr size_t max_arena_bytes(int width) {
+    const size_t dirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
+    return Arena::footprint<R>(dirvecs * limits::kMaxObjects * 6) + pixel_line_bytes(width);
+  }
+
   // The three rows of per-pixel state the diffuse pass works on.
-  static constexpr std::size_t pixel_line_bytes(int width) {
-    return Arena::footprint<Pixel>(3 * static_cast<std::size_t>(width));
+  static constexpr size_t pixel_line_bytes(int width) {
+    return Arena::footprint<Pixel>(3 * static_cast<size_t>(width));
   }
 
   // Prepares everything the render needs. Returns false when the arena is
@@ -51,11 +73,12 @@ class Tracer {
     load_objects(scene);
     and_nets_ = scene.and_nets;
     or_nets_ = scene.or_nets;
+    n_reflections_ = 0;
 
     const int stride = consts_total(scene);
-    const std::size_t ndirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
+    const size_t ndirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
     R* consts = arena.alloc_zeroed<R>(ndirvecs * stride);
-    Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<std::size_t>(width));
+    Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<size_t>(width));
     if (consts == nullptr || pixels == nullptr) return false;
     for (int g = 0; g < kDirvecGroups; ++g)
       for (int i = 0; i < kDirvecsPerGroup; ++i)
@@ -103,7 +126,7 @@ class Tracer {
     R* c;
   };
   struct Object {
-    std::int32_t texture, form, reflection, rotated;
+    int32_t texture, form, reflection, rotated;
     R abc[3];
     R center[3];
     bool inverted;
@@ -124,17 +147,17 @@ class Tracer {
   struct Pixel {
     R rgb[3];
     R points[kMaxDepth][3];
-    std::int32_t surface_ids[kMaxDepth];
+    int32_t surface_ids[kMaxDepth];
     bool calc_diffuse[kMaxDepth];
     R energy[kMaxDepth][3];
     R received[kMaxDepth][3];  // diffuse light from this pixel's 60 rays
-    std::int32_t group_id;
+    int32_t group_id;
     R normals[kMaxDepth][3];
   };
 
   // --- small helpers ------------------------------------------------------
 
-  static int consts_count(std::int32_t form) {
+  static int consts_count(int32_t form) {
     return form == kFormBox ? 6 : form == kFormPlane ? 4 : 5;
   }
   static int consts_total(const Scene<R>& scene) {
@@ -148,7 +171,14 @@ class Tracer {
     return R(-1);
   }
   static R fneg_cond(bool cond, R x) { return cond ? x : -x; }
-  static R fabs(R x) { return x < R(0) ? -x : (x == R(0) ? R(0) : x); }
+  // Clears the sign bit, like OCaml's abs_float (one instruction on x86 and
+  // RISC-V F, a bit operation in soft float).
+  static R fabs(R x) {
+    if constexpr (sizeof(R) == sizeof(float))
+      return __builtin_fabsf(x);
+    else
+      return __builtin_fabs(x);
+  }
   static R sqr(R x) { return x * x; }
   static R rad(R deg) { return deg * R(0.017453293); }
   static int add_mod5(int x, int y) {
@@ -483,7 +513,7 @@ class Tracer {
     return m.inverted == (quadric_constant(m, quadratic(m, p0, p1, p2)) < R(0));
   }
 
-  bool all_inside(const std::int16_t* and_net, R q0, R q1, R q2) const {
+  bool all_inside(const int16_t* and_net, R q0, R q1, R q2) const {
     for (; *and_net != -1; ++and_net)
       if (is_outside(objects_[*and_net], q0, q1, q2)) return false;
     return true;
@@ -491,8 +521,8 @@ class Tracer {
 
   // --- shadows ------------------------------------------------------------
 
-  bool shadow_and_group(const std::int16_t* and_net) {
-    for (const std::int16_t* e = and_net; *e != -1; ++e) {
+  bool shadow_and_group(const int16_t* and_net) {
+    for (const int16_t* e = and_net; *e != -1; ++e) {
       const int obj = *e;
       const int t0 = solver_fast(obj, light_dirvec_, intersection_point_);
       const R t0p = solver_dist_;
@@ -511,15 +541,15 @@ class Tracer {
     return false;
   }
 
-  bool shadow_or_group(const std::int16_t* or_net) {
-    for (const std::int16_t* e = or_net + 1; *e != -1; ++e)
+  bool shadow_or_group(const int16_t* or_net) {
+    for (const int16_t* e = or_net + 1; *e != -1; ++e)
       if (shadow_and_group(and_nets_[*e])) return true;
     return false;
   }
 
   bool in_shadow() {
     for (int row = 0;; ++row) {
-      const std::int16_t* net = or_nets_[row];
+      const int16_t* net = or_nets_[row];
       const int range = net[0];
       if (range == -1) return false;
       if (range == limits::kNoRangePrimitive) {
@@ -533,7 +563,7 @@ class Tracer {
 
   // --- nearest intersection -----------------------------------------------
 
-  void record_hit(const std::int16_t* and_net, int iobj, int t0, const R* v, const R* start) {
+  void record_hit(const int16_t* and_net, int iobj, int t0, const R* v, const R* start) {
     const R t0p = solver_dist_;
     if (R(0) < t0p && t0p < tmin_) {
       const R t = t0p + R(0.01);
@@ -554,15 +584,15 @@ class Tracer {
   bool judge_intersection(const R* dir) {
     tmin_ = R(1000000000.0);
     for (int row = 0;; ++row) {
-      const std::int16_t* net = or_nets_[row];
+      const int16_t* net = or_nets_[row];
       const int range = net[0];
       if (range == -1) break;
       if (range != limits::kNoRangePrimitive &&
           !(solver(range, dir, startp_) != 0 && solver_dist_ < tmin_))
         continue;
-      for (const std::int16_t* a = net + 1; *a != -1; ++a) {
-        const std::int16_t* and_net = and_nets_[*a];
-        for (const std::int16_t* e = and_net; *e != -1; ++e) {
+      for (const int16_t* a = net + 1; *a != -1; ++a) {
+        const int16_t* and_net = and_nets_[*a];
+        for (const int16_t* e = and_net; *e != -1; ++e) {
           const int t0 = solver(*e, dir, startp_);
           if (t0 != 0)
             record_hit(and_net, *e, t0, dir, startp_);
@@ -577,15 +607,15 @@ class Tracer {
   bool judge_intersection_fast(const DirVec& dv) {
     tmin_ = R(1000000000.0);
     for (int row = 0;; ++row) {
-      const std::int16_t* net = or_nets_[row];
+      const int16_t* net = or_nets_[row];
       const int range = net[0];
       if (range == -1) break;
       if (range != limits::kNoRangePrimitive &&
           !(solver_fast2(range, dv) != 0 && solver_dist_ < tmin_))
         continue;
-      for (const std::int16_t* a = net + 1; *a != -1; ++a) {
-        const std::int16_t* and_net = and_nets_[*a];
-        for (const std::int16_t* e = and_net; *e != -1; ++e) {
+      for (const int16_t* a = net + 1; *a != -1; ++a) {
+        const int16_t* and_net = and_nets_[*a];
+        for (const int16_t* e = and_net; *e != -1; ++e) {
           const int t0 = solver_fast2(*e, dv);
           if (t0 != 0)
             record_hit(and_net, *e, t0, dv.v, startp_fast_);
@@ -810,7 +840,7 @@ class Tracer {
   void try_exploit_neighbors(int x, Pixel* prev, Pixel* cur, Pixel* next) {
     Pixel& pixel = cur[x];
     for (int nref = 0; nref < kMaxDepth; ++nref) {
-      const std::int32_t sid = pixel.surface_ids[nref];
+      const int32_t sid = pixel.surface_ids[nref];
       if (sid < 0) return;
       if (prev[x].surface_ids[nref] != sid || next[x].surface_ids[nref] != sid ||
           cur[x - 1].surface_ids[nref] != sid || cur[x + 1].surface_ids[nref] != sid) {
@@ -856,22 +886,8 @@ class Tracer {
         try_exploit_neighbors(x, prev, cur, next);
       else
         do_without_neighbors(cur[x], 0);
-      out.pixel(channel(rgb_[0]), channel(rgb_[1]), channel(rgb_[2]));
+      out.pixel(pixel_channel<M>(rgb_[0]), pixel_channel<M>(rgb_[1]), pixel_channel<M>(rgb_[2]));
     }
-  }
-
-  // int_of_float then clamp to 0..255, with the original's x86-64 OCaml
-  // behaviour for huge values: the conversion yields a 64-bit integer and
-  // OCaml keeps its low 63 bits, so NaN and x >= 2^62 print 0, and
-  // -2^63 < x < -2^62 prints 255.
-  static int channel(R x) {
-    constexpr R k2p62 = R(4611686018427387904.0);
-    constexpr R k2p63 = R(9223372036854775808.0);
-    if (!(x < k2p62)) return 0;  // NaN too
-    if (x >= R(256.0)) return 255;
-    if (x > -k2p63 && x < -k2p62) return 255;
-    if (x < R(1.0)) return 0;
-    return M::to_int(x);
   }
 
   // --- diffuse direction tables -------------------------------------------
@@ -968,8 +984,8 @@ class Tracer {
 
   int n_objects_ = 0;
   Object objects_[limits::kMaxObjects];
-  const std::int16_t (*and_nets_)[limits::kMaxAndNetworkLength + 1] = nullptr;
-  const std::int16_t (*or_nets_)[limits::kMaxOrNetworkLength + 1] = nullptr;
+  const int16_t (*and_nets_)[limits::kMaxAndNetworkLength + 1] = nullptr;
+  const int16_t (*or_nets_)[limits::kMaxOrNetworkLength + 1] = nullptr;
 
   DirVec dirvecs_[kDirvecGroups][kDirvecsPerGroup];
   DirVec light_dirvec_{};

@@ -1,6 +1,7 @@
 #include "render_variants.hpp"
 
 #include <cstdlib>
+#include <memory>
 
 #include "math_libm.hpp"
 #if __has_include("math_portable.hpp")
@@ -15,14 +16,15 @@ template <MathPolicy M>
 RenderStatus run(ByteSource in, ByteSink out, const RenderOptions& options, Diagnostic& error,
                  const WarningSink& warnings) {
   const int width = valid_size(options.width, options.height) ? options.width : 1;
-  const std::size_t bytes = arena_bytes_for_width<M>(width);
+  const size_t bytes = arena_bytes_for_width<M>(width);
   void* buffer = std::malloc(bytes);
   if (buffer == nullptr) {
-    error.text("cannot allocate ").number(static_cast<std::int64_t>(bytes)).text(" bytes");
+    error.text("cannot allocate ").number(static_cast<int64_t>(bytes)).text(" bytes");
     return RenderStatus::kOutOfMemory;
   }
   Arena arena(buffer, bytes);
-  const RenderStatus st = render_sld<M>(in, out, options, arena, error, warnings);
+  auto state = std::make_unique<RenderState<M>>();
+  const RenderStatus st = render_sld<M>(in, out, options, *state, arena, error, warnings);
   std::free(buffer);
   return st;
 }

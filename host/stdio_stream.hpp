@@ -21,7 +21,7 @@ struct FileSink {
   std::FILE* file;
   bool failed = false;
 
-  static void write_fn(void* ctx, const std::uint8_t* data, std::size_t size);
+  static void write_fn(void* ctx, const uint8_t* data, size_t size);
   ByteSink sink() { return ByteSink{&write_fn, this}; }
 };
 

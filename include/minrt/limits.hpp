@@ -5,7 +5,7 @@
 // an error instead of overrunning fixed storage.
 #pragma once
 
-#include <cstdint>
+#include <stdint.h>
 
 namespace minrt::limits {
 

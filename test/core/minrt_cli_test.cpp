@@ -1,0 +1,143 @@
+// The minrt command as a user meets it: help, option errors, located scene
+// errors with exit status 2 and no image, complete-or-nothing -o output.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "sha256.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs minrt with `args` (shell words) and stdin from `input` (a path or "").
+Run run(const std::string& args, const std::string& input = "") {
+  char dir[] = "/tmp/minrt-cli-XXXXXX";
+  REQUIRE(mkdtemp(dir) != nullptr);
+  const std::string out = std::string(dir) + "/out", err = std::string(dir) + "/err";
+  std::string cmd = std::string(MINRT_BIN) + " " + args + " >" + out + " 2>" + err;
+  cmd += input.empty() ? " </dev/null" : " <" + input;
+  const int rc = std::system(cmd.c_str());
+  Run r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.out = minrt::test::read_file(out);
+  r.err = minrt::test::read_file(err);
+  std::remove(out.c_str());
+  std::remove(err.c_str());
+  rmdir(dir);
+  return r;
+}
+
+bool exists(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
+}
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("minrt: --help and --version", "[cli]") {
+  const auto help = run("--help");
+  CHECK(help.status == 0);
+  CHECK(help.out.find("usage: minrt") == 0);
+  const auto version = run("--version");
+  CHECK(version.status == 0);
+  CHECK(version.out.find("minrt ") == 0);
+}
+
+TEST_CASE("minrt: usage errors are one line and exit 2", "[cli]") {
+  for (const char* args : {"--size 0x5", "--size 12", "--format p4", "--precision half",
+                           "--bogus", "--shims portable --precision double", "a.sld b.sld"}) {
+    CAPTURE(args);
+    const auto r = run(args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+  }
+  const auto missing = run("/nonexistent/scene.sld");
+  CHECK(missing.status == 1);
+  CHECK(missing.err.find("cannot open /nonexistent/scene.sld") != std::string::npos);
+}
+
+TEST_CASE("minrt: a bad scene gives FILE:LINE:COL: error and no image", "[cli]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  const std::string bad = minrt::test::shared_dir() + "/bad/range-primitive-missing.sld";
+  const auto r = run("--size 16x16 " + bad);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err == bad + ":8:1: error: OR network 0 has range primitive 42, but only 1 objects are "
+                       "defined (99 means none)\n");
+  const auto piped = run("--size 16x16", bad);
+  CHECK(piped.status == 2);
+  CHECK(piped.err.find("<stdin>:8:1: error:") == 0);
+
+  char dir[] = "/tmp/minrt-out-XXXXXX";
+  REQUIRE(mkdtemp(dir) != nullptr);
+  const std::string target = std::string(dir) + "/image.ppm";
+  const auto o = run("--size 16x16 -o " + target + " " + bad);
+  CHECK(o.status == 2);
+  CHECK_FALSE(exists(target));
+  CHECK_FALSE(exists(target + ".partial"));
+  rmdir(dir);
+}
+
+TEST_CASE("minrt: file argument, stdin and -o give the reference bytes", "[cli]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  const std::string scene = minrt::test::shared_dir() + "/scenes/ball.sld";
+  std::string want;
+  for (const auto& row : minrt::test::read_manifest(minrt::test::shared_dir() + "/reference/manifest.tsv"))
+    if (row.scene == "ball" && row.size == 128) want = row.sha256;
+  REQUIRE(!want.empty());
+  const auto by_file = run("--size 128x128 " + scene);
+  CHECK(by_file.status == 0);
+  CHECK(minrt::host::sha256_hex(by_file.out) == want);
+  const auto by_stdin = run("--size 128x128", scene);
+  CHECK(by_stdin.out == by_file.out);
+  char dir[] = "/tmp/minrt-out-XXXXXX";
+  REQUIRE(mkdtemp(dir) != nullptr);
+  const std::string target = std::string(dir) + "/ball.ppm";
+  const auto o = run("--size 128x128 -o " + target + " " + scene);
+  CHECK(o.status == 0);
+  CHECK(o.out.empty());
+  CHECK(minrt::test::read_file(target) == by_file.out);
+  std::remove(target.c_str());
+  rmdir(dir);
+}
+
+TEST_CASE("minrt: unknown codes warn on stderr and still render", "[cli]") {
+  char path[] = "/tmp/minrt-scene-XXXXXX";
+  const int fd = mkstemp(path);
+  REQUIRE(fd >= 0);
+  const std::string sld = "0 0 0 10 20\n1 30 40\n255\n7 3 1 0 5 5 5 0 0 0 1 1 0 255 255 255\n-1\n0 -1\n-1\n99 0 -1\n-1\n";
+  REQUIRE(write(fd, sld.data(), sld.size()) == static_cast<ssize_t>(sld.size()));
+  close(fd);
+  const auto r = run(std::string("--size 8x8 ") + path);
+  CHECK(r.status == 0);
+  CHECK(r.err == std::string(path) + ":4:1: warning: object 0: unknown texture 7, drawn untextured as the original does\n");
+  CHECK(count_lines(r.out) == 2 + 64);
+  const auto quiet = run(std::string("-q --size 8x8 ") + path);
+  CHECK(quiet.err.empty());
+  std::remove(path);
+}

@@ -1,0 +1,70 @@
+#include "test_support.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace minrt::test {
+
+std::string shared_dir() {
+  if (const char* env = std::getenv("MINRT_SHARED_DIR")) return env;
+  return MINRT_SHARED_DIR;
+}
+
+bool shared_available() {
+  struct stat st {};
+  return ::stat((shared_dir() + "/scenes").c_str(), &st) == 0;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<ManifestEntry> read_manifest(const std::string& path) {
+  std::vector<ManifestEntry> rows;
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    ManifestEntry e;
+    std::string size;
+    std::getline(fields, e.scene, '\t');
+    std::getline(fields, size, '\t');
+    std::getline(fields, e.sha256, '\t');
+    if (e.scene.empty()) continue;
+    e.size = std::stoi(size);
+    rows.push_back(e);
+  }
+  return rows;
+}
+
+namespace {
+
+void append(void* ctx, const uint8_t* data, size_t size) {
+  static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(data), size);
+}
+
+void collect_warning(void* ctx, const Diagnostic& d) {
+  static_cast<std::vector<std::string>*>(ctx)->push_back(d.message);
+}
+
+}  // namespace
+
+RenderResult render_bytes(const std::string& sld, int width, int height, PpmFormat format,
+                          host::Variant variant) {
+  RenderResult r;
+  MemorySource src{reinterpret_cast<const uint8_t*>(sld.data()), sld.size()};
+  RenderOptions options;
+  options.width = width;
+  options.height = height;
+  options.format = format;
+  r.status = host::render_variant(variant, src.source(), ByteSink{&append, &r.image}, options,
+                                  r.error, WarningSink{&collect_warning, &r.warnings});
+  return r;
+}
+
+}  // namespace minrt::test
