@@ -33,11 +33,12 @@ class CycleModel {
   explicit CycleModel(const CycleModelConfig& cfg);
   const CycleModelConfig& config() const { return cfg_; }
 
+  // Cycle count; the interpreter keeps a local copy while running and
+  // passes it to the hooks below (so it can live in a register).
   uint64_t cycles = 0;
 
-  // Called once per executed instruction, before its effects on timing of
-  // branches and memory are added.
-  void instruction(const Entry& e, uint32_t pc) {
+  // Called once per executed instruction.
+  void instruction(const Entry& e, uint32_t pc, uint64_t& cycles) {
     ++op_count_[e.op];
     cycles += op_latency_[e.op];
     if (pending_load_ != kNoReg) {
@@ -57,7 +58,7 @@ class CycleModel {
       }
     }
   }
-  void branch(uint32_t pc, bool taken, bool backward) {
+  void branch(uint32_t pc, bool taken, bool backward, uint64_t& cycles) {
     ++branches_;
     cycles += taken ? cfg_.branch_taken : cfg_.branch_not_taken;
     if (!predictor_.resolve(pc, taken, backward)) {
@@ -65,7 +66,7 @@ class CycleModel {
       cycles += cfg_.mispredict_penalty;
     }
   }
-  void data(uint32_t addr) {
+  void data(uint32_t addr, uint64_t& cycles) {
     if (dcache_.enabled() && !dcache_.access(addr)) cycles += cfg_.dcache.miss_penalty;
   }
 

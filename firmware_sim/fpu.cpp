@@ -215,24 +215,6 @@ uint32_t to_integer(uint32_t a, unsigned rm, uint8_t& flags, bool is_signed) {
   return u.sign ? static_cast<uint32_t>(-static_cast<int64_t>(mag)) : static_cast<uint32_t>(mag);
 }
 
-// Orders non-NaN values; `zero_signed` makes -0 < +0 (fmin/fmax), otherwise
-// the two zeros compare equal (feq/flt/fle).
-int64_t order_key(uint32_t a, bool zero_signed) {
-  int64_t mag = a & 0x7fffffffu;
-  if (!sign_of(a)) return mag;
-  return zero_signed ? -mag - 1 : -mag;
-}
-
-uint32_t min_max(uint32_t a, uint32_t b, uint8_t& flags, bool want_max) {
-  if (is_snan(a) || is_snan(b)) flags |= NV;
-  const bool na = is_nan(a), nb = is_nan(b);
-  if (na && nb) return kCanonicalNaN;
-  if (na) return b;
-  if (nb) return a;
-  const bool a_less = order_key(a, true) < order_key(b, true);
-  return (a_less != want_max) ? a : b;
-}
-
 }  // namespace
 
 uint32_t add(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) {
@@ -363,47 +345,6 @@ uint32_t from_int32(int32_t v, unsigned rm, uint8_t& flags) {
 uint32_t from_uint32(uint32_t v, unsigned rm, uint8_t& flags) {
   if (v == 0) return 0;
   return normalize_round(false, 0, v, rm, flags);
-}
-
-uint32_t min(uint32_t a, uint32_t b, uint8_t& flags) { return min_max(a, b, flags, false); }
-uint32_t max(uint32_t a, uint32_t b, uint8_t& flags) { return min_max(a, b, flags, true); }
-
-bool eq(uint32_t a, uint32_t b, uint8_t& flags) {
-  if (is_nan(a) || is_nan(b)) {
-    if (is_snan(a) || is_snan(b)) flags |= NV;
-    return false;
-  }
-  return order_key(a, false) == order_key(b, false);
-}
-
-bool lt(uint32_t a, uint32_t b, uint8_t& flags) {
-  if (is_nan(a) || is_nan(b)) {
-    flags |= NV;
-    return false;
-  }
-  return order_key(a, false) < order_key(b, false);
-}
-
-bool le(uint32_t a, uint32_t b, uint8_t& flags) {
-  if (is_nan(a) || is_nan(b)) {
-    flags |= NV;
-    return false;
-  }
-  return order_key(a, false) <= order_key(b, false);
-}
-
-uint32_t classify(uint32_t a) {
-  const bool s = sign_of(a);
-  const uint32_t e = (a >> 23) & 0xff, f = a & 0x7fffffu;
-  if (e == 0xff) {
-    if (f == 0) return s ? 1u << 0 : 1u << 7;
-    return (f & 0x400000u) ? 1u << 9 : 1u << 8;
-  }
-  if (e == 0) {
-    if (f == 0) return s ? 1u << 3 : 1u << 4;
-    return s ? 1u << 2 : 1u << 5;
-  }
-  return s ? 1u << 1 : 1u << 6;
 }
 
 uint8_t take_host_flags() {

@@ -15,6 +15,7 @@
 #include "decoder.hpp"
 #include "disassembler.hpp"
 #include "fpu.hpp"
+#include "host_fma.hpp"
 #include "machine.hpp"
 
 namespace fwsim {
@@ -89,7 +90,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   };
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
-  if constexpr (Timed) model.cycles = hart_.cycles;
+  uint64_t cycles = hart_.cycles;  // timed variant only
 
   Entry* const base = code_.entries();
   Entry* ip = base + (hart_.pc - kRamBase) / 4;
@@ -99,24 +100,29 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const uint32_t ram_size = bus_.ram_size();
   const uint64_t start = hart_.instret;
   const uint64_t limit = max_instructions > start ? max_instructions - start : 0;
-  uint64_t n = 0;  // instructions retired in this call
+  // Instructions are counted per straight-line run: `n` holds the count up
+  // to `block` (the last jump target), so the running count is
+  // n + (ip - block) and straight-line code pays nothing for counting.
+  uint64_t n = 0;
+  Entry* block = ip;
   StopInfo stop;
   uint32_t addr = 0;
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
 #define PC_OF(p) (kRamBase + static_cast<uint32_t>((p) - base) * 4u)
-#define NOW() (Timed ? model.cycles : start + n)
-#define SYNC()                                        \
-  do {                                                \
-    hart_.instret = start + n;                        \
-    hart_.cycles = Timed ? model.cycles : start + n;  \
+#define RETIRED() (n + static_cast<uint64_t>(ip - block))
+#define NOW() (Timed ? cycles : start + RETIRED())
+#define SYNC()                                                 \
+  do {                                                         \
+    hart_.instret = start + RETIRED();                         \
+    hart_.cycles = Timed ? cycles : start + RETIRED();   \
   } while (0)
 #define DISPATCH() goto* kLabels[ip->op]
 #define STEP()                                           \
   do {                                                   \
     if constexpr (Timed) {                               \
-      model.instruction(*ip, PC_OF(ip));                 \
+      model.instruction(*ip, PC_OF(ip), cycles);                 \
       if (trace_) trace_instruction(PC_OF(ip));          \
     }                                                    \
   } while (0)
@@ -124,15 +130,17 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   do {           \
     STEP();      \
     ++ip;        \
-    ++n;         \
     DISPATCH();  \
   } while (0)
-#define JUMP(target)                    \
-  do {                                  \
-    STEP();                             \
-    ip = (target);                      \
-    if (++n > limit) goto limit_reached; \
-    DISPATCH();                         \
+  // Closes the straight-line run at the current instruction (which retires).
+#define END_BLOCK() (n += static_cast<uint64_t>(ip - block) + 1)
+#define JUMP(target)                       \
+  do {                                     \
+    STEP();                                \
+    END_BLOCK();                           \
+    ip = block = (target);                 \
+    if (n > limit) goto limit_reached;     \
+    DISPATCH();                            \
   } while (0)
 #define FAULT(c, a)      \
   do {                   \
@@ -143,7 +151,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define BRANCH(cond)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
-    if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0);  \
+    if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0, cycles);  \
     if (taken) JUMP(ip + ip->imm);                                     \
     NEXT();                                                            \
   } while (0)
@@ -172,7 +180,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       if (bus_result == Bus::Result::Stop) goto device_stop;                            \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
-    if constexpr (Timed) model.data(addr);                                              \
+    if constexpr (Timed) model.data(addr, cycles);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
     NEXT();                                                                             \
   } while (0)
@@ -193,7 +201,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
         goto device_stop;                                                                \
       }                                                                                  \
     }                                                                                    \
-    if constexpr (Timed) model.data(addr);                                               \
+    if constexpr (Timed) model.data(addr, cycles);                                               \
     NEXT();                                                                              \
   } while (0)
 #define CSR(op, operand, write)                                                         \
@@ -218,12 +226,20 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
                                : soft_fn;                                      \
     NEXT();                                                                    \
   } while (0)
-#define FP_FUSED(neg_product, neg_addend)                                                    \
-  do {                                                                                       \
-    ROUNDING(rm);                                                                            \
-    f[ip->rd] = fpu::fma(f[ip->rs1], f[ip->rs2], f[entry_rs3(*ip)], neg_product, neg_addend, \
-                         rm, hart_.fflags);                                                  \
-    NEXT();                                                                                  \
+  // Host FMA when present; a NaN addend takes the soft path because RISC-V
+  // requires NV for inf*0 even then, which the host need not raise.
+#define FP_FUSED(neg_product, neg_addend)                                                      \
+  do {                                                                                         \
+    ROUNDING(rm);                                                                              \
+    const uint32_t c = f[entry_rs3(*ip)];                                                      \
+    if (rm == fpu::RNE && kHostHasFma && !fpu::is_nan(c)) {                                    \
+      const uint32_t a = f[ip->rs1] ^ ((neg_product) ? 0x80000000u : 0u);                     \
+      const uint32_t b = c ^ ((neg_addend) ? 0x80000000u : 0u);                               \
+      f[ip->rd] = host_result(host_fma(as_float(a), as_float(f[ip->rs2]), as_float(b)));     \
+    } else {                                                                                   \
+      f[ip->rd] = fpu::fma(f[ip->rs1], f[ip->rs2], c, neg_product, neg_addend, rm, hart_.fflags); \
+    }                                                                                          \
+    NEXT();                                                                                    \
   } while (0)
 
   DISPATCH();
@@ -243,7 +259,7 @@ L_SLOW_CTI: {
   const DecodedInsn d = decode(word);
   const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
   if (!taken) {
-    if constexpr (Timed) model.branch(PC_OF(ip), false, false);
+    if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
     NEXT();
   }
   const uint32_t target = PC_OF(ip) + static_cast<uint32_t>(d.imm);
@@ -256,11 +272,11 @@ L_JAL: {
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
-  ++n;
+  END_BLOCK();
   if constexpr (Timed) {
-    if (profiler_ && ip->rd == 1) profiler_->call(PC_OF(target), link, Cost{start + n, model.cycles});
+    if (profiler_ && ip->rd == 1) profiler_->call(PC_OF(target), link, Cost{start + n, cycles});
   }
-  ip = target;
+  ip = block = target;
   if (n > limit) goto limit_reached;
   DISPATCH();
 }
@@ -271,15 +287,15 @@ L_JALR: {
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
-  ++n;
+  END_BLOCK();
   if constexpr (Timed) {
     if (profiler_) {
-      const Cost now{start + n, model.cycles};
+      const Cost now{start + n, cycles};
       if (ip->rd == 1) profiler_->call(target, link, now);
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler_->ret(target, now);
     }
   }
-  ip = base + (target - kRamBase) / 4;
+  ip = block = base + (target - kRamBase) / 4;
   if (n > limit) goto limit_reached;
   DISPATCH();
 }
@@ -399,7 +415,6 @@ device_stop:
   if (retire_stopper) {
     STEP();
     ++ip;
-    ++n;
   }
   stop.pc = PC_OF(ip) - (retire_stopper ? 4 : 0);
   stop.addr = addr;
@@ -420,12 +435,14 @@ fault:
   stop.pc = PC_OF(ip);
 out:
   hart_.pc = PC_OF(ip);
-  SYNC();
+  SYNC();  // ip is not retired: the count runs up to it
   x[0] = 0;
   return stop;
 
 #undef PC_OF
 #undef NOW
+#undef RETIRED
+#undef END_BLOCK
 #undef SYNC
 #undef DISPATCH
 #undef STEP
