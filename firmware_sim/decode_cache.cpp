@@ -12,8 +12,12 @@ void DecodeCache::fill(uint32_t index, uint32_t word) {
   switch (fmt) {
     case Format::R: case Format::I: case Format::Shift: case Format::Load: case Format::U:
     case Format::J: case Format::Jalr: case Format::Csr: case Format::CsrI: case Format::FCmp:
-    case Format::FCvtXF: case Format::FMvXF:
+    case Format::FMvXF:
       if (e.rd == 0) e.rd = kSinkReg;
+      break;
+    case Format::FCvtXF:
+      if (e.rd == 0) e.rd = kSinkReg;
+      e.imm = d.rm;
       break;
     case Format::FR: case Format::FUnary: case Format::FCvtFX:
       e.imm = d.rm;

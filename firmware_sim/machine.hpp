@@ -25,7 +25,10 @@ class Machine {
 
   // With a model (and optionally a profiler or a trace stream) the timed
   // variant runs; without, the plain one, which counts instructions only.
-  void set_cycle_model(CycleModel* m) { model_ = m; }
+  void set_cycle_model(CycleModel* m) {
+    model_ = m;
+    if (m) csr_.set_clock_hz(m->config().clock_hz);
+  }
   void set_profiler(Profiler* p) { profiler_ = p; }
   void set_trace(std::FILE* out) { trace_ = out; }
 
