@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Dynamic instruction count and modelled cycles of the firmware for a scene at
+# one or more sizes, plus a per-function profile of the first size.
+#   bench/firmware/count.sh [SCENE [WxH ...]]   (default contest.sld 128x128 512x512)
+# Needs valgrind's callgrind_annotate for the profile table.
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+scene=$(scene_path "${1:-contest.sld}")
+shift || true
+sizes=("$@")
+((${#sizes[@]})) || sizes=(128x128 512x512)
+out=${MINRT_BENCH_OUT:-$MINRT_BUILD_DIR/bench-firmware}
+mkdir -p "$out"
+name=$(basename "$scene" .sld)
+
+for size in "${sizes[@]}"; do
+  prof=()
+  [[ $size == "${sizes[0]}" ]] && prof=(--profile-out "$out/$name-$size.callgrind")
+  echo "== $name $size: $MINRT_FIRMWARE"
+  "$sim" --stats --cycle-model default "${prof[@]}" --uart-in "$scene" \
+    --uart-out "$out/$name-$size.ppm" "$MINRT_FIRMWARE" -- --size "$size" 2>&1 |
+    grep -E '^(instructions|cycles|CPI|host MIPS|clock):'
+done
+
+if command -v callgrind_annotate >/dev/null; then
+  echo "== per-function profile, $name ${sizes[0]} (self instructions, self cycles)"
+  callgrind_annotate "$out/$name-${sizes[0]}.callgrind" | c++filt |
+    sed -n '/file:function/,$p' | sed -e 's/ \[[^]]*\]$//' -e 's/???://' | head -25
+else
+  echo "callgrind_annotate not found; profile in $out/$name-${sizes[0]}.callgrind"
+fi
