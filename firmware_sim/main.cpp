@@ -124,6 +124,7 @@ int run(const std::vector<std::string>& argv) {
   const StopInfo stop = m.run(opt.max_instructions ? opt.max_instructions : UINT64_MAX);
   const auto t1 = std::chrono::steady_clock::now();
   uart.flush();
+  if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
   if (!timed) m.hart().cycles = m.hart().instret;
 
   if (stop.cause != StopCause::Exit) {

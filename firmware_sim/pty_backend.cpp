@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -41,6 +42,19 @@ int open_uart_pty() {
     ::usleep(20000);
   }
   return master;
+}
+
+void drain_uart_pty(int master, int timeout_ms) {
+  const char* name = ::ptsname(master);
+  if (!name) return;
+  int s = ::open(name, O_RDWR | O_NOCTTY | O_NONBLOCK);
+  if (s < 0) return;
+  for (int waited = 0; waited < timeout_ms; waited += 10) {
+    int pending = 0;
+    if (::ioctl(s, FIONREAD, &pending) != 0 || pending == 0) break;
+    ::usleep(10000);
+  }
+  ::close(s);
 }
 
 }  // namespace fwsim

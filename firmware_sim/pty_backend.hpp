@@ -10,4 +10,8 @@ namespace fwsim {
 // throws std::runtime_error on failure.
 int open_uart_pty();
 
+// Waits (at most `timeout_ms`) until the host has read everything written to
+// the pty, so closing the master does not discard the firmware's last output.
+void drain_uart_pty(int master, int timeout_ms);
+
 }  // namespace fwsim

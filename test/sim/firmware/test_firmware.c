@@ -35,7 +35,13 @@ static int atoi_(const char *s) {
 }
 
 /* Recursive and mutually calling functions give the profiler a real tree. */
-__attribute__((noinline)) static unsigned fib(unsigned n) { return n < 2 ? n : fib(n - 1) + fib(n - 2); }
+/* Two real calls per level: `3a - b` keeps the compiler from turning one of
+ * them into a loop, so the profile's call count equals recur_calls. */
+static unsigned recur_calls;
+__attribute__((noinline)) static unsigned recur(unsigned n) {
+  ++recur_calls;
+  return n < 2 ? n : 3 * recur(n - 1) - recur(n - 2);
+}
 __attribute__((noinline)) static float dot(const float *a, const float *b, int n) {
   float s = 0.0f;
   for (int i = 0; i < n; ++i) s += a[i] * b[i];
@@ -57,7 +63,7 @@ static void workload(void) {
   int q = -7, d = 2;
   puts_("div "); put_i(q / d); uart_putc(' '); put_i(q % d); uart_putc(' ');
   put_u(0xfffffff0u / 3u); uart_putc('\n');
-  puts_("fib "); put_u(fib(18)); uart_putc('\n');
+  puts_("recur "); put_u(recur(18)); uart_putc('\n');
   float a[16], b[16];
   for (int i = 0; i < 16; ++i) { a[i] = 1.0f / (float)(i + 1); b[i] = (float)i * 0.37f - 2.0f; }
   puts_("dot "); put_hex(bits(dot(a, b, 16))); uart_putc('\n');
@@ -117,7 +123,13 @@ int main(int argc, char **argv) {
     puts_(i1 - i0 > 1000 && c1 - c0 >= i1 - i0 ? "counters ok\n" : "counters bad\n");
     return 0;
   }
-  if (streq(mode, "fib")) { put_u(fib((unsigned)atoi_(argv[2]))); uart_putc('\n'); return 0; }
+  if (streq(mode, "recur")) {
+    put_u(recur((unsigned)atoi_(argv[2])));
+    uart_putc(' ');
+    put_u(recur_calls);
+    uart_putc('\n');
+    return 0;
+  }
   puts_("unknown mode\n");
   return 1;
 }
