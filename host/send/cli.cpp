@@ -1,0 +1,379 @@
+#include "cli.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "port_discovery.hpp"
+#include "protocol_course_host.hpp"
+#include "protocol_framed_host.hpp"
+#include "protocol_raw.hpp"
+#include "sim_launcher.hpp"
+#include "verify.hpp"
+
+#ifndef MINRT_VERSION
+#define MINRT_VERSION "0"
+#endif
+
+namespace minrt::send {
+
+namespace {
+
+bool parse_size(const std::string& s, int& w, int& h) {
+  char* end = nullptr;
+  const long a = std::strtol(s.c_str(), &end, 10);
+  if (end == s.c_str() || (*end != 'x' && *end != 'X')) return false;
+  const char* t = end + 1;
+  const long b = std::strtol(t, &end, 10);
+  if (end == t || *end != 0 || a < 1 || b < 1 || a > 4096 || b > 4096) return false;
+  w = static_cast<int>(a);
+  h = static_cast<int>(b);
+  return true;
+}
+
+bool parse_seconds(const std::string& s, double& v) {
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return end != s.c_str() && *end == 0 && v > 0 && v < 1e6;
+}
+
+bool is_elf(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) return false;
+  unsigned char m[4] = {};
+  const bool ok = std::fread(m, 1, 4, f) == 4 && m[0] == 0x7f && m[1] == 'E' && m[2] == 'L' && m[3] == 'F';
+  std::fclose(f);
+  return ok;
+}
+
+bool read_file(const std::string& path, std::string& out) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return false;
+  out.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  return !f.bad();
+}
+
+std::string default_output(const std::string& scene) {
+  std::string base = scene;
+  const std::size_t slash = base.rfind('/');
+  if (slash != std::string::npos) base = base.substr(slash + 1);
+  const std::size_t dot = base.rfind('.');
+  if (dot != std::string::npos && dot > 0) base = base.substr(0, dot);
+  if (base.empty()) base = "image";
+  return base + ".ppm";
+}
+
+const char* kind_arg(PpmKind k) { return k == PpmKind::kP3 ? "p3" : "p6"; }
+
+int fail(int status, const std::string& msg) {
+  std::fprintf(stderr, "host-send: %s\n", msg.c_str());
+  return status;
+}
+
+}  // namespace
+
+void print_help() {
+  std::fputs(
+      "usage: host-send [--port DEV | --sim [ELF]] [OPTIONS] SCENE.sld [-o OUT.ppm]\n"
+      "       host-send --list\n"
+      "Sends an SLD scene to the min-rt firmware over a serial line and receives the\n"
+      "rendered PPM image. Without --port it starts firmware-sim on a pseudo-terminal.\n"
+      "\n"
+      "link:\n"
+      "  --port DEV               serial device, or usb:VID:PID[:SERIAL] (see --list)\n"
+      "  --sim [ELF]              run the firmware in firmware-sim (default; ELF defaults\n"
+      "                           to the build's firmware or $MINRT_FIRMWARE_ELF)\n"
+      "  --sim-binary PATH        simulator to run (default: the build's firmware-sim or\n"
+      "                           $MINRT_FIRMWARE_SIM)\n"
+      "  --baud N                 line rate, any value (default 115200; with --sim it\n"
+      "                           paces the simulated UART)\n"
+      "  --flow none|rtscts|xonxoff  flow control (default none; xonxoff is unsafe for\n"
+      "                           binary P6 and the framed protocol)\n"
+      "  --list                   list serial ports with their USB identities\n"
+      "protocol and image:\n"
+      "  --protocol raw|course|framed  (default raw)\n"
+      "  --size WxH               image size the board renders (default 512x512)\n"
+      "  --format p3|p6           PPM flavour the board sends (default p3)\n"
+      "  --program FILE           course protocol: program sent after 0x99\n"
+      "  --endian little|big      course protocol: byte order of the scene words\n"
+      "output and checks:\n"
+      "  -o, --output FILE        image file (default SCENE's name with .ppm; - = stdout);\n"
+      "                           written only when complete and valid\n"
+      "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
+      "                           maximum channel error, PSNR\n"
+      "  --expect-sha256 HEX      refuse the image unless its bytes have this SHA-256\n"
+      "  --first-byte-timeout S   wait for the reply at most S seconds (default 120)\n"
+      "  --idle-timeout S         longest silence within the reply (default 30)\n"
+      "  --progress               draw the progress line even when stderr is no terminal\n"
+      "  -q, --quiet              no summary line\n"
+      "  -h, --help, --version\n"
+      "\n"
+      "exit status: 0 ok, 1 link or transfer error, 2 usage error, 3 the firmware\n"
+      "rejected the scene (its message is printed).\n",
+      stdout);
+}
+
+ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& error) {
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    std::string inline_value;
+    bool has_inline = false;
+    if (a.size() > 2 && a[0] == '-' && a[1] == '-') {
+      const std::size_t eq = a.find('=');
+      if (eq != std::string::npos) {
+        inline_value = a.substr(eq + 1);
+        a = a.substr(0, eq);
+        has_inline = true;
+      }
+    }
+    auto value = [&](std::string& out) -> bool {
+      if (has_inline) {
+        out = inline_value;
+        return true;
+      }
+      if (i + 1 >= argc) {
+        error = a + " needs a value";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string v;
+    if (a == "-h" || a == "--help") return ParseResult::kHelp;
+    if (a == "--version") return ParseResult::kVersion;
+    if (a == "--port") {
+      if (!value(o.port)) return ParseResult::kError;
+    } else if (a == "--sim") {
+      o.sim = true;
+      if (has_inline) o.sim_elf = inline_value;
+      else if (i + 1 < argc && argv[i + 1][0] != '-' && is_elf(argv[i + 1])) o.sim_elf = argv[++i];
+    } else if (a == "--sim-binary") {
+      if (!value(o.sim_binary)) return ParseResult::kError;
+    } else if (a == "--baud") {
+      if (!value(v)) return ParseResult::kError;
+      char* end = nullptr;
+      const unsigned long b = std::strtoul(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end != 0 || b < 50 || b > 20000000) {
+        error = "bad --baud '" + v + "': expected 50..20000000";
+        return ParseResult::kError;
+      }
+      o.port_settings.baud = static_cast<std::uint32_t>(b);
+      o.baud_given = true;
+    } else if (a == "--flow") {
+      if (!value(v)) return ParseResult::kError;
+      if (v == "none") o.port_settings.flow = Flow::kNone;
+      else if (v == "rtscts") o.port_settings.flow = Flow::kRtsCts;
+      else if (v == "xonxoff") o.port_settings.flow = Flow::kXonXoff;
+      else {
+        error = "bad --flow '" + v + "': expected none, rtscts or xonxoff";
+        return ParseResult::kError;
+      }
+    } else if (a == "--protocol") {
+      if (!value(v)) return ParseResult::kError;
+      if (v == "raw") o.protocol = Protocol::kRaw;
+      else if (v == "course") o.protocol = Protocol::kCourse;
+      else if (v == "framed") o.protocol = Protocol::kFramed;
+      else {
+        error = "bad --protocol '" + v + "': expected raw, course or framed";
+        return ParseResult::kError;
+      }
+    } else if (a == "--size") {
+      if (!value(v)) return ParseResult::kError;
+      if (!parse_size(v, o.spec.width, o.spec.height)) {
+        error = "bad --size '" + v + "': expected WxH, each 1..4096";
+        return ParseResult::kError;
+      }
+    } else if (a == "--format") {
+      if (!value(v)) return ParseResult::kError;
+      if (v == "p3" || v == "P3") o.spec.kind = PpmKind::kP3;
+      else if (v == "p6" || v == "P6") o.spec.kind = PpmKind::kP6;
+      else {
+        error = "bad --format '" + v + "': expected p3 or p6";
+        return ParseResult::kError;
+      }
+    } else if (a == "--program") {
+      if (!value(o.program)) return ParseResult::kError;
+    } else if (a == "--endian") {
+      if (!value(v)) return ParseResult::kError;
+      if (v == "little") o.big_endian = false;
+      else if (v == "big") o.big_endian = true;
+      else {
+        error = "bad --endian '" + v + "': expected little or big";
+        return ParseResult::kError;
+      }
+    } else if (a == "-o" || a == "--output") {
+      if (!value(o.output)) return ParseResult::kError;
+    } else if (a == "--verify") {
+      if (!value(o.verify_ref)) return ParseResult::kError;
+    } else if (a == "--expect-sha256") {
+      if (!value(o.expect_sha256)) return ParseResult::kError;
+      if (!valid_sha256_hex(o.expect_sha256)) {
+        error = "bad --expect-sha256: expected 64 hex digits";
+        return ParseResult::kError;
+      }
+    } else if (a == "--first-byte-timeout" || a == "--idle-timeout") {
+      if (!value(v)) return ParseResult::kError;
+      double s = 0;
+      if (!parse_seconds(v, s)) {
+        error = "bad " + a + " '" + v + "': expected seconds > 0";
+        return ParseResult::kError;
+      }
+      (a == "--idle-timeout" ? o.idle_timeout : o.first_byte_timeout) = s;
+    } else if (a == "--list") {
+      o.list = true;
+    } else if (a == "-q" || a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "--progress") {
+      o.progress_forced = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      error = "unknown option '" + a + "'";
+      return ParseResult::kError;
+    } else if (!o.scene.empty()) {
+      error = "more than one scene file given ('" + o.scene + "' and '" + a + "')";
+      return ParseResult::kError;
+    } else {
+      o.scene = a;
+    }
+  }
+  if (o.list) return ParseResult::kRun;
+  if (!o.port.empty() && o.sim) {
+    error = "--port and --sim exclude each other";
+    return ParseResult::kError;
+  }
+  if (o.scene.empty()) {
+    error = "no scene file given";
+    return ParseResult::kError;
+  }
+  if (o.protocol != Protocol::kCourse && (!o.program.empty())) {
+    error = "--program only applies to --protocol course";
+    return ParseResult::kError;
+  }
+  if (o.output.empty()) o.output = default_output(o.scene);
+  return ParseResult::kRun;
+}
+
+int run(const Options& o) {
+  install_signal_handlers();
+  if (o.list) return list_ports_command();
+
+  std::string scene;
+  if (!read_file(o.scene, scene)) return fail(kExitUsage, "cannot read " + o.scene + ": " + std::strerror(errno));
+  std::string program;
+  if (!o.program.empty() && !read_file(o.program, program))
+    return fail(kExitUsage, "cannot read " + o.program + ": " + std::strerror(errno));
+  Image reference;
+  if (!o.verify_ref.empty()) {
+    std::string err;
+    if (!load_ppm(o.verify_ref, reference, err)) return fail(kExitUsage, err);
+  }
+
+  // The link: a serial device, or firmware-sim on a pty.
+  std::unique_ptr<SimLauncher> sim;
+  std::string device = o.port;
+  const bool use_sim = o.port.empty();
+  if (!o.port.empty() && o.port.rfind("usb:", 0) == 0) {
+    std::string err;
+    if (!resolve_usb_port(o.port, "/sys", device, err)) return fail(kExitLink, err);
+  }
+  if (use_sim) {
+    SimConfig cfg;
+    cfg.simulator = o.sim_binary.empty() ? default_simulator() : o.sim_binary;
+    cfg.firmware = o.sim_elf.empty() ? default_firmware() : o.sim_elf;
+    cfg.baud = o.baud_given ? o.port_settings.baud : 0;
+    cfg.firmware_args = {"--size", std::to_string(o.spec.width) + "x" + std::to_string(o.spec.height), "--format",
+                         kind_arg(o.spec.kind)};
+    if (o.protocol == Protocol::kCourse) cfg.firmware_args.push_back("--protocol=course");
+    if (o.protocol == Protocol::kFramed) cfg.firmware_args.push_back("--protocol=framed");
+    sim = std::make_unique<SimLauncher>();
+    std::string err;
+    if (!sim->start(cfg, err)) return fail(kExitLink, err);
+    device = sim->pty_path();
+  }
+
+  SerialPort port;
+  try {
+    port.open(device, o.port_settings);
+  } catch (const PortError& e) {
+    return fail(kExitLink, e.message);
+  }
+  if (!port.baud_warning().empty() && !use_sim) std::fprintf(stderr, "host-send: warning: %s\n", port.baud_warning().c_str());
+  if (o.port_settings.flow == Flow::kXonXoff && (o.spec.kind == PpmKind::kP6 || o.protocol != Protocol::kRaw))
+    std::fprintf(stderr, "host-send: warning: XON/XOFF flow control corrupts binary data (P6, course, framed)\n");
+
+  const bool paced = !use_sim || o.baud_given;
+  Progress progress(o.progress_forced || ::isatty(2) != 0, expected_image_bytes(o.spec), o.spec.height,
+                    paced ? o.port_settings.baud : 0);
+  Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
+              &progress};
+  TransferResult r;
+  if (o.protocol == Protocol::kRaw) {
+    r = run_raw(ex, scene, o.spec);
+  } else if (o.protocol == Protocol::kCourse) {
+    CourseHostOptions co;
+    co.big_endian = o.big_endian;
+    r = run_course(ex, scene, program, co, o.spec);
+  } else {
+    r = run_framed(ex, scene, o.spec);
+  }
+  progress.finish();
+  port.close();
+  int sim_status = 0;
+  if (sim) sim_status = sim->stop(r.status == TransferResult::Status::kOk ? 2000 : 500);
+
+  if (r.status == TransferResult::Status::kFirmwareError)
+    return fail(kExitFirmware, "the board reported an error: " + r.message);
+  if (r.status != TransferResult::Status::kOk) {
+    if (sim) {
+      std::string out = sim->output();
+      while (!out.empty() && out.back() == '\n') out.pop_back();
+      if (!out.empty()) {
+        const std::size_t nl = out.rfind('\n');
+        std::fprintf(stderr, "host-send: simulator said: %s\n", out.substr(nl == std::string::npos ? 0 : nl + 1).c_str());
+      }
+    }
+    return fail(kExitLink, r.message);
+  }
+  (void)sim_status;
+
+  const std::string digest = sha256_hex_of(r.image);
+  if (!o.expect_sha256.empty() && !same_sha256(digest, o.expect_sha256))
+    return fail(kExitLink, "image sha256 " + digest + " differs from the expected " + o.expect_sha256 +
+                               "; not written");
+  std::string err;
+  if (!write_file_atomically(o.output, r.image, err)) return fail(kExitLink, err);
+
+  if (!o.quiet) {
+    const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;
+    char line[320];
+    int n = std::snprintf(line, sizeof line, "host-send: %s: %llu bytes in %.3f s, %.1f kB/s", o.output.c_str(),
+                          static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0);
+    if (paced && n > 0)
+      n += std::snprintf(line + n, sizeof line - n, ", %.1f%% of the 8N1 limit at %u baud", rate * 1000.0 / o.port_settings.baud,
+                         static_cast<unsigned>(o.port_settings.baud));
+    if (r.retransmitted_rows > 0 && n > 0)
+      std::snprintf(line + n, sizeof line - n, ", %d rows re-sent", r.retransmitted_rows);
+    std::fprintf(stderr, "%s\n", line);
+    std::fprintf(stderr, "host-send: sha256 %s\n", digest.c_str());
+  }
+  if (!o.verify_ref.empty()) {
+    Image got;
+    std::string perr;
+    parse_ppm(r.image, got, perr);
+    const Comparison c = compare_images(got, reference);
+    if (!c.same_size)
+      std::fprintf(stderr, "host-send: verify: image is %dx%d, reference %dx%d\n", got.width, got.height,
+                   reference.width, reference.height);
+    else
+      std::fprintf(stderr, "host-send: verify: %s\n", describe(c).c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace minrt::send

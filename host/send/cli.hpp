@@ -1,0 +1,49 @@
+// host-send's command line and the top-level run.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "port.hpp"
+#include "ppm_receiver.hpp"
+
+namespace minrt::send {
+
+enum class Protocol { kRaw, kCourse, kFramed };
+
+struct Options {
+  std::string port;          // --port DEV or usb:VID:PID[:SERIAL]
+  bool sim = false;          // --sim (default when no --port)
+  std::string sim_elf;       // --sim ELF
+  std::string sim_binary;    // --sim-binary
+  bool baud_given = false;
+  PortSettings port_settings;
+  Protocol protocol = Protocol::kRaw;
+  ImageSpec spec{512, 512, PpmKind::kP3};
+  std::string scene;
+  std::string output;        // -o; default SCENE's stem + ".ppm"
+  double first_byte_timeout = 120;
+  double idle_timeout = 30;
+  std::string verify_ref;
+  std::string expect_sha256;
+  std::string program;       // course: --program FILE
+  bool big_endian = false;   // course: --endian
+  bool list = false;
+  bool quiet = false;
+  bool progress_forced = false;  // --progress: draw even without a terminal
+};
+
+enum class ParseResult { kRun, kHelp, kVersion, kError };
+
+ParseResult parse_command_line(int argc, char** argv, Options& options, std::string& error);
+void print_help();
+
+// Exit statuses.
+constexpr int kExitOk = 0;
+constexpr int kExitLink = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitFirmware = 3;
+
+int run(const Options& options);
+
+}  // namespace minrt::send

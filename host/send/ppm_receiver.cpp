@@ -1,0 +1,265 @@
+#include "ppm_receiver.hpp"
+
+#include <cstdio>
+
+#include <minrt/serial_protocol.h>
+
+namespace minrt::send {
+
+namespace {
+bool is_space(std::uint8_t c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f'; }
+bool is_digit(std::uint8_t c) { return c >= '0' && c <= '9'; }
+constexpr std::size_t kMaxErrorLine = 4096;
+const char* kind_name(PpmKind k) { return k == PpmKind::kP3 ? "P3" : "P6"; }
+}  // namespace
+
+std::string ppm_header(const ImageSpec& spec) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s\n%d %d 255\n", kind_name(spec.kind), spec.width, spec.height);
+  return buf;
+}
+
+std::uint64_t expected_image_bytes(const ImageSpec& spec) {
+  const std::uint64_t px = static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height);
+  const std::uint64_t header = ppm_header(spec).size();
+  if (spec.kind == PpmKind::kP6) return header + 3 * px;
+  return header + px * 10;  // "RRR GGG BBB\n" is at most 12, typical images ~8-10
+}
+
+PpmReceiver::PpmReceiver(const ImageSpec& expected) : expected_(expected) {
+  pixels_.resize(static_cast<std::size_t>(expected.width) * static_cast<std::size_t>(expected.height) * 3);
+}
+
+int PpmReceiver::rows_complete() const {
+  const std::size_t row = static_cast<std::size_t>(expected_.width) * 3;
+  return row == 0 ? 0 : static_cast<int>(pixel_bytes_ / row);
+}
+
+bool PpmReceiver::fail(std::string msg) {
+  state_ = State::kFailed;
+  message_ = std::move(msg);
+  return false;
+}
+
+std::size_t PpmReceiver::feed(const std::uint8_t* data, std::size_t size) {
+  std::size_t i = 0;
+  if (state_ == State::kPayload && kind_ == PpmKind::kP6) {
+    // Fast path: copy the binary payload in one go.
+    const std::size_t want = pixels_.size() - pixel_bytes_;
+    const std::size_t take = size < want ? size : want;
+    for (std::size_t k = 0; k < take; ++k) pixels_[pixel_bytes_ + k] = data[k];
+    pixel_bytes_ += take;
+    bytes_ += take;
+    i = take;
+    if (pixel_bytes_ == pixels_.size()) state_ = State::kDone;
+  }
+  for (; i < size; ++i) {
+    if (state_ == State::kDone || state_ == State::kFailed || state_ == State::kFirmwareError) break;
+    ++bytes_;
+    if (!step(data[i])) {
+      // The byte that ended the reply (or broke it) counts as consumed.
+      ++i;
+      break;
+    }
+  }
+  return i;
+}
+
+// Returns false when the reply has ended (done, failed or firmware error).
+bool PpmReceiver::step(std::uint8_t c) {
+  switch (state_) {
+    case State::kStart:
+      if (c == MINRT_ERROR_MARKER[0]) {
+        state_ = State::kErrorLine;
+        message_.assign(1, static_cast<char>(c));
+        return true;
+      }
+      if (c != 'P') {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "reply does not start like a PPM or an error line (first byte 0x%02x)", c);
+        return fail(buf);
+      }
+      state_ = State::kHeader;
+      token_ = "P";
+      return true;
+    case State::kErrorLine: {
+      if (c == '\n') {
+        const std::string marker = MINRT_ERROR_MARKER;
+        if (message_.compare(0, marker.size(), marker) == 0) {
+          message_.erase(0, marker.size());
+          state_ = State::kFirmwareError;
+        } else {
+          fail("unexpected reply line: " + message_);
+        }
+        return false;
+      }
+      if (message_.size() >= kMaxErrorLine) return fail("error line from the board is too long");
+      if (c != '\r') message_.push_back(static_cast<char>(c));
+      return true;
+    }
+    case State::kHeader:
+      if (in_comment_) {
+        if (c == '\n' || c == '\r') in_comment_ = false;
+        return true;
+      }
+      if (c == '#' && token_.empty()) {
+        in_comment_ = true;
+        return true;
+      }
+      if (is_space(c)) {
+        if (token_.empty()) return true;
+        if (!header_token_done()) return false;
+        if (header_field_ == 4) {
+          state_ = State::kPayload;
+          if (pixels_.empty()) state_ = State::kDone;
+          return state_ != State::kDone;
+        }
+        return true;
+      }
+      if (token_.size() > 16) return fail("PPM header field too long");
+      token_.push_back(static_cast<char>(c));
+      return true;
+    case State::kPayload:
+      // Only P3 gets here (P6 takes the fast path in feed, except its first byte).
+      if (kind_ == PpmKind::kP6) {
+        pixels_[pixel_bytes_++] = c;
+        if (pixel_bytes_ == pixels_.size()) {
+          state_ = State::kDone;
+          return false;
+        }
+        return true;
+      }
+      if (is_digit(c)) {
+        if (p3_value_ < 0) p3_value_ = 0;
+        p3_value_ = p3_value_ * 10 + (c - '0');
+        if (++p3_digits_ > 3 || p3_value_ > 255) return fail("P3 value above 255");
+        return true;
+      }
+      if (!is_space(c)) {
+        char buf[80];
+        std::snprintf(buf, sizeof buf, "unexpected byte 0x%02x in the P3 pixel data", c);
+        return fail(buf);
+      }
+      if (p3_value_ >= 0) {
+        if (pixel_bytes_ >= pixels_.size()) return fail("more P3 values than the image holds");
+        pixels_[pixel_bytes_++] = static_cast<std::uint8_t>(p3_value_);
+        p3_value_ = -1;
+        p3_digits_ = 0;
+        if (pixel_bytes_ == pixels_.size()) {
+          state_ = State::kDone;
+          return false;
+        }
+      }
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool PpmReceiver::header_token_done() {
+  if (header_field_ == 0) {
+    if (token_ == "P6") kind_ = PpmKind::kP6;
+    else if (token_ == "P3") kind_ = PpmKind::kP3;
+    else return fail("bad PPM magic '" + token_ + "'");
+    if (kind_ != expected_.kind)
+      return fail(std::string("image is ") + kind_name(kind_) + ", expected " + kind_name(expected_.kind));
+  } else {
+    long v = 0;
+    for (char ch : token_) {
+      if (!is_digit(static_cast<std::uint8_t>(ch))) return fail("bad PPM header field '" + token_ + "'");
+      v = v * 10 + (ch - '0');
+    }
+    values_[header_field_] = v;
+    if (header_field_ == 2 && (values_[1] != expected_.width || values_[2] != expected_.height)) {
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "image is %ldx%ld, expected %dx%d", values_[1], values_[2], expected_.width,
+                    expected_.height);
+      return fail(buf);
+    }
+    if (header_field_ == 3 && v != 255) return fail("PPM maxval is " + token_ + ", expected 255");
+  }
+  token_.clear();
+  ++header_field_;
+  return true;
+}
+
+void PpmReceiver::finish() {
+  if (state_ == State::kDone || state_ == State::kFailed || state_ == State::kFirmwareError) return;
+  if (state_ == State::kPayload && kind_ == PpmKind::kP3 && p3_value_ >= 0 &&
+      pixel_bytes_ + 1 == pixels_.size()) {
+    pixels_[pixel_bytes_++] = static_cast<std::uint8_t>(p3_value_);
+    state_ = State::kDone;
+    return;
+  }
+  char buf[160];
+  if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
+  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", message_.c_str());
+  else if (state_ == State::kHeader) std::snprintf(buf, sizeof buf, "PPM header is cut off after %llu bytes", static_cast<unsigned long long>(bytes_));
+  else
+    std::snprintf(buf, sizeof buf, "image is truncated: %zu of %zu channel values (%d of %d rows) after %llu bytes",
+                  pixel_bytes_, pixels_.size(), rows_complete(), expected_.height,
+                  static_cast<unsigned long long>(bytes_));
+  fail(buf);
+}
+
+}  // namespace minrt::send
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace minrt::send {
+
+namespace {
+bool write_fd(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+}  // namespace
+
+bool write_file_atomically(const std::string& path, const std::string& bytes, std::string& error) {
+  if (path == "-") {
+    if (!write_fd(1, bytes)) {
+      error = std::string("cannot write the image to standard output: ") + std::strerror(errno);
+      return false;
+    }
+    return true;
+  }
+  std::string temp = path + ".partial.XXXXXX";
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) {
+    error = "cannot create a temporary file next to " + path + ": " + std::strerror(errno);
+    return false;
+  }
+  ::fchmod(fd, 0644);
+  bool ok = write_fd(fd, bytes);
+  int err = errno;
+  if (ok && ::fsync(fd) != 0 && errno != EINVAL) {
+    ok = false;
+    err = errno;
+  }
+  if (::close(fd) != 0 && ok) {
+    ok = false;
+    err = errno;
+  }
+  if (ok && std::rename(temp.c_str(), path.c_str()) != 0) {
+    ok = false;
+    err = errno;
+  }
+  if (!ok) {
+    ::unlink(temp.c_str());
+    error = "cannot write " + path + ": " + std::strerror(err);
+  }
+  return ok;
+}
+
+}  // namespace minrt::send

@@ -1,0 +1,20 @@
+// Course protocol, host side (the shared parts are in protocol_course.hpp).
+#pragma once
+
+#include <string>
+
+#include "protocol_raw.hpp"
+
+namespace minrt::send {
+
+struct CourseHostOptions {
+  bool big_endian = false;
+  int handshake_timeout_ms = 30000;
+};
+
+// Waits for 0x99, sends the program (4-byte length + bytes), waits for 0xaa,
+// sends the scene converted to binary words, then receives the PPM like raw.
+TransferResult run_course(Exchange& ex, const std::string& scene_text, const std::string& program,
+                          const CourseHostOptions& options, const ImageSpec& spec);
+
+}  // namespace minrt::send

@@ -1,0 +1,133 @@
+#include "protocol_raw.hpp"
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+#include <minrt/serial_protocol.h>
+
+namespace minrt::send {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+int ms_since(Clock::time_point t) {
+  return static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - t).count());
+}
+}  // namespace
+
+TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
+  TransferResult r;
+  const int fd = ex.port.fd();
+  std::size_t sent = 0;
+  bool clock_started = false;
+  Clock::time_point t0 = Clock::now(), last_rx = Clock::now(), last_tx = Clock::now(), t_end = Clock::now();
+  if (ex.progress) ex.progress->start();
+  std::uint8_t buf[8192];
+  auto fail = [&](std::string msg) {
+    r.status = TransferResult::Status::kLinkError;
+    r.message = std::move(msg);
+    r.sent = sent;
+    r.received = rx.bytes();
+    return r;
+  };
+  for (;;) {
+    if (g_interrupted) return fail("interrupted");
+    // Stop sending once the board has started to answer: it has read all it
+    // wants (a rejected scene is answered before the end of the upload).
+    const bool sending = sent < out.size() && !rx.started();
+    pollfd p{fd, static_cast<short>(POLLIN | (sending ? POLLOUT : 0)), 0};
+    int wait = 100;
+    ::poll(&p, 1, wait);
+    if (sending && (p.revents & POLLOUT)) {
+      const ssize_t n = ::write(fd, out.data() + sent, out.size() - sent);
+      if (n > 0) {
+        if (!clock_started) {
+          clock_started = true;
+          t0 = Clock::now();
+          if (ex.progress) ex.progress->start();
+        }
+        sent += static_cast<std::size_t>(n);
+        last_tx = Clock::now();
+      } else if (n < 0 && errno != EAGAIN && errno != EINTR) {
+        return fail(std::string("write error on ") + ex.port.device() + ": " + std::strerror(errno));
+      }
+    }
+    if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n > 0) {
+        if (!clock_started) {
+          clock_started = true;
+          t0 = Clock::now();
+        }
+        last_rx = Clock::now();
+        const std::size_t used = rx.feed(buf, static_cast<std::size_t>(n));
+        if (rx.done() || (rx.state() == PpmReceiver::State::kHeader) ||
+            rx.state() == PpmReceiver::State::kPayload)
+          r.image.append(reinterpret_cast<const char*>(buf), used);
+        if (ex.progress) ex.progress->update(rx.bytes(), rx.rows_complete());
+        if (rx.done()) {
+          t_end = Clock::now();
+          break;
+        }
+        if (rx.firmware_error()) {
+          r.status = TransferResult::Status::kFirmwareError;
+          r.message = rx.message();
+          r.sent = sent;
+          r.received = rx.bytes();
+          return r;
+        }
+        if (rx.failed()) return fail(rx.message());
+        continue;
+      }
+      if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
+        rx.finish();
+        if (rx.done()) {
+          t_end = Clock::now();
+          break;
+        }
+        if (rx.firmware_error()) continue;
+        return fail("line closed (" + std::string(n == 0 ? "end of file" : std::strerror(errno)) + "): " +
+                    rx.message());
+      }
+    }
+    // Timeouts.
+    if (sending) {
+      if (ms_since(last_tx) > ex.timeouts.idle_ms)
+        return fail("the board stopped reading the scene (" + std::to_string(sent) + " of " +
+                    std::to_string(out.size()) + " bytes sent)");
+    } else if (!rx.started()) {
+      const auto since = sent > 0 ? last_tx : t0;
+      if (ms_since(since) > ex.timeouts.first_byte_ms) {
+        rx.finish();
+        return fail("no reply within " + std::to_string(ex.timeouts.first_byte_ms / 1000) +
+                    " s (first-byte timeout)");
+      }
+    } else if (ms_since(last_rx) > ex.timeouts.idle_ms) {
+      rx.finish();
+      if (rx.done()) {
+        t_end = last_rx;
+        break;
+      }
+      if (rx.firmware_error()) continue;
+      return fail("line idle for " + std::to_string(ex.timeouts.idle_ms / 1000) + " s (idle timeout): " +
+                  rx.message());
+    }
+  }
+  r.status = TransferResult::Status::kOk;
+  r.seconds = std::chrono::duration<double>(t_end - t0).count();
+  r.sent = sent;
+  r.received = rx.bytes();
+  return r;
+}
+
+TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& spec) {
+  std::string out = scene;
+  out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
+  PpmReceiver rx(spec);
+  return exchange(ex, out, rx);
+}
+
+}  // namespace minrt::send

@@ -1,0 +1,45 @@
+// Raw protocol, host side: the SLD text goes out as is (followed by
+// MINRT_END_OF_INPUT), the PPM image or one error line comes back
+// (include/minrt/serial_protocol.h). The exchange loop sends and receives
+// at once, so a board that rejects a scene half-way through is heard.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "port.hpp"
+#include "ppm_receiver.hpp"
+#include "progress.hpp"
+
+namespace minrt::send {
+
+struct Timeouts {
+  int first_byte_ms = 120000;  // from the end of sending to the first reply byte
+  int idle_ms = 30000;         // longest silence once the reply has started
+};
+
+struct TransferResult {
+  enum class Status { kOk, kFirmwareError, kLinkError };
+  Status status = Status::kLinkError;
+  std::string message;         // link error text or the firmware's message
+  std::string image;           // the image bytes exactly as received (kOk)
+  double seconds = 0;          // first byte sent .. last image byte received
+  std::uint64_t sent = 0;
+  std::uint64_t received = 0;
+  int retransmitted_rows = 0;  // framed only
+};
+
+struct Exchange {
+  SerialPort& port;
+  Timeouts timeouts;
+  Progress* progress = nullptr;
+};
+
+// Sends `out` (may be empty), then collects the reply into `rx`. `t0` is the
+// moment the transfer clock started (the first byte sent); if null, it
+// starts with the first byte written here.
+TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx);
+
+TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& spec);
+
+}  // namespace minrt::send

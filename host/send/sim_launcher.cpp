@@ -1,0 +1,191 @@
+#include "sim_launcher.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+
+#ifndef MINRT_FIRMWARE_SIM_DEFAULT
+#define MINRT_FIRMWARE_SIM_DEFAULT "firmware-sim"
+#endif
+#ifndef MINRT_FIRMWARE_ELF_DEFAULT
+#define MINRT_FIRMWARE_ELF_DEFAULT "minrt-rv32imf.elf"
+#endif
+
+namespace minrt::send {
+
+namespace {
+const char kPtyPrefix[] = "uart on ";
+long long now_ms() {
+  using namespace std::chrono;
+  return duration_cast<milliseconds>(steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+std::string default_simulator() {
+  const char* env = std::getenv("MINRT_FIRMWARE_SIM");
+  return env != nullptr && *env != 0 ? env : MINRT_FIRMWARE_SIM_DEFAULT;
+}
+
+std::string default_firmware() {
+  const char* env = std::getenv("MINRT_FIRMWARE_ELF");
+  return env != nullptr && *env != 0 ? env : MINRT_FIRMWARE_ELF_DEFAULT;
+}
+
+bool parse_pty_line(const std::string& line, std::string& path) {
+  const std::size_t at = line.find(kPtyPrefix);
+  if (at == std::string::npos) return false;
+  std::string p = line.substr(at + sizeof kPtyPrefix - 1);
+  while (!p.empty() && (p.back() == '\n' || p.back() == '\r' || p.back() == ' ')) p.pop_back();
+  if (p.empty() || p[0] != '/') return false;
+  path = p;
+  return true;
+}
+
+SimLauncher::~SimLauncher() { stop(0); }
+
+bool SimLauncher::start(const SimConfig& config, std::string& error) {
+  if (::access(config.simulator.c_str(), X_OK) != 0) {
+    error = "simulator " + config.simulator + " not found or not executable (set MINRT_FIRMWARE_SIM or --sim-binary)";
+    return false;
+  }
+  if (::access(config.firmware.c_str(), R_OK) != 0) {
+    error = "firmware " + config.firmware + " not found (build it, or give --sim ELF / MINRT_FIRMWARE_ELF)";
+    return false;
+  }
+  std::vector<std::string> args{config.simulator, "--pty"};
+  if (config.baud != 0) {
+    args.push_back("--baud");
+    args.push_back(std::to_string(config.baud));
+  }
+  args.push_back(config.firmware);
+  if (!config.firmware_args.empty()) {
+    args.push_back("--");
+    for (const auto& a : config.firmware_args) args.push_back(a);
+  }
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  int pipefd[2];
+  if (::pipe2(pipefd, O_CLOEXEC) != 0) {
+    error = std::string("pipe: ") + std::strerror(errno);
+    return false;
+  }
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    error = std::string("fork: ") + std::strerror(errno);
+    ::close(pipefd[0]);
+    ::close(pipefd[1]);
+    return false;
+  }
+  if (pid == 0) {
+    ::dup2(pipefd[1], 2);
+    ::dup2(pipefd[1], 1);
+    const int devnull = ::open("/dev/null", O_RDONLY);
+    if (devnull >= 0) ::dup2(devnull, 0);
+    ::execv(argv[0], argv.data());
+    const char msg[] = "host-send: cannot run the simulator\n";
+    (void)!::write(2, msg, sizeof msg - 1);
+    ::_exit(127);
+  }
+  ::close(pipefd[1]);
+  pid_ = pid;
+  err_fd_ = pipefd[0];
+
+  // Read its output line by line until the pty line shows up.
+  std::string pending;
+  const long long deadline = now_ms() + config.startup_timeout_ms;
+  for (;;) {
+    std::size_t nl;
+    while ((nl = pending.find('\n')) != std::string::npos) {
+      const std::string line = pending.substr(0, nl);
+      pending.erase(0, nl + 1);
+      if (parse_pty_line(line, pty_)) {
+        output_ = pending;
+        drainer_ = std::thread([this] { drain(); });
+        return true;
+      }
+      output_ += line + "\n";
+    }
+    const long long left = deadline - now_ms();
+    if (left <= 0) {
+      error = "simulator did not announce its pty within " + std::to_string(config.startup_timeout_ms / 1000) + " s";
+      break;
+    }
+    pollfd p{err_fd_, POLLIN, 0};
+    ::poll(&p, 1, static_cast<int>(left));
+    char buf[512];
+    const ssize_t n = ::read(err_fd_, buf, sizeof buf);
+    if (n > 0) {
+      pending.append(buf, static_cast<std::size_t>(n));
+    } else if (n == 0) {
+      output_ += pending;
+      std::string last = output_;
+      while (!last.empty() && last.back() == '\n') last.pop_back();
+      if (last.rfind('\n') != std::string::npos) last = last.substr(last.rfind('\n') + 1);
+      error = "simulator exited before opening its pty" + (last.empty() ? std::string() : ": " + last);
+      break;
+    }
+  }
+  stop(1000);
+  return false;
+}
+
+void SimLauncher::drain() {
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(err_fd_, buf, sizeof buf);
+    if (n > 0) {
+      std::lock_guard<std::mutex> lock(mu_);
+      if (output_.size() < (1u << 20)) output_.append(buf, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    return;
+  }
+}
+
+std::string SimLauncher::output() {
+  std::lock_guard<std::mutex> lock(mu_);
+  return output_;
+}
+
+int SimLauncher::stop(int timeout_ms) {
+  if (pid_ > 0) {
+    const long long deadline = now_ms() + timeout_ms;
+    int st = 0;
+    pid_t r = 0;
+    for (;;) {
+      r = ::waitpid(pid_, &st, WNOHANG);
+      if (r != 0 || now_ms() >= deadline) break;
+      ::usleep(10000);
+    }
+    if (r == 0) {
+      ::kill(pid_, SIGTERM);
+      for (int i = 0; i < 100 && (r = ::waitpid(pid_, &st, WNOHANG)) == 0; ++i) ::usleep(10000);
+      if (r == 0) {
+        ::kill(pid_, SIGKILL);
+        ::waitpid(pid_, &st, 0);
+      }
+      status_ = -1;
+    } else if (r > 0) {
+      status_ = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    }
+    pid_ = -1;
+  }
+  if (drainer_.joinable()) drainer_.join();
+  if (err_fd_ >= 0) {
+    ::close(err_fd_);
+    err_fd_ = -1;
+  }
+  return status_;
+}
+
+}  // namespace minrt::send
