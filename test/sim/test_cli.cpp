@@ -65,7 +65,7 @@ TEST_CASE("the workload runs, prints over the UART and exits 0", "[cli]") {
   CHECK(r.err.empty());
 }
 
-TEST_CASE("--stats prints the contract lines", "[cli]") {
+TEST_CASE("stats option prints the contract lines", "[cli]") {
   Result r = sim("--stats " + kElf);
   REQUIRE(r.status == 0);
   CHECK(std::regex_search(r.err, std::regex("(^|\n)instructions: [0-9]+\n")));
@@ -105,14 +105,14 @@ TEST_CASE("traps stop with cause, pc, instruction and symbol, status 4", "[cli][
   CHECK(sim(kElf + " -- ecall").status == 4);
 }
 
-TEST_CASE("--max-instructions stops a runaway firmware with status 5", "[cli]") {
+TEST_CASE("max-instructions option stops a runaway firmware with status 5", "[cli]") {
   Result r = sim("--max-instructions 100000 " + kElf + " -- spin");
   CHECK(r.status == 5);
   CHECK(r.err.find("instruction limit exceeded") != std::string::npos);
   CHECK(sim("--max-instructions 100000000 " + kElf).status == 0);
 }
 
-TEST_CASE("UART input from stdin and files; output to a file", "[cli][uart]") {
+TEST_CASE("UART input from stdin and files, output to a file", "[cli][uart]") {
   CHECK(sim(kElf + " -- echo", "hello\nq").out == "HELLO\n");
   const std::string in = temp_path("uin"), out = temp_path("uout");
   spit(in, "abc q");
@@ -131,7 +131,7 @@ TEST_CASE("a firmware polling the UART after input EOF stops with status 6", "[c
   CHECK(r.err.find("UART input at end of file") != std::string::npos);
 }
 
-TEST_CASE("--baud paces the UART in simulated time without changing the bytes", "[cli][uart]") {
+TEST_CASE("baud option paces the UART in simulated time without changing the bytes", "[cli][uart]") {
   Result fast = sim("--stats " + kElf + " -- echo", "hello world q");
   Result slow = sim("--stats --baud 9600 " + kElf + " -- echo", "hello world q");
   REQUIRE(fast.status == 0);
@@ -184,7 +184,7 @@ TEST_CASE("counters CSRs work from firmware", "[cli][counters]") {
   CHECK(sim("--cycle-model default " + kElf + " -- counters").out == "counters ok\n");
 }
 
-TEST_CASE("--trace disassembles every executed instruction", "[cli][trace]") {
+TEST_CASE("trace option disassembles every executed instruction", "[cli][trace]") {
   Result r = sim("--trace " + kElf + " -- exit 3");
   CHECK(r.status == 3);
   CHECK(r.err.rfind("80000000: ", 0) == 0);
@@ -233,7 +233,7 @@ TEST_CASE("profiles: callgrind and folded stacks agree with the run", "[cli][pro
   std::remove(folded.c_str());
 }
 
-TEST_CASE("--pty: the UART is a pseudo-terminal a host can talk to", "[cli][pty]") {
+TEST_CASE("pty option: the UART is a pseudo-terminal a host can talk to", "[cli][pty]") {
   int err_pipe[2];
   REQUIRE(::pipe(err_pipe) == 0);
   const pid_t pid = ::fork();
