@@ -16,6 +16,10 @@
 #include "ppm_writer.hpp"
 #include "scene.hpp"
 
+// The innermost solver steps run millions of times per image; keep them in
+// their callers' loops.
+#define MINRT_INLINE [[gnu::always_inline]] inline
+
 namespace minrt {
 
 // int_of_float then clamp to 0..255, with the original's x86-64 OCaml
@@ -125,16 +129,18 @@ class Tracer {
     R v[3];
     R* c;
   };
+  // Fields the intersection loops touch come first, to share cache lines.
   struct Object {
-    int32_t texture, form, reflection, rotated;
-    R abc[3];
-    R center[3];
+    int32_t form, rotated;
     bool inverted;
-    R diffuse, hilight;
-    R color[3];
+    int consts_offset;
+    R abc[3];
     R rot[3];  // after preprocessing: the yz, zx, xy cross-term coefficients
     R start[4];  // per ray-start table: start - center, and the constant term
-    int consts_offset;
+    R center[3];
+    int32_t texture, reflection;
+    R diffuse, hilight;
+    R color[3];
   };
   struct Reflection {
     int surface_id;
@@ -305,7 +311,7 @@ class Tracer {
 
   // --- quadratic forms ----------------------------------------------------
 
-  static R quadratic(const Object& m, R v0, R v1, R v2) {
+  MINRT_INLINE static R quadratic(const Object& m, R v0, R v1, R v2) {
     const R diag = sqr(v0) * m.abc[0] + sqr(v1) * m.abc[1] + sqr(v2) * m.abc[2];
     if (m.rotated == 0) return diag;
     return diag + v1 * v2 * m.rot[0] + v2 * v0 * m.rot[1] + v0 * v1 * m.rot[2];
@@ -370,7 +376,7 @@ class Tracer {
 
   // --- table-driven solvers -----------------------------------------------
 
-  int solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2) {
+  MINRT_INLINE int solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2) {
     const R d0 = (c[0] - b0) * c[1];
     if (fabs(d0 * v[1] + b1) < m.abc[1] && fabs(d0 * v[2] + b2) < m.abc[2] && c[1] != R(0)) {
       solver_dist_ = d0;
@@ -389,12 +395,20 @@ class Tracer {
     return 0;
   }
 
-  int solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc) {
+  // kAheadOnly: the caller only uses a positive distance. For an outward
+  // surface with 1/a > 0 and -b' <= 0, (-b' - sqrt(d)) / a is negative, so the
+  // square root is skipped and 0 is reported as the distance.
+  template <bool kAheadOnly = false>
+  MINRT_INLINE int solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc) {
     const R aa = c[0];
     if (aa == R(0)) return 0;
     const R neg_bb = c[1] * b0 + c[2] * b1 + c[3] * b2;
     const R d = sqr(neg_bb) - aa * cc;
     if (d > R(0)) {
+      if (kAheadOnly && !m.inverted && neg_bb <= R(0) && c[4] > R(0)) {
+        solver_dist_ = R(0);
+        return 1;
+      }
       solver_dist_ = m.inverted ? (neg_bb + M::sqrt(d)) * c[4] : (neg_bb - M::sqrt(d)) * c[4];
       return 1;
     }
@@ -421,7 +435,8 @@ class Tracer {
   }
 
   // Ray along dv from the point given to setup_startp.
-  int solver_fast2(int index, const DirVec& dv) {
+  template <bool kAheadOnly = false>
+  MINRT_INLINE int solver_fast2(int index, const DirVec& dv) {
     const Object& m = objects_[index];
     const R* s = m.start;
     const R* c = dv.c + m.consts_offset;
@@ -433,7 +448,7 @@ class Tracer {
       }
       return 0;
     }
-    return solve_second_fast(m, c, s[0], s[1], s[2], s[3]);
+    return solve_second_fast<kAheadOnly>(m, c, s[0], s[1], s[2], s[3]);
   }
 
   // --- direction and start tables -----------------------------------------
@@ -501,7 +516,7 @@ class Tracer {
 
   // --- inside/outside -----------------------------------------------------
 
-  static bool is_outside(const Object& m, R q0, R q1, R q2) {
+  MINRT_INLINE static bool is_outside(const Object& m, R q0, R q1, R q2) {
     const R p0 = q0 - m.center[0];
     const R p1 = q1 - m.center[1];
     const R p2 = q2 - m.center[2];
@@ -563,7 +578,7 @@ class Tracer {
 
   // --- nearest intersection -----------------------------------------------
 
-  void record_hit(const int16_t* and_net, int iobj, int t0, const R* v, const R* start) {
+  MINRT_INLINE void record_hit(const int16_t* and_net, int iobj, int t0, const R* v, const R* start) {
     const R t0p = solver_dist_;
     if (R(0) < t0p && t0p < tmin_) {
       const R t = t0p + R(0.01);
@@ -616,7 +631,7 @@ class Tracer {
       for (const int16_t* a = net + 1; *a != -1; ++a) {
         const int16_t* and_net = and_nets_[*a];
         for (const int16_t* e = and_net; *e != -1; ++e) {
-          const int t0 = solver_fast2(*e, dv);
+          const int t0 = solver_fast2<true>(*e, dv);
           if (t0 != 0)
             record_hit(and_net, *e, t0, dv.v, startp_fast_);
           else if (!objects_[*e].inverted)
@@ -708,6 +723,9 @@ class Tracer {
 
   // --- direct light -------------------------------------------------------
 
+  static bool adds_light(R bright, R hilight) { return bright > R(0) || hilight > R(0); }
+  static bool finite(R x) { return x - x == R(0); }
+
   void add_light(R bright, R hilight, R hilight_scale) {
     if (bright > R(0)) accum(rgb_, bright, texture_color_);
     if (hilight > R(0)) {
@@ -724,12 +742,13 @@ class Tracer {
       const Reflection& r = reflections_[i];
       if (!judge_intersection_fast(r.dvec)) continue;
       if (intersected_object_id_ * 4 + intsec_rectside_ != r.surface_id) continue;
-      if (in_shadow()) continue;
       const R p = dot(nvector_, r.dvec.v);
       const R scale = r.bright;
       const R bright = scale * diffuse * p;
       const R hilight = scale * dot(dir, r.dvec.v);
-      add_light(bright, hilight, hilight_scale);
+      // add_light adds nothing unless one of them is positive, so the shadow
+      // test (pure) is only needed then.
+      if (adds_light(bright, hilight) && !in_shadow()) add_light(bright, hilight, hilight_scale);
     }
   }
 
@@ -768,11 +787,9 @@ class Tracer {
       const R w = R(-2.0) * dot(dir, nvector_);
       accum(dir, w, nvector_);
       const R hilight_scale = energy * obj.hilight;
-      if (!in_shadow()) {
-        const R bright = -dot(nvector_, light_) * diffuse;
-        const R hilight = -dot(dir, light_);
-        add_light(bright, hilight, hilight_scale);
-      }
+      const R bright = -dot(nvector_, light_) * diffuse;
+      const R hilight = -dot(dir, light_);
+      if (adds_light(bright, hilight) && !in_shadow()) add_light(bright, hilight, hilight_scale);
       setup_startp(intersection_point_);
       trace_reflections(diffuse, hilight_scale, dir);
       // original: below this energy the next slot's surface id is not reset
@@ -791,10 +808,17 @@ class Tracer {
     const Object& obj = objects_[intersected_object_id_];
     get_nvector(obj, dv.v);
     utexture(obj, intersection_point_);
-    if (in_shadow()) return;
     const R br = -dot(nvector_, light_);
     const R bright = br > R(0) ? br : R(0.0);
-    accum(diffuse_ray_, energy * bright * obj.diffuse, texture_color_);
+    const R scale = energy * bright * obj.diffuse;
+    // Facing away from the light the scale is +-0, and adding +-0 * colour
+    // changes nothing (diffuse_ray_ is a sum started at +0, so never -0)
+    // unless the colour is not finite; only then does the shadow test matter.
+    if (scale == R(0) && finite(texture_color_[0]) && finite(texture_color_[1]) &&
+        finite(texture_color_[2]))
+      return;
+    if (in_shadow()) return;
+    accum(diffuse_ray_, scale, texture_color_);
   }
 
   // Samples the 60 directions of one group that face along `normal`.
