@@ -9,7 +9,7 @@
 #              arguments) under qemu-system-riscv32 -M virt must print the same
 #              bytes as in firmware-sim without arguments, and exit 0.
 #
-# Inputs: MODE SIM ELF SCENE WORK MARKER [HOST SIZE EXPECT] [QEMU]
+# Inputs: MODE SIM ELF SCENE WORK MARKER [HOST SIZE EXPECT FORMAT] [QEMU]
 cmake_minimum_required(VERSION 3.20)
 
 foreach(v MODE SIM ELF SCENE WORK MARKER)
@@ -17,6 +17,9 @@ foreach(v MODE SIM ELF SCENE WORK MARKER)
     message(FATAL_ERROR "run_firmware_case: ${v} not set")
   endif()
 endforeach()
+if(NOT FORMAT)
+  set(FORMAT p3)
+endif()
 if(NOT EXISTS "${SCENE}")
   message(FATAL_ERROR "scene ${SCENE} missing")
 endif()
@@ -26,7 +29,7 @@ endif()
 
 get_filename_component(name "${SCENE}" NAME_WE)
 get_filename_component(elf_name "${ELF}" NAME_WE)
-set(prefix "${WORK}/${elf_name}-${name}-${SIZE}")
+set(prefix "${WORK}/${elf_name}-${name}-${SIZE}-${FORMAT}")
 file(MAKE_DIRECTORY "${WORK}")
 
 # Fails unless the two output files are identical; removes them when they are.
@@ -61,10 +64,10 @@ if(NOT MODE STREQUAL "host")
 endif()
 
 execute_process(
-  COMMAND "${HOST}" -q --size ${SIZE} --precision float --shims portable "${SCENE}"
+  COMMAND "${HOST}" -q --size ${SIZE} --format ${FORMAT} --precision float --shims portable "${SCENE}"
   OUTPUT_FILE "${prefix}.host.ppm" ERROR_VARIABLE host_err RESULT_VARIABLE host_rc)
 execute_process(
-  COMMAND "${SIM}" --uart-in "${SCENE}" --uart-out "${prefix}.fw.out" "${ELF}" -- --size ${SIZE}
+  COMMAND "${SIM}" --uart-in "${SCENE}" --uart-out "${prefix}.fw.out" "${ELF}" -- --size ${SIZE} --format ${FORMAT}
   RESULT_VARIABLE fw_rc ERROR_VARIABLE fw_err)
 
 if(host_rc EQUAL 0)
