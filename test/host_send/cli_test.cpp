@@ -1,0 +1,65 @@
+// host-send's command line: help, version, usage errors (status 2) and
+// link errors (status 1).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+#include "test_support.hpp"
+
+using hs_test::run;
+
+TEST_CASE("host-send --help and --version", "[cli]") {
+  auto r = run({HS_HOST_SEND, "--help"});
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("usage: host-send") && Catch::Contains("--protocol raw|course|framed"));
+  r = run({HS_HOST_SEND, "--version"});
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::StartsWith("host-send "));
+}
+
+TEST_CASE("usage errors are one line with status 2", "[cli]") {
+  const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {},
+           {"--bogus", scene},
+           {"--size", "0x3", scene},
+           {"--format", "p5", scene},
+           {"--baud", "fast", scene},
+           {"--flow", "dtr", scene},
+           {"--protocol", "zmodem", scene},
+           {"--expect-sha256", "12", scene},
+           {"--idle-timeout", "-1", scene},
+           {"--port", "/dev/null", "--sim", scene},
+           {scene, scene},
+           {"/nonexistent.sld"},
+       }) {
+    std::vector<std::string> argv{HS_HOST_SEND};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto r = run(argv);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_THAT(r.err, Catch::StartsWith("host-send: "));
+  }
+}
+
+TEST_CASE("link errors give status 1", "[cli]") {
+  const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
+  hs_test::TempDir dir;
+  auto r = run({HS_HOST_SEND, "--port", "/nonexistent/ttyUSB9", scene, "-o", dir.file("x.ppm")});
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("cannot open /nonexistent/ttyUSB9"));
+  r = run({HS_HOST_SEND, "--port", "/dev/null", scene, "-o", dir.file("x.ppm")});
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("not a serial port"));
+  r = run({HS_HOST_SEND, "--sim-binary", "/nonexistent/sim", scene, "-o", dir.file("x.ppm")});
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("/nonexistent/sim"));
+  CHECK_FALSE(hs_test::file_exists(dir.file("x.ppm")));
+}
+
+TEST_CASE("host-send --list runs", "[cli]") {
+  const auto r = run({HS_HOST_SEND, "--list"});
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("USB devices seen by libusb"));
+}

@@ -1,0 +1,180 @@
+// host-send end to end over a pseudo-terminal: against the stand-in board
+// (always) and against firmware-sim running the firmware (when built).
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "port.hpp"
+#include "sim_launcher.hpp"
+#include "test_support.hpp"
+
+using hs_test::run;
+using hs_test::RunResult;
+
+namespace {
+
+std::string ball() { return hs_test::shared_dir() + "/scenes/ball.sld"; }
+
+// host-send with the stand-in board as its "simulator".
+RunResult send_standin(const std::vector<std::string>& extra, const std::string& scene, const std::string& out) {
+  // The stand-in ignores the ELF; any ELF file will do (it is one itself).
+  std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_STANDIN, "--sim", HS_STANDIN};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  argv.push_back(scene);
+  argv.push_back("-o");
+  argv.push_back(out);
+  return run(argv);
+}
+
+}  // namespace
+
+TEST_CASE("raw protocol end to end against the stand-in board", "[e2e][raw]") {
+  hs_test::TempDir dir;
+  for (const char* format : {"p6", "p3"}) {
+    const std::string out = dir.file(std::string("ball-") + format + ".ppm");
+    const RunResult r = send_standin({"--size", "32x32", "--format", format}, ball(), out);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "32x32", format));
+    CHECK_THAT(r.err, Catch::Contains("sha256"));
+  }
+}
+
+TEST_CASE("raw protocol over --port with a separately started board", "[e2e][raw]") {
+  minrt::send::SimLauncher board;
+  minrt::send::SimConfig cfg;
+  cfg.simulator = HS_STANDIN;
+  cfg.firmware = ball();  // ignored by the stand-in
+  cfg.firmware_args = {"--size", "24x16", "--format", "p6"};
+  std::string err;
+  REQUIRE(board.start(cfg, err));
+  hs_test::TempDir dir;
+  const std::string out = dir.file("ball.ppm");
+  const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), "--baud", "921600", "--size", "24x16", "--format",
+                           "p6", ball(), "-o", out});
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "24x16", "p6"));
+  CHECK_THAT(r.err, Catch::Contains("% of the 8N1 limit at 921600 baud"));
+  CHECK(board.stop(5000) == 0);
+}
+
+TEST_CASE("--verify and --expect-sha256", "[e2e][raw]") {
+  hs_test::TempDir dir;
+  const std::string ref = dir.file("ref.ppm");
+  {
+    const std::string bytes = hs_test::reference_image(ball(), "16x16", "p3");
+    FILE* f = std::fopen(ref.c_str(), "wb");
+    std::fwrite(bytes.data(), 1, bytes.size(), f);
+    std::fclose(f);
+  }
+  const std::string out = dir.file("out.ppm");
+  RunResult r = send_standin({"--size", "16x16", "--format", "p6", "--verify", ref}, ball(), out);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("verify: 0 pixels differ, max channel error 0, PSNR inf dB"));
+
+  r = send_standin({"--size", "16x16", "--format", "p6", "--expect-sha256", std::string(64, '0')}, ball(), out + "2");
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("differs from the expected"));
+  CHECK_FALSE(hs_test::file_exists(out + "2"));
+}
+
+TEST_CASE("a size mismatch between board and host is detected", "[e2e][raw]") {
+  minrt::send::SimLauncher board;
+  minrt::send::SimConfig cfg;
+  cfg.simulator = HS_STANDIN;
+  cfg.firmware = ball();
+  cfg.firmware_args = {"--size", "16x16", "--format", "p6"};
+  std::string err;
+  REQUIRE(board.start(cfg, err));
+  hs_test::TempDir dir;
+  const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), "--size", "32x32", "--format", "p6", ball(), "-o",
+                           dir.file("x.ppm")});
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("image is 16x16, expected 32x32"));
+  CHECK_FALSE(hs_test::file_exists(dir.file("x.ppm")));
+}
+
+TEST_CASE("a port held by another process is refused with its holder", "[e2e]") {
+  minrt::send::SimLauncher board;
+  minrt::send::SimConfig cfg;
+  cfg.simulator = HS_STANDIN;
+  cfg.firmware = ball();
+  cfg.firmware_args = {"--size", "8x8", "--format", "p6"};
+  std::string err;
+  REQUIRE(board.start(cfg, err));
+  minrt::send::SerialPort holder;
+  holder.open(board.pty_path(), minrt::send::PortSettings{});
+  // The holder is this test process; host-send is another process.
+  const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), ball(), "-o", "/tmp/never.ppm"});
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("locked by pid"));
+  holder.close();
+}
+
+TEST_CASE("every bad scene ends with the stand-in's error, status 3 and no image", "[e2e][bad]") {
+  const auto bad = hs_test::bad_scenes();
+  if (bad.empty()) {
+    WARN("skipped: no " << hs_test::shared_dir() << "/bad");
+    return;
+  }
+  hs_test::TempDir dir;
+  for (const auto& scene : bad) {
+    const std::string out = dir.file(scene.substr(scene.rfind('/') + 1) + ".ppm");
+    const RunResult r = send_standin({"--size", "16x16", "--format", "p6", "--first-byte-timeout", "60"}, scene, out);
+    INFO(scene << "\n" << r.err);
+    if (scene.find("sixty-objects-fifty-and-nets") != std::string::npos) {
+      CHECK(r.status == 0);  // valid, see shared/README.md
+      continue;
+    }
+    CHECK(r.status == 3);
+    CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
+    CHECK_FALSE(hs_test::file_exists(out));
+  }
+}
+
+TEST_CASE("host-send and firmware-sim give the bytes of minrt float/portable", "[e2e][firmware]") {
+  if (!hs_test::firmware_available()) {
+    WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
+    return;
+  }
+  hs_test::TempDir dir;
+  for (const char* baud : {"115200", "921600", "3000000"}) {
+    for (const char* format : {"p3", "p6"}) {
+      const std::string out = dir.file(std::string("ball-") + baud + format + ".ppm");
+      const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--baud", baud,
+                               "--size", "32x32", "--format", format, ball(), "-o", out});
+      INFO(baud << " " << format << "\n" << r.err);
+      REQUIRE(r.status == 0);
+      CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "32x32", format));
+    }
+  }
+}
+
+TEST_CASE("every bad scene through firmware-sim ends with the firmware's error", "[e2e][firmware][bad]") {
+  if (!hs_test::firmware_available()) {
+    WARN("skipped: firmware-sim or the firmware ELF not built");
+    return;
+  }
+  const auto bad = hs_test::bad_scenes();
+  if (bad.empty()) {
+    WARN("skipped: no " << hs_test::shared_dir() << "/bad");
+    return;
+  }
+  hs_test::TempDir dir;
+  for (const auto& scene : bad) {
+    const std::string out = dir.file(scene.substr(scene.rfind('/') + 1) + ".ppm");
+    const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--size",
+                             "16x16", "--format", "p6", scene, "-o", out});
+    INFO(scene << "\n" << r.err);
+    if (scene.find("sixty-objects-fifty-and-nets") != std::string::npos) {
+      CHECK(r.status == 0);
+      continue;
+    }
+    CHECK(r.status == 3);
+    CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
+    CHECK_FALSE(hs_test::file_exists(out));
+  }
+}

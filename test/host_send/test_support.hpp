@@ -1,0 +1,34 @@
+// Helpers for the host-send tests: running programs, files, temp dirs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace hs_test {
+
+struct RunResult {
+  int status = -1;  // exit status, or 128+signal
+  std::string out, err;
+};
+
+// Runs argv[0] with the arguments; standard input from /dev/null.
+RunResult run(const std::vector<std::string>& argv, int timeout_s = 300);
+
+std::string read_file(const std::string& path);
+bool file_exists(const std::string& path);
+// A fresh directory under /tmp, removed by the destructor.
+struct TempDir {
+  TempDir();
+  ~TempDir();
+  std::string path;
+  std::string file(const std::string& name) const { return path + "/" + name; }
+};
+
+// The exact bytes the firmware produces for `scene`, from the host renderer.
+std::string reference_image(const std::string& scene, const std::string& size, const std::string& format);
+
+bool firmware_available();
+std::string shared_dir();
+std::vector<std::string> bad_scenes();
+
+}  // namespace hs_test
