@@ -13,16 +13,11 @@
 #include <stdexcept>
 
 namespace fwsim {
+namespace {
 
-int open_uart_pty() {
-  int master = ::posix_openpt(O_RDWR | O_NOCTTY);
-  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
-    throw std::runtime_error(std::string("cannot create pty: ") + std::strerror(errno));
-  const char* name = ::ptsname(master);
-  if (!name) throw std::runtime_error("cannot name pty");
-  const std::string slave = name;
-  // Raw mode is a property of the slave's line discipline: set it through a
-  // temporary slave descriptor; it persists while the master stays open.
+// Raw mode is a property of the slave's line discipline: no echo, no line
+// editing, no CR/LF translation.
+void make_raw(const std::string& slave) {
   int s = ::open(slave.c_str(), O_RDWR | O_NOCTTY);
   if (s < 0) throw std::runtime_error("cannot open " + slave + ": " + std::strerror(errno));
   termios t{};
@@ -31,6 +26,18 @@ int open_uart_pty() {
     ::tcsetattr(s, TCSANOW, &t);
   }
   ::close(s);
+}
+
+}  // namespace
+
+int open_uart_pty() {
+  int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
+    throw std::runtime_error(std::string("cannot create pty: ") + std::strerror(errno));
+  const char* name = ::ptsname(master);
+  if (!name) throw std::runtime_error("cannot name pty");
+  const std::string slave = name;
+  make_raw(slave);
   std::fprintf(stderr, "firmware-sim: uart on %s\n", slave.c_str());
   std::fflush(stderr);
   // While no process has the slave open, the master reports POLLHUP.
@@ -41,6 +48,9 @@ int open_uart_pty() {
     if (!(p.revents & POLLHUP)) break;
     ::usleep(20000);
   }
+  // Linux resets a pty slave's termios when it is reopened after its last
+  // close, so raw mode is applied again now that the host holds it open.
+  make_raw(slave);
   return master;
 }
 

@@ -4,6 +4,7 @@
 
 #include <fcntl.h>
 #include <sys/wait.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -252,6 +253,11 @@ TEST_CASE("pty option: the UART is a pseudo-terminal a host can talk to", "[cli]
   const std::string slave = line.substr(std::string("firmware-sim: uart on ").size());
   const int fd = ::open(slave.c_str(), O_RDWR | O_NOCTTY);
   REQUIRE(fd >= 0);
+  // Like a serial terminal program: configure the port as raw as well.
+  termios t{};
+  REQUIRE(::tcgetattr(fd, &t) == 0);
+  ::cfmakeraw(&t);
+  REQUIRE(::tcsetattr(fd, TCSANOW, &t) == 0);
   REQUIRE(::write(fd, "pty!q", 5) == 5);
   std::string got;
   while (got.size() < 4 && ::read(fd, &c, 1) == 1) got += c;
