@@ -205,10 +205,12 @@ TEMPLATE_TEST_CASE("to_int truncates toward zero", "[shims][to_int]",
   CHECK(P::to_int(-kInf) == std::numeric_limits<std::int32_t>::min());
   CHECK(P::to_int(kNaN) == 0);
   // The renderer's range [0, 256): every 61st float, and all n + 1/2.
+  std::uint64_t mismatches = 0;
   for (std::uint32_t b = 0; b < 0x43800000u; b += 61) {
     const float x = float_of(b);
-    REQUIRE(P::to_int(x) == static_cast<std::int32_t>(x));
+    if (P::to_int(x) != static_cast<std::int32_t>(x)) ++mismatches;
   }
+  CHECK(mismatches == 0);
   for (std::int32_t n = 0; n < (1 << 22); n += 41) {
     REQUIRE(P::to_int(float(n) + 0.5f) == n);
     REQUIRE(P::to_int(-(float(n) + 0.5f)) == -n);
