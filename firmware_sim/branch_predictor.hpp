@@ -15,7 +15,7 @@ class BranchPredictor {
  public:
   BranchPredictor(PredictorKind kind, unsigned table_bits);
   // Predicts, then trains with the outcome; returns true when the prediction was right.
-  bool resolve(uint32_t pc, bool taken, bool backward) {
+  __attribute__((always_inline)) bool resolve(uint32_t pc, bool taken, bool backward) {
     switch (kind_) {
       case PredictorKind::StaticNotTaken: return !taken;
       case PredictorKind::BackwardTaken: return taken == backward;

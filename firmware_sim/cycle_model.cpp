@@ -130,11 +130,15 @@ CycleModelConfig parse_cycle_model(const std::string& text, const std::string& o
 }
 
 CycleModel::CycleModel(const CycleModelConfig& cfg)
-    : cfg_(cfg), predictor_(cfg.predictor, cfg.predictor_bits), icache_(cfg.icache), dcache_(cfg.dcache) {
+    : cfg_(cfg),
+      icache_on_(cfg.icache.size != 0),
+      predictor_(cfg.predictor, cfg.predictor_bits),
+      icache_(cfg.icache),
+      dcache_(cfg.dcache) {
   for (size_t op = 0; op < static_cast<size_t>(Op::Count); ++op) {
     const OpInfo& info = kOpInfo[op];
     // Branch cost is added by branch() from its outcome.
-    op_latency_[op] = info.cls == InsnClass::Branch ? 0 : cfg.latency[static_cast<size_t>(info.cls)];
+    op_timing_[op].latency = info.cls == InsnClass::Branch ? 0 : cfg.latency[static_cast<size_t>(info.cls)];
     uint8_t u = 0;
     switch (info.format) {
       case Format::R: case Format::Branch: case Format::Store: u = 1 | 4; break;
@@ -146,8 +150,8 @@ CycleModel::CycleModel(const CycleModelConfig& cfg)
       case Format::FStore: u = 1 | 8; break;
       default: break;
     }
-    uses_[op] = u;
-    load_dest_[op] = info.cls == InsnClass::Load ? 1 : info.cls == InsnClass::FpLoad ? 2 : 0;
+    op_timing_[op].uses = u;
+    op_timing_[op].load_dest = info.cls == InsnClass::Load ? 1 : info.cls == InsnClass::FpLoad ? 2 : 0;
   }
 }
 

@@ -38,19 +38,20 @@ class CycleModel {
   uint64_t cycles = 0;
 
   // Called once per executed instruction.
-  void instruction(const Entry& e, uint32_t pc, uint64_t& cycles) {
+  __attribute__((always_inline)) void instruction(const Entry& e, uint32_t pc, uint64_t& cycles) {
+    const OpTiming& t = op_timing_[e.op];
     ++op_count_[e.op];
-    cycles += op_latency_[e.op];
-    if (pending_load_ != kNoReg) {
-      if (reads(e, pending_load_)) {
+    cycles += t.latency;
+    if (pending_load_ != kNoReg) [[unlikely]] {
+      if (reads(e, t.uses, pending_load_)) {
         cycles += cfg_.load_use_stall;
         ++load_use_stalls_;
       }
       pending_load_ = kNoReg;
     }
-    const uint8_t kind = load_dest_[e.op];
-    if (kind) pending_load_ = kind == 1 ? (e.rd == 32 ? kNoReg : e.rd) : static_cast<uint8_t>(32 + e.rd);
-    if (icache_.enabled()) {
+    if (t.load_dest) [[unlikely]]
+      pending_load_ = t.load_dest == 1 ? (e.rd == 32 ? kNoReg : e.rd) : static_cast<uint8_t>(32 + e.rd);
+    if (icache_on_) {
       const uint32_t line = pc >> icache_.line_shift();
       if (line != last_fetch_line_) {
         last_fetch_line_ = line;
@@ -58,7 +59,7 @@ class CycleModel {
       }
     }
   }
-  void branch(uint32_t pc, bool taken, bool backward, uint64_t& cycles) {
+  __attribute__((always_inline)) void branch(uint32_t pc, bool taken, bool backward, uint64_t& cycles) {
     ++branches_;
     cycles += taken ? cfg_.branch_taken : cfg_.branch_not_taken;
     if (!predictor_.resolve(pc, taken, backward)) {
@@ -66,7 +67,7 @@ class CycleModel {
       cycles += cfg_.mispredict_penalty;
     }
   }
-  void data(uint32_t addr, uint64_t& cycles) {
+  __attribute__((always_inline)) void data(uint32_t addr, uint64_t& cycles) {
     if (dcache_.enabled() && !dcache_.access(addr)) cycles += cfg_.dcache.miss_penalty;
   }
 
@@ -80,16 +81,19 @@ class CycleModel {
  private:
   static constexpr uint8_t kNoReg = 0xff;
   // Whether e reads unified register r (0..31 = x, 32..63 = f).
-  bool reads(const Entry& e, uint8_t r) const {
-    const uint8_t u = uses_[e.op];
+  static bool reads(const Entry& e, uint8_t u, uint8_t r) {
     return ((u & 1) && e.rs1 == r) || ((u & 2) && 32u + e.rs1 == r) || ((u & 4) && e.rs2 == r) ||
            ((u & 8) && 32u + e.rs2 == r) || ((u & 16) && 32u + entry_rs3(e) == r);
   }
 
   CycleModelConfig cfg_;
-  std::array<uint32_t, 256> op_latency_{};
-  std::array<uint8_t, 256> uses_{};       // operand-read mask, see reads()
-  std::array<uint8_t, 256> load_dest_{};  // 1 = integer load, 2 = FP load
+  struct OpTiming {
+    uint32_t latency;
+    uint8_t uses;       // operand-read mask, see reads()
+    uint8_t load_dest;  // 1 = integer load, 2 = FP load
+  };
+  std::array<OpTiming, 256> op_timing_{};
+  bool icache_on_;
   std::array<uint64_t, 256> op_count_{};
   uint8_t pending_load_ = kNoReg;
   uint32_t last_fetch_line_ = ~0u;

@@ -91,6 +91,9 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
   uint64_t cycles = hart_.cycles;  // timed variant only
+  // Hoisted so the hooks test registers, not members, per instruction.
+  const bool tracing = trace_ != nullptr;
+  Profiler* const profiler = profiler_;
 
   Entry* const base = code_.entries();
   Entry* ip = base + (hart_.pc - kRamBase) / 4;
@@ -123,7 +126,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   do {                                                   \
     if constexpr (Timed) {                               \
       model.instruction(*ip, PC_OF(ip), cycles);                 \
-      if (trace_) trace_instruction(PC_OF(ip));          \
+      if (tracing) trace_instruction(PC_OF(ip));         \
     }                                                    \
   } while (0)
 #define NEXT()   \
@@ -274,7 +277,7 @@ L_JAL: {
   STEP();
   END_BLOCK();
   if constexpr (Timed) {
-    if (profiler_ && ip->rd == 1) profiler_->call(PC_OF(target), link, Cost{start + n, cycles});
+    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + n, cycles});
   }
   ip = block = target;
   if (n > limit) goto limit_reached;
@@ -289,10 +292,10 @@ L_JALR: {
   STEP();
   END_BLOCK();
   if constexpr (Timed) {
-    if (profiler_) {
+    if (profiler) {
       const Cost now{start + n, cycles};
-      if (ip->rd == 1) profiler_->call(target, link, now);
-      else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler_->ret(target, now);
+      if (ip->rd == 1) profiler->call(target, link, now);
+      else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
   }
   ip = block = base + (target - kRamBase) / 4;
