@@ -289,7 +289,10 @@ int run(const Options& o) {
     cfg.baud = o.baud_given ? o.port_settings.baud : 0;
     cfg.firmware_args = {"--size", std::to_string(o.spec.width) + "x" + std::to_string(o.spec.height), "--format",
                          kind_arg(o.spec.kind)};
-    if (o.protocol == Protocol::kCourse) cfg.firmware_args.push_back("--protocol=course");
+    if (o.protocol == Protocol::kCourse) {
+      cfg.firmware_args.push_back("--protocol=course");
+      if (o.big_endian) cfg.firmware_args.push_back("--endian=big");
+    }
     if (o.protocol == Protocol::kFramed) cfg.firmware_args.push_back("--protocol=framed");
     sim = std::make_unique<SimLauncher>();
     std::string err;
@@ -327,6 +330,8 @@ int run(const Options& o) {
   int sim_status = 0;
   if (sim) sim_status = sim->stop(r.status == TransferResult::Status::kOk ? 2000 : 500);
 
+  if (r.status == TransferResult::Status::kSceneError)
+    return fail(kExitFirmware, "scene rejected before sending: " + r.message);
   if (r.status == TransferResult::Status::kFirmwareError)
     return fail(kExitFirmware, "the board reported an error: " + r.message);
   if (r.status != TransferResult::Status::kOk) {

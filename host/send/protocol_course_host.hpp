@@ -12,6 +12,10 @@ struct CourseHostOptions {
   int handshake_timeout_ms = 30000;
 };
 
+// The scene as course words; false with a message when a token is not a
+// number of the kind expected there or the scene is incomplete.
+bool sld_to_course_words(const std::string& text, bool big_endian, std::string& words, std::string& error);
+
 // Waits for 0x99, sends the program (4-byte length + bytes), waits for 0xaa,
 // sends the scene converted to binary words, then receives the PPM like raw.
 TransferResult run_course(Exchange& ex, const std::string& scene_text, const std::string& program,

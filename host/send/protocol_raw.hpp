@@ -19,7 +19,8 @@ struct Timeouts {
 };
 
 struct TransferResult {
-  enum class Status { kOk, kFirmwareError, kLinkError };
+  enum class Status { kOk, kFirmwareError, kSceneError, kLinkError };
+  // kSceneError: the host itself found the scene unusable (course conversion).
   Status status = Status::kLinkError;
   std::string message;         // link error text or the firmware's message
   std::string image;           // the image bytes exactly as received (kOk)

@@ -122,6 +122,7 @@ int main(int argc, char** argv) {
   minrt::RenderOptions options;
   std::string protocol = "raw";
   long baud = 0;
+  bool big_endian = false;
   bool after_dashes = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -138,6 +139,8 @@ int main(int argc, char** argv) {
       options.format = (f == "p6" || f == "P6") ? minrt::PpmFormat::kP6 : minrt::PpmFormat::kP3;
     } else if (a.rfind("--protocol=", 0) == 0) {
       protocol = a.substr(11);
+    } else if (a == "--endian=big") {
+      big_endian = true;
     }
     (void)after_dashes;
   }
@@ -183,8 +186,12 @@ int main(int argc, char** argv) {
       return true;
     };
     bool ok = false;
-    if (protocol == "course") ok = standin::serve_course(link, render);
-    else if (protocol == "framed") ok = standin::serve_framed(link, options, render);
+    if (protocol == "course") {
+      ok = standin::serve_course(link, render, big_endian);
+    } else if (protocol == "framed") {
+      options.format = minrt::PpmFormat::kP6;  // rows travel as binary RGB
+      ok = standin::serve_framed(link, options, render);
+    }
     st = ok ? minrt::RenderStatus::kOk : minrt::RenderStatus::kSceneError;
   }
   wait_for_hangup(board.fd);

@@ -22,7 +22,7 @@ struct Link {
 // Renders the SLD text from `in` to `out`; false with the message on error.
 using RenderFn = std::function<bool(minrt::ByteSource in, minrt::ByteSink out, std::string& message)>;
 
-bool serve_course(Link& link, const RenderFn& render);
+bool serve_course(Link& link, const RenderFn& render, bool big_endian);
 bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderFn& render);
 
 }  // namespace standin

@@ -1,0 +1,110 @@
+#include "protocol_course_host.hpp"
+
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include "protocol_course.hpp"
+
+namespace minrt::send {
+
+bool sld_to_course_words(const std::string& text, bool big_endian, std::string& words, std::string& error) {
+  const course::Endian endian = big_endian ? course::Endian::kBig : course::Endian::kLittle;
+  course::SceneLayout layout;
+  words.clear();
+  size_t i = 0;
+  int token_no = 0;
+  while (i < text.size() && !layout.done()) {
+    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    if (i >= text.size()) break;
+    size_t j = i;
+    while (j < text.size() && !std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+    const std::string tok = text.substr(i, j - i);
+    ++token_no;
+    i = j;
+    uint32_t bits = 0;
+    char* end = nullptr;
+    errno = 0;
+    if (layout.next() == course::Kind::kInt) {
+      const long v = std::strtol(tok.c_str(), &end, 10);
+      if (end == tok.c_str() || *end != 0 || errno != 0 || v < INT32_MIN || v > INT32_MAX) {
+        error = "token " + std::to_string(token_no) + " '" + tok.substr(0, 40) + "' should be an integer";
+        return false;
+      }
+      bits = static_cast<uint32_t>(static_cast<int32_t>(v));
+      layout.consume(static_cast<int32_t>(v));
+    } else {
+      const float f = std::strtof(tok.c_str(), &end);
+      if (end == tok.c_str() || *end != 0) {
+        error = "token " + std::to_string(token_no) + " '" + tok.substr(0, 40) + "' should be a number";
+        return false;
+      }
+      std::memcpy(&bits, &f, 4);
+      layout.consume(0);
+    }
+    uint8_t w[4];
+    course::put_u32(w, bits, endian);
+    words.append(reinterpret_cast<const char*>(w), 4);
+  }
+  if (!layout.done()) {
+    error = "the scene ends after " + std::to_string(token_no) + " numbers, before its final -1 (truncated)";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+// Waits for `want`; other bytes before it are an error (an error line is
+// handed to `rx` so its message comes through).
+bool wait_for(Exchange& ex, uint8_t want, int timeout_ms, PpmReceiver& rx, TransferResult& r, const char* what) {
+  uint8_t c = 0;
+  const long n = ex.port.read_some(&c, 1, timeout_ms);
+  if (n == 1 && c == want) return true;
+  if (n == 1) {
+    rx.feed(&c, 1);
+    // The rest of a possible error line.
+    r = exchange(ex, std::string(), rx);
+    if (r.status == TransferResult::Status::kOk) {
+      r.status = TransferResult::Status::kLinkError;
+      r.message = std::string("unexpected image instead of ") + what;
+    }
+    return false;
+  }
+  r.status = TransferResult::Status::kLinkError;
+  r.message = n == 0 ? std::string("the board did not send ") + what + " within " + std::to_string(timeout_ms / 1000) + " s"
+                     : std::string("line closed while waiting for ") + what;
+  return false;
+}
+
+}  // namespace
+
+TransferResult run_course(Exchange& ex, const std::string& scene_text, const std::string& program,
+                          const CourseHostOptions& options, const ImageSpec& spec) {
+  TransferResult r;
+  std::string words, error;
+  if (!sld_to_course_words(scene_text, options.big_endian, words, error)) {
+    r.status = TransferResult::Status::kSceneError;
+    r.message = error;
+    return r;
+  }
+  const course::Endian endian = options.big_endian ? course::Endian::kBig : course::Endian::kLittle;
+  PpmReceiver rx(spec);
+  if (!wait_for(ex, course::kProgramRequest, options.handshake_timeout_ms, rx, r, "0x99 (program request)")) return r;
+  std::string out(4, '\0');
+  course::put_u32(reinterpret_cast<uint8_t*>(out.data()), static_cast<uint32_t>(program.size()), endian);
+  out += program;
+  if (!ex.port.write_all(out.data(), out.size(), ex.timeouts.idle_ms)) {
+    r.message = "cannot send the program: " + std::string(std::strerror(errno));
+    return r;
+  }
+  if (!wait_for(ex, course::kSceneRequest, options.handshake_timeout_ms, rx, r, "0xaa (scene request)")) return r;
+  r = exchange(ex, words, rx);
+  r.sent += out.size();
+  return r;
+}
+
+}  // namespace minrt::send
