@@ -29,6 +29,8 @@ void print_stats(const RunSummary& s, std::FILE* out) {
   std::fprintf(out, "instructions: %llu\n", static_cast<unsigned long long>(s.instructions));
   std::fprintf(out, "cycles: %llu\n", static_cast<unsigned long long>(s.cycles));
   std::fprintf(out, "host MIPS: %.1f\n", s.wall_us > 0 ? s.instructions / s.wall_us : 0.0);
+  std::fprintf(out, "host CPU MIPS: %.1f (per CPU-second of the simulator process)\n",
+               s.cpu_us > 0 ? s.instructions / s.cpu_us : 0.0);
   std::fprintf(out, "cycle model: %s%s\n", s.model_name.c_str(),
                s.model ? "" : " (1 cycle per instruction; use --cycle-model for timing)");
   const double hz = static_cast<double>(s.model_cfg.clock_hz);

@@ -18,6 +18,7 @@ std::string describe_stop(const StopInfo& s, uint32_t insn_word, const SymbolTab
 struct RunSummary {
   uint64_t instructions, cycles;
   double wall_us;
+  double cpu_us;
   const CycleModel* model;  // null in plain mode
   const CycleModelConfig& model_cfg;
   std::string model_name;
