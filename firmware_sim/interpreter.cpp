@@ -166,20 +166,23 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     RD = (expr);  \
     NEXT();       \
   } while (0)
-  // Loads: one range+alignment check for RAM, everything else on the bus.
+  // Memory: one range+alignment check for RAM, everything else on the bus.
+#define IN_RAM(T) (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1)))
+#define BUS_FAULTS(misaligned, fault)                                 \
+  if (bus_result == Bus::Result::Misaligned) FAULT(misaligned, addr); \
+  if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
 #define LOAD(T, dest)                                                                   \
   do {                                                                                  \
     addr = RS1 + static_cast<uint32_t>(ip->imm);                                        \
     const uint32_t off = addr - kRamBase;                                               \
     T v;                                                                                \
-    if (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1))) {                      \
+    if (IN_RAM(T)) {                                                                    \
       std::memcpy(&v, ram + off, sizeof(T));                                            \
     } else {                                                                            \
       SYNC();                                                                           \
       uint32_t raw = 0;                                                                 \
       bus_result = bus_.load(addr, sizeof(T), raw, NOW());                              \
-      if (bus_result == Bus::Result::Misaligned) FAULT(StopCause::MisalignedLoad, addr); \
-      if (bus_result == Bus::Result::Fault) FAULT(StopCause::LoadFault, addr);          \
+      BUS_FAULTS(StopCause::MisalignedLoad, StopCause::LoadFault);                      \
       if (bus_result == Bus::Result::Stop) goto device_stop;                            \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
@@ -192,13 +195,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     addr = RS1 + static_cast<uint32_t>(ip->imm);                                         \
     const uint32_t off = addr - kRamBase;                                                \
     const T v = static_cast<T>(value);                                                   \
-    if (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1))) {                       \
+    if (IN_RAM(T)) {                                                                     \
       std::memcpy(ram + off, &v, sizeof(T));                                             \
     } else {                                                                             \
       SYNC();                                                                            \
       bus_result = bus_.store(addr, sizeof(T), v, NOW());                                \
-      if (bus_result == Bus::Result::Misaligned) FAULT(StopCause::MisalignedStore, addr); \
-      if (bus_result == Bus::Result::Fault) FAULT(StopCause::StoreFault, addr);          \
+      BUS_FAULTS(StopCause::MisalignedStore, StopCause::StoreFault);                     \
       if (bus_result == Bus::Result::Stop) {                                             \
         retire_stopper = true;                                                           \
         goto device_stop;                                                                \
@@ -458,6 +460,8 @@ out:
 #undef RD
 #undef ALU
 #undef LOAD
+#undef IN_RAM
+#undef BUS_FAULTS
 #undef STORE
 #undef CSR
 #undef ROUNDING
