@@ -33,6 +33,7 @@ void read_symbols(const std::vector<uint8_t>& f, const Elf32_Ehdr& eh, const std
   for (const Elf32_Shdr& s : sh) {
     if (s.sh_type != SHT_SYMTAB || s.sh_link >= sh.size()) continue;
     const Elf32_Shdr& strtab = sh[s.sh_link];
+    if (uint64_t{strtab.sh_offset} + strtab.sh_size > f.size()) fail(path, "string table beyond end of file");
     for (uint32_t off = 0; off + sizeof(Elf32_Sym) <= s.sh_size; off += sizeof(Elf32_Sym)) {
       auto sym = read_at<Elf32_Sym>(f, uint64_t{s.sh_offset} + off, path);
       const unsigned type = ELF32_ST_TYPE(sym.st_info);

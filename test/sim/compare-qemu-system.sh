@@ -2,12 +2,15 @@
 # Differential test: run a bare-metal RV32 ELF (UART at 0x10000000, finisher at
 # 0x100000, entry in RAM at 0x80000000) on qemu-system-riscv32 -M virt and on
 # firmware-sim; the UART bytes and the exit status must be identical.
-#   usage: compare-qemu-system.sh FIRMWARE_SIM ELF [TIMEOUT_SECONDS]
+#   usage: compare-qemu-system.sh FIRMWARE_SIM ELF [TIMEOUT_SECONDS [UART_INPUT_FILE]]
+# With UART_INPUT_FILE both receive its bytes on the UART (e.g. a scene for
+# the renderer firmware); without, their UART input is empty.
 # Exit 0 = same, 1 = different, 77 = skipped (QEMU not installed).
 set -u
 sim=$1
 elf=$2
 limit=${3:-120}
+input=${4:-/dev/null}
 if ! command -v qemu-system-riscv32 >/dev/null 2>&1; then
   echo "SKIP: qemu-system-riscv32 not installed (Debian package qemu-system-misc)"
   exit 77
@@ -15,9 +18,9 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 timeout "$limit" qemu-system-riscv32 -M virt -bios none -kernel "$elf" -display none -monitor none \
-  -serial "file:$tmp/qemu.out" </dev/null
+  -serial stdio <"$input" >"$tmp/qemu.out"
 qemu_status=$?
-timeout "$limit" "$sim" "$elf" </dev/null >"$tmp/sim.out"
+timeout "$limit" "$sim" "$elf" <"$input" >"$tmp/sim.out"
 sim_status=$?
 fail=0
 if [ "$qemu_status" -eq 124 ] || [ "$sim_status" -eq 124 ]; then

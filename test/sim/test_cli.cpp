@@ -155,6 +155,13 @@ TEST_CASE("bad usage is a one-line error with status 2", "[cli][usage]") {
   CHECK(missing.status == 3);
   CHECK(missing.err == "firmware-sim: error: /nonexistent/fw.elf: cannot open file\n");
   CHECK(sim(std::string(FWSIM_SOURCE_DIR) + "/firmware_sim/models/default.cfg").status == 3);
+  // A truncated copy of a valid ELF: clean error, no crash.
+  const std::string cut = temp_path("cut.elf");
+  spit(cut, slurp(kElf).substr(0, 100));
+  Result t = sim(cut);
+  CHECK(t.status == 3);
+  CHECK(t.err == "firmware-sim: error: " + cut + ": segment beyond end of file\n");
+  std::remove(cut.c_str());
   const std::string bad = temp_path("bad.cfg");
   spit(bad, "alu = 1\nwarp = 9\n");
   Result r = sim("--cycle-model " + bad + " " + kElf);
