@@ -20,10 +20,10 @@ void DecodeCache::fill(uint32_t index, uint32_t word) {
       e.imm = d.rm;
       break;
     case Format::FR: case Format::FUnary: case Format::FCvtFX:
-      e.imm = d.rm;
+      e.imm = d.rm | (d.rm == 0 || d.rm == 7 ? kRneOrDyn : 0);
       break;
     case Format::FR4:
-      e.imm = d.rm | (d.rs3 << 8);
+      e.imm = d.rm | (d.rs3 << 8) | (d.rm == 0 || d.rm == 7 ? kRneOrDyn : 0);
       break;
     default:
       break;

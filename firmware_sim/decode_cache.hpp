@@ -19,6 +19,10 @@ struct Entry {
 };
 static_assert(sizeof(Entry) == 8);
 
+// Set in FP entries whose rounding mode is RNE or dynamic: while frm is RNE
+// these take the host-FPU fast path without decoding the mode.
+inline constexpr int32_t kRneOrDyn = 1 << 16;
+
 inline unsigned entry_rm(const Entry& e) { return static_cast<uint32_t>(e.imm) & 0xff; }
 inline unsigned entry_rs3(const Entry& e) { return (static_cast<uint32_t>(e.imm) >> 8) & 0xff; }
 

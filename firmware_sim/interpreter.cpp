@@ -88,6 +88,26 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       FWSIM_OPS(FWSIM_LABEL)
 #undef FWSIM_LABEL
   };
+  // While frm is RNE (almost always), FP arithmetic dispatches through this
+  // table to handlers that skip the rounding-mode decode.
+  static const void* kLabelsRne[sizeof kLabels / sizeof kLabels[0]];
+  static bool rne_table_ready = false;
+  if (!rne_table_ready) {
+    std::memcpy(kLabelsRne, kLabels, sizeof kLabels);
+    kLabelsRne[static_cast<int>(Op::FADD_S)] = &&R_FADD_S;
+    kLabelsRne[static_cast<int>(Op::FSUB_S)] = &&R_FSUB_S;
+    kLabelsRne[static_cast<int>(Op::FMUL_S)] = &&R_FMUL_S;
+    kLabelsRne[static_cast<int>(Op::FDIV_S)] = &&R_FDIV_S;
+    kLabelsRne[static_cast<int>(Op::FSQRT_S)] = &&R_FSQRT_S;
+    kLabelsRne[static_cast<int>(Op::FMADD_S)] = &&R_FMADD_S;
+    kLabelsRne[static_cast<int>(Op::FMSUB_S)] = &&R_FMSUB_S;
+    kLabelsRne[static_cast<int>(Op::FNMSUB_S)] = &&R_FNMSUB_S;
+    kLabelsRne[static_cast<int>(Op::FNMADD_S)] = &&R_FNMADD_S;
+    kLabelsRne[static_cast<int>(Op::FCVT_S_W)] = &&R_FCVT_S_W;
+    kLabelsRne[static_cast<int>(Op::FCVT_S_WU)] = &&R_FCVT_S_WU;
+    rne_table_ready = true;
+  }
+  const void* const* labels = hart_.frm == fpu::RNE ? kLabelsRne : kLabels;
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
   uint64_t cycles = hart_.cycles;  // timed variant only
@@ -121,7 +141,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     hart_.instret = start + RETIRED();                         \
     hart_.cycles = Timed ? cycles : start + RETIRED();   \
   } while (0)
-#define DISPATCH() goto* kLabels[ip->op]
+#define DISPATCH() goto* labels[ip->op]
 #define STEP()                                           \
   do {                                                   \
     if constexpr (Timed) {                               \
@@ -216,6 +236,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     if (!csr_.access(hart_, static_cast<unsigned>(ip->imm) & 0xfff, op, operand, write, old)) \
       FAULT(StopCause::IllegalInstruction, 0);                                          \
     RD = old;                                                                           \
+    labels = hart_.frm == fpu::RNE ? kLabelsRne : kLabels;                              \
     NEXT();                                                                             \
   } while (0)
   // Effective rounding mode; reserved modes are illegal instructions.
@@ -247,7 +268,39 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     NEXT();                                                                                    \
   } while (0)
 
+  // RNE-table handlers: fall back to the generic handler for static modes.
+#define FP_RNE(generic, expr)                                        \
+  do {                                                               \
+    if (!(ip->imm & kRneOrDyn)) goto generic;                        \
+    const float a = as_float(f[ip->rs1]), b = as_float(f[ip->rs2]);  \
+    (void)a;                                                         \
+    (void)b;                                                         \
+    f[ip->rd] = host_result(expr);                                   \
+    NEXT();                                                          \
+  } while (0)
+#define FP_RNE_FUSED(generic, neg_product, neg_addend)                                   \
+  do {                                                                                   \
+    const uint32_t c = f[entry_rs3(*ip)];                                                \
+    if (!(ip->imm & kRneOrDyn) || !kHostHasFma || fpu::is_nan(c)) goto generic;          \
+    const uint32_t a = f[ip->rs1] ^ ((neg_product) ? 0x80000000u : 0u);                  \
+    const uint32_t b = c ^ ((neg_addend) ? 0x80000000u : 0u);                            \
+    f[ip->rd] = host_result(host_fma(as_float(a), as_float(f[ip->rs2]), as_float(b)));  \
+    NEXT();                                                                              \
+  } while (0)
+
   DISPATCH();
+
+R_FADD_S: FP_RNE(L_FADD_S, a + b);
+R_FSUB_S: FP_RNE(L_FSUB_S, a - b);
+R_FMUL_S: FP_RNE(L_FMUL_S, a * b);
+R_FDIV_S: FP_RNE(L_FDIV_S, a / b);
+R_FSQRT_S: FP_RNE(L_FSQRT_S, __builtin_sqrtf(a));
+R_FMADD_S: FP_RNE_FUSED(L_FMADD_S, false, false);
+R_FMSUB_S: FP_RNE_FUSED(L_FMSUB_S, false, true);
+R_FNMSUB_S: FP_RNE_FUSED(L_FNMSUB_S, true, false);
+R_FNMADD_S: FP_RNE_FUSED(L_FNMADD_S, true, true);
+R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(x[ip->rs1])));
+R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
 
 L_UNDECODED: {
   uint32_t word;
@@ -467,6 +520,8 @@ out:
 #undef ROUNDING
 #undef FP_ARITH
 #undef FP_FUSED
+#undef FP_RNE
+#undef FP_RNE_FUSED
 }
 
 template StopInfo Machine::run_loop<true>(uint64_t);
