@@ -130,6 +130,10 @@ inline size_t format_float_exact(uint32_t bits, char* out) {
     while (*s) out[n++] = *s++;
     return n;
   }
+  if (exp == 0 && mant == 0) {
+    out[n++] = '0';
+    return n;
+  }
   int e;  // value = mant * 2^e
   if (exp == 0) {
     e = -149;
@@ -174,7 +178,7 @@ inline size_t format_float_exact(uint32_t bits, char* out) {
   while (nd > frac_digits + 1 && digits[nd - 1] == '0') --nd;
   // Trailing zeros of the fraction.
   int low = 0;
-  while (low < frac_digits && digits[low] == '0') ++low;
+  while (low < frac_digits && (low >= nd || digits[low] == '0')) ++low;
   const int int_digits = nd > frac_digits ? nd - frac_digits : 0;
   if (int_digits == 0) out[n++] = '0';
   for (int i = nd - 1; i >= frac_digits; --i) out[n++] = digits[i];

@@ -23,6 +23,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
   const int fd = ex.port.fd();
   std::size_t sent = 0;
   bool clock_started = false;
+  std::size_t trailing = 0;  // bytes after the image in its last read
   Clock::time_point t0 = Clock::now(), last_rx = Clock::now(), last_tx = Clock::now(), t_end = Clock::now();
   if (ex.progress) ex.progress->start();
   std::uint8_t buf[8192];
@@ -70,6 +71,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
         if (ex.progress) ex.progress->update(rx.bytes(), rx.rows_complete());
         if (rx.done()) {
           t_end = Clock::now();
+          trailing = static_cast<std::size_t>(n) - used;
           break;
         }
         if (rx.firmware_error()) {
@@ -115,6 +117,21 @@ TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
       return fail("line idle for " + std::to_string(ex.timeouts.idle_ms / 1000) + " s (idle timeout): " +
                   rx.message());
     }
+  }
+  // Nothing may follow the image; a byte that does means the line added
+  // some (a duplicated byte makes the image complete one byte early).
+  if (ex.timeouts.trailing_ms > 0 || trailing > 0) {
+    const auto until = Clock::now() + std::chrono::milliseconds(ex.timeouts.trailing_ms);
+    std::size_t extra = trailing;
+    while (Clock::now() < until) {
+      pollfd p{fd, POLLIN, 0};
+      if (::poll(&p, 1, 20) <= 0) continue;
+      const ssize_t n = ::read(fd, buf, sizeof buf);
+      if (n <= 0) break;
+      extra += static_cast<std::size_t>(n);
+    }
+    if (extra > 0)
+      return fail(std::to_string(extra) + " unexpected bytes after the image: the line damaged it");
   }
   r.status = TransferResult::Status::kOk;
   r.seconds = std::chrono::duration<double>(t_end - t0).count();

@@ -16,6 +16,9 @@ namespace minrt::send {
 struct Timeouts {
   int first_byte_ms = 120000;  // from the end of sending to the first reply byte
   int idle_ms = 30000;         // longest silence once the reply has started
+  // After the image: listen this long for stray bytes, which mean the line
+  // duplicated or inserted some and the image is damaged (0: do not wait).
+  int trailing_ms = 250;
 };
 
 struct TransferResult {

@@ -51,6 +51,7 @@ bool parse_pty_line(const std::string& line, std::string& path) {
 SimLauncher::~SimLauncher() { stop(0); }
 
 bool SimLauncher::start(const SimConfig& config, std::string& error) {
+  if (!config.exact_args.empty()) return spawn(config.exact_args, config.startup_timeout_ms, error);
   if (::access(config.simulator.c_str(), X_OK) != 0) {
     error = "simulator " + config.simulator + " not found or not executable (set MINRT_FIRMWARE_SIM or --sim-binary)";
     return false;
@@ -68,6 +69,14 @@ bool SimLauncher::start(const SimConfig& config, std::string& error) {
   if (!config.firmware_args.empty()) {
     args.push_back("--");
     for (const auto& a : config.firmware_args) args.push_back(a);
+  }
+  return spawn(args, config.startup_timeout_ms, error);
+}
+
+bool SimLauncher::spawn(std::vector<std::string> args, int startup_timeout_ms, std::string& error) {
+  if (::access(args[0].c_str(), X_OK) != 0) {
+    error = args[0] + " not found or not executable";
+    return false;
   }
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -101,7 +110,7 @@ bool SimLauncher::start(const SimConfig& config, std::string& error) {
 
   // Read its output line by line until the pty line shows up.
   std::string pending;
-  const long long deadline = now_ms() + config.startup_timeout_ms;
+  const long long deadline = now_ms() + startup_timeout_ms;
   for (;;) {
     std::size_t nl;
     while ((nl = pending.find('\n')) != std::string::npos) {
@@ -116,7 +125,7 @@ bool SimLauncher::start(const SimConfig& config, std::string& error) {
     }
     const long long left = deadline - now_ms();
     if (left <= 0) {
-      error = "simulator did not announce its pty within " + std::to_string(config.startup_timeout_ms / 1000) + " s";
+      error = "simulator did not announce its pty within " + std::to_string(startup_timeout_ms / 1000) + " s";
       break;
     }
     pollfd p{err_fd_, POLLIN, 0};

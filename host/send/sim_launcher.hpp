@@ -19,6 +19,10 @@ struct SimConfig {
   std::uint32_t baud = 0; // 0: no --baud (unpaced)
   std::vector<std::string> firmware_args;  // after "--"
   int startup_timeout_ms = 10000;
+  // When set: the whole command line, used as is (for helpers such as
+  // fault-relay that announce a pty the same way); the fields above are
+  // then ignored except startup_timeout_ms.
+  std::vector<std::string> exact_args;
 };
 
 // The simulator path built in at configure time unless MINRT_FIRMWARE_SIM
@@ -49,6 +53,7 @@ class SimLauncher {
 
  private:
   void drain();
+  bool spawn(std::vector<std::string> args, int startup_timeout_ms, std::string& error);
 
   pid_t pid_ = -1;
   int err_fd_ = -1;

@@ -1,0 +1,114 @@
+// A damaged line (tools/fault_relay): framed mode delivers the exact image
+// in every seeded run; raw mode notices the damage and writes nothing.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "fault_model.hpp"
+#include "sim_launcher.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+std::string ball() { return hs_test::shared_dir() + "/scenes/ball.sld"; }
+
+struct DamagedLine {
+  minrt::send::SimLauncher board, relay;
+  std::string port;  // where host-send connects
+
+  DamagedLine(const std::string& protocol, const std::vector<std::string>& faults) {
+    minrt::send::SimConfig b;
+    b.simulator = HS_STANDIN;
+    b.firmware = HS_STANDIN;
+    b.firmware_args = {"--size", "32x32", "--format", "p6", "--protocol=" + protocol};
+    std::string err;
+    REQUIRE(board.start(b, err));
+    minrt::send::SimConfig r;
+    r.exact_args = {HS_FAULT_RELAY};
+    r.exact_args.insert(r.exact_args.end(), faults.begin(), faults.end());
+    r.exact_args.push_back(board.pty_path());
+    REQUIRE(relay.start(r, err));
+    port = relay.pty_path();
+  }
+  ~DamagedLine() {
+    relay.stop(3000);
+    board.stop(3000);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("the fault model is repeatable and roughly at its rates", "[fault]") {
+  fault_relay::FaultRates rates;
+  rates.drop = 0.01;
+  rates.flip = 0.02;
+  rates.dup = 0.03;
+  fault_relay::FaultModel a(42, rates), b(42, rates), c(43, rates);
+  bool differs = false;
+  for (int i = 0; i < 100000; ++i) {
+    const auto x = a.next(static_cast<uint8_t>(i)), y = b.next(static_cast<uint8_t>(i)), z = c.next(static_cast<uint8_t>(i));
+    REQUIRE(x.copies == y.copies);
+    REQUIRE(x.value == y.value);
+    if (x.copies != z.copies || x.value != z.value) differs = true;
+  }
+  CHECK(differs);
+  CHECK(a.counts().dropped == Approx(1000).epsilon(0.15));
+  CHECK(a.counts().flipped == Approx(0.99 * 2000).epsilon(0.15));
+  CHECK(a.counts().duplicated == Approx(0.99 * 3000).epsilon(0.15));
+  rates.skip = 100000;
+  fault_relay::FaultModel clean(1, rates);
+  for (int i = 0; i < 1000; ++i) CHECK(clean.next(7).copies == 1);
+}
+
+TEST_CASE("framed mode delivers the exact image over a damaged line", "[fault][framed]") {
+  const std::string ref = hs_test::reference_image(ball(), "32x32", "p6");
+  hs_test::TempDir dir;
+  for (int seed = 1; seed <= 6; ++seed) {
+    std::vector<std::string> faults{"--seed",  std::to_string(seed), "--drop", "0.002", "--flip", "0.002", "--dup",
+                                    "0.002",   "--stall",            "0.0005", "--stall-ms", "200", "--delay", "0.001"};
+    if (seed > 4) faults.push_back("--both-ways");
+    DamagedLine line("framed", faults);
+    const std::string out = dir.file("f" + std::to_string(seed) + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", "framed", "--size", "32x32",
+                                 "--format", "p6", ball(), "-o", out, "--idle-timeout", "20"});
+    INFO("seed " << seed << "\n" << r.err << line.relay.output());
+    REQUIRE(r.status == 0);
+    CHECK(hs_test::read_file(out) == ref);
+  }
+}
+
+TEST_CASE("raw mode reports a damaged line instead of writing a wrong image", "[fault][raw]") {
+  const std::string ref = hs_test::reference_image(ball(), "32x32", "p6");
+  hs_test::TempDir dir;
+  int detected = 0;
+  // Byte losses, duplicates, a damaged header, and stalls longer than the
+  // idle timeout. (A flipped pixel byte cannot be seen by raw mode; that is
+  // what --expect-sha256 and the framed protocol are for.)
+  const std::vector<std::vector<std::string>> runs = {
+      {"--drop", "0.003"},  {"--drop", "0.01"},   {"--dup", "0.003"},
+      {"--dup", "0.01"},    {"--flip", "0.5"},
+      {"--stall", "0.002", "--stall-ms", "1500"},
+  };
+  int seed = 0;
+  for (const auto& f : runs) {
+    ++seed;
+    std::vector<std::string> faults{"--seed", std::to_string(seed)};
+    faults.insert(faults.end(), f.begin(), f.end());
+    DamagedLine line("raw", faults);
+    const std::string out = dir.file("r" + std::to_string(seed) + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--size", "32x32", "--format", "p6", ball(), "-o",
+                                 out, "--idle-timeout", "1"});
+    INFO("run " << seed << "\n" << r.err << line.relay.output());
+    if (r.status == 0) {
+      CHECK(hs_test::read_file(out) == ref);  // the faults missed the image
+    } else {
+      ++detected;
+      CHECK(r.status == 1);
+      CHECK_FALSE(hs_test::file_exists(out));
+      CHECK_THAT(r.err, Catch::Contains("truncated") || Catch::Contains("header") || Catch::Contains("idle") ||
+                            Catch::Contains("unexpected") || Catch::Contains("image is") || Catch::Contains("magic"));
+    }
+  }
+  CHECK(detected >= 5);
+}

@@ -1,0 +1,158 @@
+// fault-relay: sits between the host and a board's pseudo-terminal and
+// damages the line on purpose, reproducibly (seeded).
+//
+//   fault-relay [OPTIONS] BOARD_TTY
+//
+// Opens BOARD_TTY (e.g. the pty firmware-sim announced), creates a new pty
+// for the host, prints "fault-relay: uart on /dev/pts/N" on stderr and
+// relays bytes both ways. Faults hit the board->host direction, and the
+// host->board direction too with --both-ways. At the end it prints what it
+// did ("fault-relay: ... dropped, ... flipped ...").
+#include <fcntl.h>
+#include <poll.h>
+#include <stdlib.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+
+#include "fault_model.hpp"
+
+namespace {
+
+void usage() {
+  std::fputs(
+      "usage: fault-relay [OPTIONS] BOARD_TTY\n"
+      "  --seed N          fault sequence (default 1)\n"
+      "  --drop P          probability of dropping a byte\n"
+      "  --flip P          probability of flipping one bit of a byte\n"
+      "  --dup P           probability of sending a byte twice\n"
+      "  --delay P         probability of delaying a byte (up to --delay-ms)\n"
+      "  --delay-ms N      longest delay (default 5)\n"
+      "  --stall P         probability of stalling the line before a byte\n"
+      "  --stall-ms N      stall length (default 300)\n"
+      "  --skip N          pass the first N bytes untouched\n"
+      "  --both-ways       damage host->board bytes too (own seed + 1)\n",
+      stderr);
+}
+
+int open_raw(const char* path) {
+  const int fd = ::open(path, O_RDWR | O_NOCTTY);
+  if (fd < 0) return -1;
+  termios t{};
+  if (::tcgetattr(fd, &t) == 0) {
+    ::cfmakeraw(&t);
+    ::tcsetattr(fd, TCSANOW, &t);
+  }
+  return fd;
+}
+
+bool write_all(int fd, const std::uint8_t* p, size_t n) {
+  while (n > 0) {
+    const ssize_t k = ::write(fd, p, n);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) return false;
+    p += k;
+    n -= static_cast<size_t>(k);
+  }
+  return true;
+}
+
+// Forwards `n` bytes through the model.
+bool forward(int to, const std::uint8_t* p, size_t n, fault_relay::FaultModel* model) {
+  if (model == nullptr) return write_all(to, p, n);
+  for (size_t i = 0; i < n; ++i) {
+    const fault_relay::Action a = model->next(p[i]);
+    if (a.sleep_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(a.sleep_ms));
+    for (int c = 0; c < a.copies; ++c)
+      if (!write_all(to, &a.value, 1)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fault_relay::FaultRates rates;
+  unsigned long long seed = 1;
+  bool both = false;
+  const char* board_path = nullptr;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto num = [&](double& v) {
+      if (i + 1 >= argc) {
+        usage();
+        std::exit(2);
+      }
+      v = std::strtod(argv[++i], nullptr);
+    };
+    double v = 0;
+    if (a == "--seed") { num(v); seed = static_cast<unsigned long long>(v); }
+    else if (a == "--drop") num(rates.drop);
+    else if (a == "--flip") num(rates.flip);
+    else if (a == "--dup") num(rates.dup);
+    else if (a == "--delay") num(rates.delay);
+    else if (a == "--stall") num(rates.stall);
+    else if (a == "--delay-ms") { num(v); rates.delay_ms = v < 1 ? 1 : static_cast<int>(v); }
+    else if (a == "--stall-ms") { num(v); rates.stall_ms = static_cast<int>(v); }
+    else if (a == "--skip") { num(v); rates.skip = static_cast<std::uint64_t>(v); }
+    else if (a == "--both-ways") both = true;
+    else if (a == "-h" || a == "--help") { usage(); return 0; }
+    else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "fault-relay: unknown option '%s'\n", a.c_str()); return 2; }
+    else board_path = argv[i];
+  }
+  if (board_path == nullptr) {
+    usage();
+    return 2;
+  }
+  const int board = open_raw(board_path);
+  if (board < 0) {
+    std::fprintf(stderr, "fault-relay: cannot open %s: %s\n", board_path, std::strerror(errno));
+    return 1;
+  }
+  const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) {
+    std::perror("fault-relay: pty");
+    return 1;
+  }
+  const char* name = ::ptsname(master);
+  if (const int s = open_raw(name); s >= 0) ::close(s);
+  std::fprintf(stderr, "fault-relay: uart on %s\n", name);
+  std::fflush(stderr);
+  // Wait for the host to open its end.
+  for (;;) {
+    pollfd p{master, POLLIN, 0};
+    ::poll(&p, 1, 50);
+    if (!(p.revents & POLLHUP)) break;
+    ::usleep(10000);
+  }
+  fault_relay::FaultModel down(seed, rates), up(seed + 1, rates);
+  std::uint8_t buf[4096];
+  bool board_open = true;
+  for (;;) {
+    pollfd p[2] = {{master, POLLIN, 0}, {board, static_cast<short>(board_open ? POLLIN : 0), 0}};
+    ::poll(p, 2, 200);
+    if (p[0].revents & POLLIN) {
+      const ssize_t n = ::read(master, buf, sizeof buf);
+      if (n <= 0) break;
+      if (board_open && !forward(board, buf, static_cast<size_t>(n), both ? &up : nullptr)) board_open = false;
+    } else if (p[0].revents & POLLHUP) {
+      break;  // the host closed its end
+    }
+    if (board_open && (p[1].revents & (POLLIN | POLLHUP | POLLERR))) {
+      const ssize_t n = ::read(board, buf, sizeof buf);
+      if (n <= 0) board_open = false;  // board gone: keep the host's end open until it closes
+      else if (!forward(master, buf, static_cast<size_t>(n), &down)) break;
+    }
+  }
+  std::fprintf(stderr, "fault-relay: board->host %s\n", down.counts().summary().c_str());
+  if (both) std::fprintf(stderr, "fault-relay: host->board %s\n", up.counts().summary().c_str());
+  ::close(board);
+  ::close(master);
+  return 0;
+}
