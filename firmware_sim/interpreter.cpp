@@ -10,6 +10,7 @@
 // are left to accumulate and merged into fflags when the firmware reads it.
 // Only NaN results need fixing (RISC-V returns the canonical NaN). Other
 // rounding modes and the fused ops go through the bit-exact soft FPU.
+#include <cstddef>
 #include <cstring>
 
 #include "decoder.hpp"
@@ -118,7 +119,9 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   Entry* const base = code_.entries();
   Entry* ip = base + (hart_.pc - kRamBase) / 4;
   uint32_t* const x = hart_.x;
-  uint32_t* const f = hart_.f;
+  // f[] directly follows x[] in HartState: addressing it from x saves a register.
+  static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
+  uint32_t* const f = x + 33;
   uint8_t* const ram = bus_.ram();
   const uint32_t ram_size = bus_.ram_size();
   const uint64_t start = hart_.instret;
@@ -129,7 +132,6 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   uint64_t n = 0;
   Entry* block = ip;
   StopInfo stop;
-  uint32_t addr = 0;
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
@@ -193,7 +195,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
 #define LOAD(T, dest)                                                                   \
   do {                                                                                  \
-    addr = RS1 + static_cast<uint32_t>(ip->imm);                                        \
+    const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                         \
     const uint32_t off = addr - kRamBase;                                               \
     T v;                                                                                \
     if (IN_RAM(T)) {                                                                    \
@@ -203,7 +205,10 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       uint32_t raw = 0;                                                                 \
       bus_result = bus_.load(addr, sizeof(T), raw, NOW());                              \
       BUS_FAULTS(StopCause::MisalignedLoad, StopCause::LoadFault);                      \
-      if (bus_result == Bus::Result::Stop) goto device_stop;                            \
+      if (bus_result == Bus::Result::Stop) {                                            \
+        stop.addr = addr;                                                               \
+        goto device_stop;                                                               \
+      }                                                                                 \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
     if constexpr (Timed) model.data(addr, cycles);                                              \
@@ -212,7 +217,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   } while (0)
 #define STORE(T, value)                                                                  \
   do {                                                                                   \
-    addr = RS1 + static_cast<uint32_t>(ip->imm);                                         \
+    const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
     const uint32_t off = addr - kRamBase;                                                \
     const T v = static_cast<T>(value);                                                   \
     if (IN_RAM(T)) {                                                                     \
@@ -222,6 +227,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       bus_result = bus_.store(addr, sizeof(T), v, NOW());                                \
       BUS_FAULTS(StopCause::MisalignedStore, StopCause::StoreFault);                     \
       if (bus_result == Bus::Result::Stop) {                                             \
+        stop.addr = addr;                                                                \
         retire_stopper = true;                                                           \
         goto device_stop;                                                                \
       }                                                                                  \
@@ -475,7 +481,6 @@ device_stop:
     ++ip;
   }
   stop.pc = PC_OF(ip) - (retire_stopper ? 4 : 0);
-  stop.addr = addr;
   if (bus_.finished()) {
     stop.cause = StopCause::Exit;
     stop.exit_code = bus_.finisher().code();
