@@ -75,8 +75,7 @@ class Tracer {
     scan_pitch_ = R(128.0) / M::from_int(width);
     load_environment(scene);
     load_objects(scene);
-    and_nets_ = scene.and_nets;
-    or_nets_ = scene.or_nets;
+    build_networks(scene);
     n_reflections_ = 0;
 
     const int stride = consts_total(scene);
@@ -134,6 +133,7 @@ class Tracer {
     int32_t form, rotated;
     bool inverted;
     int consts_offset;
+    int index;
     R abc[3];
     R rot[3];  // after preprocessing: the yz, zx, xy cross-term coefficients
     R start[4];  // per ray-start table: start - center, and the constant term
@@ -281,6 +281,7 @@ class Tracer {
       // original: the rotation is applied to every form, boxes and planes too.
       if (o.rotated != 0) rotate_quadratic_form(o.abc, o.rot);
       o.consts_offset = offset;
+      o.index = i;
       offset += consts_count(o.form);
     }
   }
@@ -341,8 +342,7 @@ class Tracer {
     return false;
   }
 
-  int solver(int index, const R* dir, const R* org) {
-    const Object& m = objects_[index];
+  int solver(const Object& m, const R* dir, const R* org) {
     const R b0 = org[0] - m.center[0];
     const R b1 = org[1] - m.center[1];
     const R b2 = org[2] - m.center[2];
@@ -416,8 +416,7 @@ class Tracer {
   }
 
   // Ray along dv from an arbitrary point.
-  int solver_fast(int index, const DirVec& dv, const R* org) {
-    const Object& m = objects_[index];
+  int solver_fast(const Object& m, const DirVec& dv, const R* org) {
     const R b0 = org[0] - m.center[0];
     const R b1 = org[1] - m.center[1];
     const R b2 = org[2] - m.center[2];
@@ -436,8 +435,7 @@ class Tracer {
 
   // Ray along dv from the point given to setup_startp.
   template <bool kAheadOnly = false>
-  MINRT_INLINE int solver_fast2(int index, const DirVec& dv) {
-    const Object& m = objects_[index];
+  MINRT_INLINE int solver_fast2(const Object& m, const DirVec& dv) {
     const R* s = m.start;
     const R* c = dv.c + m.consts_offset;
     if (m.form == kFormBox) return solve_box_fast(m, dv.v, c, s[0], s[1], s[2]);
@@ -528,17 +526,43 @@ class Tracer {
     return m.inverted == (quadric_constant(m, quadratic(m, p0, p1, p2)) < R(0));
   }
 
-  bool all_inside(const int16_t* and_net, R q0, R q1, R q2) const {
-    for (; *and_net != -1; ++and_net)
-      if (is_outside(objects_[*and_net], q0, q1, q2)) return false;
+  // AND networks as null-terminated lists of objects, OR rows as their range
+  // primitive (null for none) and null-terminated lists of AND networks:
+  // resolved once so the ray loops follow pointers instead of indices.
+  using ObjectList = const Object* const*;
+  struct OrRow {
+    const Object* range;
+    ObjectList nets[limits::kMaxOrNetworkLength + 1];
+  };
+
+  void build_networks(const Scene<R>& scene) {
+    for (int n = 0; n < scene.and_count; ++n) {
+      int k = 0;
+      for (; scene.and_nets[n][k] != -1; ++k) net_objects_[n][k] = &objects_[scene.and_nets[n][k]];
+      net_objects_[n][k] = nullptr;
+    }
+    n_or_rows_ = scene.or_count;
+    for (int r = 0; r < scene.or_count; ++r) {
+      const int16_t* in = scene.or_nets[r];
+      OrRow& row = or_rows_[r];
+      row.range = in[0] == limits::kNoRangePrimitive ? nullptr : &objects_[in[0]];
+      int k = 1;
+      for (; in[k] != -1; ++k) row.nets[k - 1] = net_objects_[in[k]];
+      row.nets[k - 1] = nullptr;
+    }
+  }
+
+  static bool all_inside(ObjectList and_net, R q0, R q1, R q2) {
+    for (; *and_net != nullptr; ++and_net)
+      if (is_outside(**and_net, q0, q1, q2)) return false;
     return true;
   }
 
   // --- shadows ------------------------------------------------------------
 
-  bool shadow_and_group(const int16_t* and_net) {
-    for (const int16_t* e = and_net; *e != -1; ++e) {
-      const int obj = *e;
+  bool shadow_and_group(ObjectList and_net) {
+    for (ObjectList e = and_net; *e != nullptr; ++e) {
+      const Object& obj = **e;
       const int t0 = solver_fast(obj, light_dirvec_, intersection_point_);
       const R t0p = solver_dist_;
       if (t0 != 0 && t0p < R(-0.2)) {
@@ -547,7 +571,7 @@ class Tracer {
         const R q1 = light_[1] * t + intersection_point_[1];
         const R q2 = light_[2] * t + intersection_point_[2];
         if (all_inside(and_net, q0, q1, q2)) return true;
-      } else if (!objects_[obj].inverted) {
+      } else if (!obj.inverted) {
         // No hit on an object whose inside counts: the AND set lies within
         // it, so nothing else of the set can be hit either.
         return false;
@@ -556,29 +580,23 @@ class Tracer {
     return false;
   }
 
-  bool shadow_or_group(const int16_t* or_net) {
-    for (const int16_t* e = or_net + 1; *e != -1; ++e)
-      if (shadow_and_group(and_nets_[*e])) return true;
-    return false;
-  }
-
   bool in_shadow() {
-    for (int row = 0;; ++row) {
-      const int16_t* net = or_nets_[row];
-      const int range = net[0];
-      if (range == -1) return false;
-      if (range == limits::kNoRangePrimitive) {
-        if (shadow_or_group(net)) return true;
-      } else if (solver_fast(range, light_dirvec_, intersection_point_) != 0 &&
-                 solver_dist_ < R(-0.1) && shadow_or_group(net)) {
-        return true;
-      }
+    for (int r = 0; r < n_or_rows_; ++r) {
+      const OrRow& row = or_rows_[r];
+      if (row.range != nullptr &&
+          !(solver_fast(*row.range, light_dirvec_, intersection_point_) != 0 &&
+            solver_dist_ < R(-0.1)))
+        continue;
+      for (const ObjectList* a = row.nets; *a != nullptr; ++a)
+        if (shadow_and_group(*a)) return true;
     }
+    return false;
   }
 
   // --- nearest intersection -----------------------------------------------
 
-  MINRT_INLINE void record_hit(const int16_t* and_net, int iobj, int t0, const R* v, const R* start) {
+  MINRT_INLINE void record_hit(ObjectList and_net, const Object& m, int t0, const R* v,
+                               const R* start) {
     const R t0p = solver_dist_;
     if (R(0) < t0p && t0p < tmin_) {
       const R t = t0p + R(0.01);
@@ -590,7 +608,7 @@ class Tracer {
         intersection_point_[0] = q0;
         intersection_point_[1] = q1;
         intersection_point_[2] = q2;
-        intersected_object_id_ = iobj;
+        intersected_object_id_ = m.index;
         intsec_rectside_ = t0;
       }
     }
@@ -598,20 +616,17 @@ class Tracer {
 
   bool judge_intersection(const R* dir) {
     tmin_ = R(1000000000.0);
-    for (int row = 0;; ++row) {
-      const int16_t* net = or_nets_[row];
-      const int range = net[0];
-      if (range == -1) break;
-      if (range != limits::kNoRangePrimitive &&
-          !(solver(range, dir, startp_) != 0 && solver_dist_ < tmin_))
+    for (int r = 0; r < n_or_rows_; ++r) {
+      const OrRow& row = or_rows_[r];
+      if (row.range != nullptr && !(solver(*row.range, dir, startp_) != 0 && solver_dist_ < tmin_))
         continue;
-      for (const int16_t* a = net + 1; *a != -1; ++a) {
-        const int16_t* and_net = and_nets_[*a];
-        for (const int16_t* e = and_net; *e != -1; ++e) {
-          const int t0 = solver(*e, dir, startp_);
+      for (const ObjectList* a = row.nets; *a != nullptr; ++a) {
+        for (ObjectList e = *a; *e != nullptr; ++e) {
+          const Object& m = **e;
+          const int t0 = solver(m, dir, startp_);
           if (t0 != 0)
-            record_hit(and_net, *e, t0, dir, startp_);
-          else if (!objects_[*e].inverted)
+            record_hit(*a, m, t0, dir, startp_);
+          else if (!m.inverted)
             break;
         }
       }
@@ -621,20 +636,17 @@ class Tracer {
 
   bool judge_intersection_fast(const DirVec& dv) {
     tmin_ = R(1000000000.0);
-    for (int row = 0;; ++row) {
-      const int16_t* net = or_nets_[row];
-      const int range = net[0];
-      if (range == -1) break;
-      if (range != limits::kNoRangePrimitive &&
-          !(solver_fast2(range, dv) != 0 && solver_dist_ < tmin_))
+    for (int r = 0; r < n_or_rows_; ++r) {
+      const OrRow& row = or_rows_[r];
+      if (row.range != nullptr && !(solver_fast2(*row.range, dv) != 0 && solver_dist_ < tmin_))
         continue;
-      for (const int16_t* a = net + 1; *a != -1; ++a) {
-        const int16_t* and_net = and_nets_[*a];
-        for (const int16_t* e = and_net; *e != -1; ++e) {
-          const int t0 = solver_fast2<true>(*e, dv);
+      for (const ObjectList* a = row.nets; *a != nullptr; ++a) {
+        for (ObjectList e = *a; *e != nullptr; ++e) {
+          const Object& m = **e;
+          const int t0 = solver_fast2<true>(m, dv);
           if (t0 != 0)
-            record_hit(and_net, *e, t0, dv.v, startp_fast_);
-          else if (!objects_[*e].inverted)
+            record_hit(*a, m, t0, dv.v, startp_fast_);
+          else if (!m.inverted)
             break;
         }
       }
@@ -1008,8 +1020,9 @@ class Tracer {
 
   int n_objects_ = 0;
   Object objects_[limits::kMaxObjects];
-  const int16_t (*and_nets_)[limits::kMaxAndNetworkLength + 1] = nullptr;
-  const int16_t (*or_nets_)[limits::kMaxOrNetworkLength + 1] = nullptr;
+  const Object* net_objects_[limits::kMaxAndNetworkDefinitions][limits::kMaxAndNetworkLength + 1];
+  OrRow or_rows_[limits::kMaxOrNetworks];
+  int n_or_rows_ = 0;
 
   DirVec dirvecs_[kDirvecGroups][kDirvecsPerGroup];
   DirVec light_dirvec_{};
