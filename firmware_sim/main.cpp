@@ -46,7 +46,7 @@ double cpu_seconds() {
 
 int open_file(const std::string& path, int flags) {
   int fd = ::open(path.c_str(), flags | O_CLOEXEC, 0644);
-  if (fd < 0) die(kExitIo, path + ": " + std::strerror(errno));
+  if (fd < 0) die(kExitUsage, path + ": " + std::strerror(errno));  // a bad option value
   return fd;
 }
 

@@ -151,6 +151,9 @@ TEST_CASE("bad usage is a one-line error with status 2", "[cli][usage]") {
     CHECK(r.err.rfind("firmware-sim: error: ", 0) == 0);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
+  Result no_input = sim("--uart-in /nonexistent/in.txt " + kElf);
+  CHECK(no_input.status == 2);
+  CHECK(no_input.err == "firmware-sim: error: /nonexistent/in.txt: No such file or directory\n");
   Result missing = sim("/nonexistent/fw.elf");
   CHECK(missing.status == 3);
   CHECK(missing.err == "firmware-sim: error: /nonexistent/fw.elf: cannot open file\n");
