@@ -2,6 +2,7 @@
 // (always) and against firmware-sim running the firmware (when built).
 #include <catch2/catch.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,12 +44,7 @@ TEST_CASE("raw protocol end to end against the stand-in board", "[e2e][raw]") {
 
 TEST_CASE("raw protocol over --port with a separately started board", "[e2e][raw]") {
   minrt::send::SimLauncher board;
-  minrt::send::SimConfig cfg;
-  cfg.simulator = HS_STANDIN;
-  cfg.firmware = ball();  // ignored by the stand-in
-  cfg.firmware_args = {"--size", "24x16", "--format", "p6"};
-  std::string err;
-  REQUIRE(board.start(cfg, err));
+  hs_test::start_standin(board, "24x16", "p6");
   hs_test::TempDir dir;
   const std::string out = dir.file("ball.ppm");
   const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), "--baud", "921600", "--size", "24x16", "--format",
@@ -83,12 +79,7 @@ TEST_CASE("--verify and --expect-sha256", "[e2e][raw]") {
 
 TEST_CASE("a size mismatch between board and host is detected", "[e2e][raw]") {
   minrt::send::SimLauncher board;
-  minrt::send::SimConfig cfg;
-  cfg.simulator = HS_STANDIN;
-  cfg.firmware = ball();
-  cfg.firmware_args = {"--size", "16x16", "--format", "p6"};
-  std::string err;
-  REQUIRE(board.start(cfg, err));
+  hs_test::start_standin(board, "16x16", "p6");
   hs_test::TempDir dir;
   const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), "--size", "32x32", "--format", "p6", ball(), "-o",
                            dir.file("x.ppm")});
@@ -99,12 +90,7 @@ TEST_CASE("a size mismatch between board and host is detected", "[e2e][raw]") {
 
 TEST_CASE("a port held by another process is refused with its holder", "[e2e]") {
   minrt::send::SimLauncher board;
-  minrt::send::SimConfig cfg;
-  cfg.simulator = HS_STANDIN;
-  cfg.firmware = ball();
-  cfg.firmware_args = {"--size", "8x8", "--format", "p6"};
-  std::string err;
-  REQUIRE(board.start(cfg, err));
+  hs_test::start_standin(board, "8x8", "p6");
   minrt::send::SerialPort holder;
   holder.open(board.pty_path(), minrt::send::PortSettings{});
   // The holder is this test process; host-send is another process.
@@ -114,7 +100,11 @@ TEST_CASE("a port held by another process is refused with its holder", "[e2e]") 
   holder.close();
 }
 
-TEST_CASE("every bad scene ends with the stand-in's error, status 3 and no image", "[e2e][bad]") {
+namespace {
+
+// Sends every file of shared/bad with `send` and checks the outcome: the
+// board's error, status 3, no image (the one valid file renders).
+void check_bad_scenes(const std::function<RunResult(const std::string& scene, const std::string& out)>& send) {
   const auto bad = hs_test::bad_scenes();
   if (bad.empty()) {
     WARN("skipped: no " << hs_test::shared_dir() << "/bad");
@@ -123,7 +113,7 @@ TEST_CASE("every bad scene ends with the stand-in's error, status 3 and no image
   hs_test::TempDir dir;
   for (const auto& scene : bad) {
     const std::string out = dir.file(scene.substr(scene.rfind('/') + 1) + ".ppm");
-    const RunResult r = send_standin({"--size", "16x16", "--format", "p6", "--first-byte-timeout", "60"}, scene, out);
+    const RunResult r = send(scene, out);
     INFO(scene << "\n" << r.err);
     if (scene.find("sixty-objects-fifty-and-nets") != std::string::npos) {
       CHECK(r.status == 0);  // valid, see shared/README.md
@@ -133,6 +123,14 @@ TEST_CASE("every bad scene ends with the stand-in's error, status 3 and no image
     CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
     CHECK_FALSE(hs_test::file_exists(out));
   }
+}
+
+}  // namespace
+
+TEST_CASE("every bad scene ends with the stand-in's error, status 3 and no image", "[e2e][bad]") {
+  check_bad_scenes([](const std::string& scene, const std::string& out) {
+    return send_standin({"--size", "16x16", "--format", "p6", "--first-byte-timeout", "60"}, scene, out);
+  });
 }
 
 TEST_CASE("host-send and firmware-sim give the bytes of minrt float/portable", "[e2e][firmware]") {
@@ -158,23 +156,8 @@ TEST_CASE("every bad scene through firmware-sim ends with the firmware's error",
     WARN("skipped: firmware-sim or the firmware ELF not built");
     return;
   }
-  const auto bad = hs_test::bad_scenes();
-  if (bad.empty()) {
-    WARN("skipped: no " << hs_test::shared_dir() << "/bad");
-    return;
-  }
-  hs_test::TempDir dir;
-  for (const auto& scene : bad) {
-    const std::string out = dir.file(scene.substr(scene.rfind('/') + 1) + ".ppm");
-    const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--size",
-                             "16x16", "--format", "p6", scene, "-o", out});
-    INFO(scene << "\n" << r.err);
-    if (scene.find("sixty-objects-fifty-and-nets") != std::string::npos) {
-      CHECK(r.status == 0);
-      continue;
-    }
-    CHECK(r.status == 3);
-    CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
-    CHECK_FALSE(hs_test::file_exists(out));
-  }
+  check_bad_scenes([](const std::string& scene, const std::string& out) {
+    return run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--size", "16x16", "--format",
+                "p6", scene, "-o", out});
+  });
 }

@@ -18,12 +18,8 @@ struct DamagedLine {
   std::string port;  // where host-send connects
 
   DamagedLine(const std::string& protocol, const std::vector<std::string>& faults) {
-    minrt::send::SimConfig b;
-    b.simulator = HS_STANDIN;
-    b.firmware = HS_STANDIN;
-    b.firmware_args = {"--size", "32x32", "--format", "p6", "--protocol=" + protocol};
+    hs_test::start_standin(board, "32x32", "p6", protocol);
     std::string err;
-    REQUIRE(board.start(b, err));
     minrt::send::SimConfig r;
     r.exact_args = {HS_FAULT_RELAY};
     r.exact_args.insert(r.exact_args.end(), faults.begin(), faults.end());

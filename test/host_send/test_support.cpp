@@ -11,6 +11,7 @@
 #include <chrono>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <thread>
 
 namespace hs_test {
@@ -78,6 +79,16 @@ std::string reference_image(const std::string& scene, const std::string& size, c
   run({HS_MINRT, "--size", size, "--format", format, "--precision", "float", "--shims", "portable", "-q", "-o", out,
        scene});
   return read_file(out);
+}
+
+void start_standin(minrt::send::SimLauncher& board, const std::string& size, const std::string& format,
+                   const std::string& protocol) {
+  minrt::send::SimConfig cfg;
+  cfg.simulator = HS_STANDIN;
+  cfg.firmware = HS_STANDIN;  // ignored by the stand-in
+  cfg.firmware_args = {"--size", size, "--format", format, "--protocol=" + protocol};
+  std::string err;
+  if (!board.start(cfg, err)) throw std::runtime_error("cannot start the stand-in board: " + err);
 }
 
 bool firmware_available() {

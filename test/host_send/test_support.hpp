@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "sim_launcher.hpp"
+
 namespace hs_test {
 
 struct RunResult {
@@ -26,6 +28,10 @@ struct TempDir {
 
 // The exact bytes the firmware produces for `scene`, from the host renderer.
 std::string reference_image(const std::string& scene, const std::string& size, const std::string& format);
+
+// Starts the stand-in board on its own pty (path: board.pty_path()).
+void start_standin(minrt::send::SimLauncher& board, const std::string& size, const std::string& format,
+                   const std::string& protocol = "raw");
 
 bool firmware_available();
 std::string shared_dir();
