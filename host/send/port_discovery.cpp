@@ -116,6 +116,7 @@ std::vector<PortInfo> list_serial_ports(const std::string& sysfs_root, const std
     const std::string dev_dir = real_path(entry + "/device");
     if (dev_dir.empty()) continue;
     p.driver = base_name(real_path(dev_dir + "/driver"));
+    p.uart_type = parse_int(read_attr(entry + "/type"));
     fill_usb(p, dev_dir, root);
     for (const auto& [target, link] : by_id)
       if (target == name) p.by_id = link;
@@ -160,6 +161,8 @@ std::vector<UsbDevice> enumerate_usb(bool& available) {
 #endif
   return out;
 }
+
+bool port_present(const PortInfo& p) { return p.usb || p.uart_type != 0; }
 
 bool parse_usb_selector(const std::string& text, UsbSelector& sel, std::string& error) {
   error = "bad USB port '" + text + "': expected usb:VID:PID[:SERIAL] with 4-digit hex ids";
@@ -228,12 +231,12 @@ int list_ports_command() {
       if (p.manufacturer.empty()) p.manufacturer = d.manufacturer;
     }
   }
-  // USB serial adapters first; legacy 8250 ports without a UART last and
-  // only when they answer (they usually do not exist).
+  // USB serial adapters first; the 8250 driver's placeholder ports (no UART
+  // behind them) are left out.
   std::stable_sort(ports.begin(), ports.end(), [](const PortInfo& a, const PortInfo& b) { return a.usb > b.usb; });
   int shown = 0;
   for (const auto& p : ports) {
-    if (!p.usb && p.driver == "serial8250") continue;
+    if (!port_present(p)) continue;
     std::printf("%s\n", format_port(p).c_str());
     ++shown;
   }

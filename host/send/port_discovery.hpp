@@ -20,7 +20,11 @@ struct PortInfo {
   int interface = -1;   // bInterfaceNumber, -1 if unknown
   int busnum = -1, devnum = -1;
   std::string by_id;    // /dev/serial/by-id/... or ""
+  int uart_type = -1;   // sysfs "type" of a UART port (0: no UART there), -1 if none
 };
+
+// False for the placeholder ports the 8250 driver registers without a UART.
+bool port_present(const PortInfo& p);
 
 // Ports under `sysfs_root`/class/tty with a device link, sorted by name;
 // by-id names from `dev_root`/serial/by-id.

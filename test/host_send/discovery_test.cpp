@@ -1,6 +1,6 @@
 // Port discovery on the recorded sysfs tree in data/sysfs (three USB serial
-// adapters, one legacy 8250 port, one virtual console) and libusb on this
-// machine.
+// adapters, an 8250 port with a UART and one without, a virtual console) and
+// libusb on this machine.
 #include <catch2/catch.hpp>
 
 #include "port_discovery.hpp"
@@ -20,7 +20,7 @@ const PortInfo* find(const std::vector<PortInfo>& ports, const std::string& name
 
 TEST_CASE("serial ports are found in a recorded sysfs tree", "[discovery]") {
   const auto ports = list_serial_ports(kSys, kDev);
-  REQUIRE(ports.size() == 4);  // tty0 has no device link
+  REQUIRE(ports.size() == 5);  // tty0 has no device link
   CHECK(find(ports, "tty0") == nullptr);
 
   const PortInfo* ftdi = find(ports, "ttyUSB0");
@@ -49,6 +49,13 @@ TEST_CASE("serial ports are found in a recorded sysfs tree", "[discovery]") {
   REQUIRE(legacy != nullptr);
   CHECK_FALSE(legacy->usb);
   CHECK(legacy->driver == "serial8250");
+  CHECK(legacy->uart_type == 4);
+  CHECK(port_present(*legacy));
+  const PortInfo* placeholder = find(ports, "ttyS1");
+  REQUIRE(placeholder != nullptr);
+  CHECK(placeholder->uart_type == 0);
+  CHECK_FALSE(port_present(*placeholder));
+  CHECK(port_present(*ftdi));
 
   CHECK(find(ports, "ttyUSB1")->by_id.empty());
   CHECK_THAT(format_port(*ftdi), Catch::Contains("usb:0403:6001:A50285BI") && Catch::Contains("by-id"));
