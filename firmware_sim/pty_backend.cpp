@@ -59,9 +59,13 @@ void drain_uart_pty(int master, int timeout_ms) {
   if (!name) return;
   int s = ::open(name, O_RDWR | O_NOCTTY | O_NONBLOCK);
   if (s < 0) return;
-  for (int waited = 0; waited < timeout_ms; waited += 10) {
+  // Bytes written to the master reach the slave's queue asynchronously, so
+  // an empty queue only counts once it has stayed empty for 100 ms.
+  int empty_ms = 0;
+  for (int waited = 0; waited < timeout_ms && empty_ms < 100; waited += 10) {
     int pending = 0;
-    if (::ioctl(s, FIONREAD, &pending) != 0 || pending == 0) break;
+    if (::ioctl(s, FIONREAD, &pending) != 0) break;
+    empty_ms = pending == 0 ? empty_ms + 10 : 0;
     ::usleep(10000);
   }
   ::close(s);

@@ -16,7 +16,9 @@ constexpr uint32_t kRegIer = 1, kRegLcr = 3, kRegScr = 7;
 bool Uart::fill_input() {
   if (in_pos_ < in_buf_.size()) return true;
   if (eof_) return false;
-  // Never block: the firmware decides whether to wait by polling LSR.
+  // Never block: the firmware decides whether to wait by polling LSR. While
+  // it polls in vain, ask the host only every 64th time (a syscall each).
+  if (idle_polls_ % 64 != 0) return false;
   pollfd p{cfg_.in_fd, POLLIN, 0};
   int r = ::poll(&p, 1, 0);
   if (r < 0 && errno == EINTR) return false;
@@ -47,7 +49,7 @@ uint8_t Uart::read(uint32_t offset, uint64_t now) {
   switch (offset) {
     case MINRT_UART_REG_DATA: {
       if (dlab) return dll_;
-      eof_polls_ = 0;
+      eof_polls_ = idle_polls_ = 0;
       if (!data_ready(now)) return 0;
       holding_ = false;
       ++bytes_in_;
@@ -62,7 +64,7 @@ uint8_t Uart::read(uint32_t offset, uint64_t now) {
         lsr |= MINRT_UART_LSR_DATA_READY;
       } else if (eof_) {
         ++eof_polls_;
-      } else {
+      } else if (++idle_polls_ == 64) {
         flush();  // the firmware is waiting for input: show what it printed
       }
       if (now >= tx_free_at_) lsr |= MINRT_UART_LSR_THR_EMPTY | 0x40;  // THRE + TEMT
@@ -80,7 +82,7 @@ void Uart::write(uint32_t offset, uint8_t value, uint64_t now) {
         dll_ = value;
         return;
       }
-      eof_polls_ = 0;
+      eof_polls_ = idle_polls_ = 0;
       out_buf_.push_back(value);
       ++bytes_out_;
       tx_free_at_ = (now > tx_free_at_ ? now : tx_free_at_) + cfg_.cycles_per_byte;

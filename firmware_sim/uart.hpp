@@ -47,6 +47,7 @@ class Uart {
   uint64_t rx_ready_at_ = 0;    // cycle at which the held byte becomes readable
   uint64_t tx_free_at_ = 0;     // cycle at which the transmitter is empty again
   uint64_t eof_polls_ = 0;
+  uint64_t idle_polls_ = 0;     // LSR reads without data since the last data access
   std::vector<uint8_t> out_buf_;
   uint8_t lcr_ = 0, dll_ = 0, dlm_ = 0, scr_ = 0;
   uint64_t bytes_out_ = 0, bytes_in_ = 0;
