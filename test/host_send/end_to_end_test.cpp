@@ -56,7 +56,7 @@ TEST_CASE("raw protocol over --port with a separately started board", "[e2e][raw
   CHECK(board.stop(5000) == 0);
 }
 
-TEST_CASE("--verify and --expect-sha256", "[e2e][raw]") {
+TEST_CASE("host-send checks images with --verify and --expect-sha256", "[e2e][raw]") {
   hs_test::TempDir dir;
   const std::string ref = dir.file("ref.ppm");
   {

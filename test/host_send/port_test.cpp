@@ -171,3 +171,39 @@ TEST_CASE("bytes pass both ways through an open port", "[port]") {
   CHECK(std::string(buf, 5) == "\r\nok\x03");
   CHECK(port.read_some(buf, sizeof buf, 50) == 0);  // timeout
 }
+
+TEST_CASE("host-send restores the port's settings when it is interrupted", "[port][cli]") {
+  PtyPair pty;
+  struct termios2 before = get2(pty.slave);
+  before.c_lflag |= ICANON | ECHO;
+  before.c_cflag &= ~CBAUD;
+  before.c_cflag |= BOTHER;
+  before.c_ospeed = before.c_ispeed = 4800;
+  REQUIRE(::ioctl(pty.slave, TCSETS2, &before) == 0);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int devnull = ::open("/dev/null", O_RDWR);
+    ::dup2(devnull, 1);
+    ::dup2(devnull, 2);
+    ::execl(HS_HOST_SEND, HS_HOST_SEND, "--port", pty.name.c_str(), "--baud", "3000000", HS_DATA_DIR "/../standin_board.cpp",
+            "-o", "/tmp/host_send_never.ppm", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Any file serves as the scene: no board answers. Wait until host-send has
+  // switched the port to its rate, then interrupt it.
+  bool switched = false;
+  for (int i = 0; i < 300 && !switched; ++i) {
+    ::usleep(10000);
+    switched = get2(pty.slave).c_ospeed == 3000000;
+  }
+  CHECK(switched);
+  ::kill(child, SIGTERM);
+  int st = 0;
+  ::waitpid(child, &st, 0);
+  CHECK(WIFEXITED(st));
+  CHECK(WEXITSTATUS(st) == 1);
+  const struct termios2 after = get2(pty.slave);
+  CHECK(after.c_ospeed == 4800);
+  CHECK((after.c_lflag & (ICANON | ECHO)) == (ICANON | ECHO));
+  CHECK(::access("/tmp/host_send_never.ppm", F_OK) != 0);
+}

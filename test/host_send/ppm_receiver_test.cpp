@@ -153,3 +153,11 @@ TEST_CASE("write_file_atomically leaves no partial file", "[ppm]") {
   CHECK_FALSE(minrt::send::write_file_atomically("/nonexistent-dir/x.ppm", "P6", err));
   CHECK_THAT(err, Catch::Contains("/nonexistent-dir/x.ppm"));
 }
+
+#include "progress.hpp"
+
+TEST_CASE("the progress line shows bytes, rows, rate, share of 8N1 and ETA", "[progress]") {
+  const std::string s = minrt::send::Progress::format(11520, 23040, 5, 10, 1.0, 115200);
+  CHECK(s == "11520 B  5/10 rows  11.5 kB/s (100.0% of 8N1)  ETA 0:01");
+  CHECK(minrt::send::Progress::format(0, 100, 0, 10, 0.0, 0) == "0 B  0/10 rows  0.0 kB/s");
+}
