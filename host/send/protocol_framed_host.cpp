@@ -8,6 +8,8 @@
 #include <cstring>
 #include <vector>
 
+#include <minrt/serial_protocol.h>
+
 #include "ppm_writer.hpp"
 #include "protocol_framed.hpp"
 
@@ -72,6 +74,10 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
   int have_count = 0;
   bool have_header = false, acked = false;
   int uploads = 0;
+  // A firmware without the framed protocol (or one failing before it starts
+  // framing) answers with a plain error line; catch it before any frame.
+  std::string plain;
+  bool any_frame = false;
 
   std::string out = framed_upload(scene_text);
   size_t sent = 0;
@@ -137,7 +143,14 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
                     "line closed with " + std::to_string(have_count) + " of " + std::to_string(spec.height) + " rows");
       for (ssize_t i = 0; i < n; ++i) {
         ++received;
+        if (!any_frame && plain.size() < 4096) {
+          plain.push_back(static_cast<char>(buf[i]));
+          const std::string marker = MINRT_ERROR_MARKER;
+          if (buf[i] == '\n' && plain.compare(0, marker.size(), marker) == 0)
+            return fail(TransferResult::Status::kFirmwareError, plain.substr(marker.size(), plain.size() - marker.size() - 1));
+        }
         if (parser.feed(buf[i]) != framed::FrameParser::kFrame) continue;
+        any_frame = true;
         last_rx = Clock::now();
         retry_interval = options.retry_ms;
         switch (parser.type()) {

@@ -235,3 +235,16 @@ TEST_CASE("course and framed report scene errors", "[e2e][course][framed][bad]")
   CHECK(r.status == 3);
   CHECK_THAT(r.err, Catch::Contains("scene rejected before sending"));
 }
+
+TEST_CASE("framed mode reports a plain error line from a board that does not frame", "[e2e][framed]") {
+  // A raw-only board takes the frames for SLD text and rejects them.
+  minrt::send::SimLauncher board;
+  hs_test::start_standin(board, "16x16", "p6", "raw");
+  hs_test::TempDir dir;
+  const auto r = hs_test::run({HS_HOST_SEND, "--port", board.pty_path(), "--protocol", "framed", "--size", "16x16",
+                               "--format", "p6", ball(), "-o", dir.file("x.ppm"), "--first-byte-timeout", "10"});
+  INFO(r.err);
+  CHECK(r.status == 3);
+  CHECK_THAT(r.err, Catch::Contains("the board reported an error: 1:1:"));
+  CHECK_FALSE(hs_test::file_exists(dir.file("x.ppm")));
+}
