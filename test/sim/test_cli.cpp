@@ -244,38 +244,71 @@ TEST_CASE("profiles: callgrind and folded stacks agree with the run", "[cli][pro
   std::remove(folded.c_str());
 }
 
-TEST_CASE("pty option: the UART is a pseudo-terminal a host can talk to", "[cli][pty]") {
+namespace {
+// Starts `firmware-sim --pty ELF -- mode`, opens the announced slave like a
+// serial terminal program (raw mode) and returns its fd; pid for waitpid,
+// err_fd = the simulator's stderr after the announcement line.
+int open_sim_pty(const char* mode, pid_t& pid, int& err_fd) {
   int err_pipe[2];
   REQUIRE(::pipe(err_pipe) == 0);
-  const pid_t pid = ::fork();
+  pid = ::fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {
     ::dup2(err_pipe[1], 2);
     ::close(err_pipe[0]);
-    ::execl(FWSIM_BINARY, FWSIM_BINARY, "--pty", kElf.c_str(), "--", "echo", static_cast<char*>(nullptr));
+    ::execl(FWSIM_BINARY, FWSIM_BINARY, "--pty", kElf.c_str(), "--", mode, static_cast<char*>(nullptr));
     ::_exit(127);
   }
   ::close(err_pipe[1]);
   std::string line;
   char c;
   while (::read(err_pipe[0], &c, 1) == 1 && c != '\n') line += c;
+  err_fd = err_pipe[0];
   REQUIRE(line.rfind("firmware-sim: uart on /dev/pts/", 0) == 0);
   const std::string slave = line.substr(std::string("firmware-sim: uart on ").size());
   const int fd = ::open(slave.c_str(), O_RDWR | O_NOCTTY);
   REQUIRE(fd >= 0);
-  // Like a serial terminal program: configure the port as raw as well.
   termios t{};
   REQUIRE(::tcgetattr(fd, &t) == 0);
   ::cfmakeraw(&t);
   REQUIRE(::tcsetattr(fd, TCSANOW, &t) == 0);
-  REQUIRE(::write(fd, "pty!q", 5) == 5);
+  return fd;
+}
+
+std::string read_n(int fd, size_t n) {
   std::string got;
-  while (got.size() < 4 && ::read(fd, &c, 1) == 1) got += c;
-  CHECK(got == "PTY!");
+  char c;
+  while (got.size() < n && ::read(fd, &c, 1) == 1) got += c;
+  return got;
+}
+
+int wait_status(pid_t pid) {
   int status = 0;
   ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+}  // namespace
+
+TEST_CASE("pty option: the UART is a pseudo-terminal a host can talk to", "[cli][pty]") {
+  pid_t pid;
+  int err;
+  const int fd = open_sim_pty("echo", pid, err);
+  REQUIRE(::write(fd, "pty!q", 5) == 5);
+  CHECK(read_n(fd, 4) == "PTY!");
+  CHECK(wait_status(pid) == 0);
   ::close(fd);
-  ::close(err_pipe[0]);
-  CHECK(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 0);
+  ::close(err);
+}
+
+TEST_CASE("pty option: the host closing the pty is end of input", "[cli][pty]") {
+  pid_t pid;
+  int err;
+  const int fd = open_sim_pty("echo", pid, err);
+  REQUIRE(::write(fd, "ab", 2) == 2);
+  CHECK(read_n(fd, 2) == "AB");
+  ::close(fd);
+  // The echo firmware keeps polling after EOF: stall detected, status 6.
+  CHECK(read_n(err, 200).find("UART input at end of file") != std::string::npos);
+  CHECK(wait_status(pid) == 6);
+  ::close(err);
 }
