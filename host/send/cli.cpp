@@ -53,6 +53,11 @@ bool is_elf(const std::string& path) {
   return ok;
 }
 
+bool ends_with(const std::string& s, const char* tail) {
+  const std::string t = tail;
+  return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
 bool read_file(const std::string& path, std::string& out) {
   std::ifstream f(path, std::ios::binary);
   if (!f) return false;
@@ -153,7 +158,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
     } else if (a == "--sim") {
       o.sim = true;
       if (has_inline) o.sim_elf = inline_value;
-      else if (i + 1 < argc && argv[i + 1][0] != '-' && is_elf(argv[i + 1])) o.sim_elf = argv[++i];
+      else if (i + 1 < argc && argv[i + 1][0] != '-' && (is_elf(argv[i + 1]) || ends_with(argv[i + 1], ".elf")))
+        o.sim_elf = argv[++i];
     } else if (a == "--sim-binary") {
       if (!value(o.sim_binary)) return ParseResult::kError;
     } else if (a == "--baud") {

@@ -52,6 +52,9 @@ TEST_CASE("link errors give status 1", "[cli]") {
   r = run({HS_HOST_SEND, "--port", "/dev/null", scene, "-o", dir.file("x.ppm")});
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("not a serial port"));
+  r = run({HS_HOST_SEND, "--sim", "/nonexistent/fw.elf", scene, "-o", dir.file("x.ppm")});
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("/nonexistent/fw.elf"));
   r = run({HS_HOST_SEND, "--sim-binary", "/nonexistent/sim", scene, "-o", dir.file("x.ppm")});
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("/nonexistent/sim"));
