@@ -1,14 +1,18 @@
 #include "bus.hpp"
 
+#include <new>
+
 namespace fwsim {
 
-Bus::Bus(uint32_t ram_size) : ram_(new uint8_t[ram_size]()), ram_size_(ram_size) {}
+Bus::Bus(uint32_t ram_size) : ram_(static_cast<uint8_t*>(std::calloc(ram_size, 1))), ram_size_(ram_size) {
+  if (!ram_) throw std::bad_alloc();
+}
 
 Bus::Result Bus::load(uint32_t addr, unsigned size, uint32_t& value, uint64_t now) {
   if (addr & (size - 1)) return Result::Misaligned;
   if (in_ram(addr, size)) {
     value = 0;
-    std::memcpy(&value, ram_.get() + (addr - kRamBase), size);  // little-endian host
+    std::memcpy(&value, ram_ + (addr - kRamBase), size);  // little-endian host
     return Result::Ok;
   }
   if (uart_ && addr - MINRT_UART_BASE < MINRT_UART_SIZE) {
@@ -25,7 +29,7 @@ Bus::Result Bus::load(uint32_t addr, unsigned size, uint32_t& value, uint64_t no
 Bus::Result Bus::store(uint32_t addr, unsigned size, uint32_t value, uint64_t now) {
   if (addr & (size - 1)) return Result::Misaligned;
   if (in_ram(addr, size)) {
-    std::memcpy(ram_.get() + (addr - kRamBase), &value, size);
+    std::memcpy(ram_ + (addr - kRamBase), &value, size);
     return Result::Ok;
   }
   if (uart_ && addr - MINRT_UART_BASE < MINRT_UART_SIZE) {

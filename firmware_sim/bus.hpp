@@ -4,7 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <cstring>
-#include <memory>
+#include <cstdlib>
 
 #include <minrt/memory_map.h>
 
@@ -20,9 +20,12 @@ class Bus {
   enum class Result : uint8_t { Ok, Fault, Misaligned, Stop };
 
   explicit Bus(uint32_t ram_size);
+  ~Bus() { std::free(ram_); }
+  Bus(const Bus&) = delete;
+  Bus& operator=(const Bus&) = delete;
 
-  uint8_t* ram() { return ram_.get(); }
-  const uint8_t* ram() const { return ram_.get(); }
+  uint8_t* ram() { return ram_; }
+  const uint8_t* ram() const { return ram_; }
   uint32_t ram_size() const { return ram_size_; }
   bool in_ram(uint32_t addr, uint32_t len) const {
     return addr >= kRamBase && addr - kRamBase <= ram_size_ - len && len <= ram_size_;
@@ -40,7 +43,7 @@ class Bus {
   bool finished() const { return finished_; }
 
  private:
-  std::unique_ptr<uint8_t[]> ram_;
+  uint8_t* ram_;  // calloc: pages the firmware never touches cost nothing
   uint32_t ram_size_;
   Uart* uart_ = nullptr;
   Finisher finisher_;
