@@ -8,13 +8,21 @@
 #include "firmware_args.hpp"
 #include "footprint.hpp"
 #include "math_portable.hpp"
+#include "math_rv32f.hpp"
 #include "ns16550.hpp"
 #include "render.hpp"
 #include "serial_stream.hpp"
 
 namespace {
 
+// PortableFloat as the host's `--shims portable`; with MINRT_FW_HW_SQRT the
+// square root is fsqrt.s (same bits, see core/math_rv32f.hpp) where the ISA
+// has it.
+#if MINRT_FW_HW_SQRT
+using Math = minrt::PortableFloatHwSqrt;
+#else
 using Math = minrt::PortableFloat;
+#endif
 
 // The scene and the tracer's tables: static, so their size shows in .bss.
 minrt::RenderState<Math> g_state;
