@@ -66,3 +66,15 @@ TEST_CASE("host-send --list runs", "[cli]") {
   CHECK(r.status == 0);
   CHECK_THAT(r.out, Catch::Contains("USB devices seen by libusb"));
 }
+
+#include "sim_launcher.hpp"
+
+TEST_CASE("the simulator's pty line is recognised", "[cli]") {
+  std::string path;
+  CHECK(minrt::send::parse_pty_line("firmware-sim: uart on /dev/pts/7", path));
+  CHECK(path == "/dev/pts/7");
+  CHECK(minrt::send::parse_pty_line("fault-relay: uart on /dev/pts/12\r", path));
+  CHECK(path == "/dev/pts/12");
+  CHECK_FALSE(minrt::send::parse_pty_line("firmware-sim: loading fw.elf", path));
+  CHECK_FALSE(minrt::send::parse_pty_line("uart on ", path));
+}
