@@ -376,19 +376,22 @@ class Tracer {
 
   // --- table-driven solvers -----------------------------------------------
 
+  // The original also requires the face's 1/v entry to be nonzero; the table
+  // stores NaN as that face's coordinate instead (see setup_dirvec_constants),
+  // which fails the same comparisons without the extra test.
   MINRT_INLINE int solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2) {
     const R d0 = (c[0] - b0) * c[1];
-    if (fabs(d0 * v[1] + b1) < m.abc[1] && fabs(d0 * v[2] + b2) < m.abc[2] && c[1] != R(0)) {
+    if (fabs(d0 * v[1] + b1) < m.abc[1] && fabs(d0 * v[2] + b2) < m.abc[2]) {
       solver_dist_ = d0;
       return 1;
     }
     const R d1 = (c[2] - b1) * c[3];
-    if (fabs(d1 * v[0] + b0) < m.abc[0] && fabs(d1 * v[2] + b2) < m.abc[2] && c[3] != R(0)) {
+    if (fabs(d1 * v[0] + b0) < m.abc[0] && fabs(d1 * v[2] + b2) < m.abc[2]) {
       solver_dist_ = d1;
       return 2;
     }
     const R d2 = (c[4] - b2) * c[5];
-    if (fabs(d2 * v[0] + b0) < m.abc[0] && fabs(d2 * v[1] + b1) < m.abc[1] && c[5] != R(0)) {
+    if (fabs(d2 * v[0] + b0) < m.abc[0] && fabs(d2 * v[1] + b1) < m.abc[1]) {
       solver_dist_ = d2;
       return 3;
     }
@@ -459,6 +462,7 @@ class Tracer {
       if (m.form == kFormBox) {
         for (int k = 0; k < 3; ++k) {
           if (v[k] == R(0)) {
+            c[2 * k] = R(__builtin_nan(""));
             c[2 * k + 1] = R(0);
           } else {
             c[2 * k] = fneg_cond(m.inverted != (v[k] < R(0)), m.abc[k]);
