@@ -45,6 +45,17 @@ struct termios2 get2(int fd) {
   return t;
 }
 
+// Puts the tty in a recognisable state (canonical, echo, `baud`) that
+// host-send must restore.
+void set_cooked(int fd, unsigned baud) {
+  struct termios2 t = get2(fd);
+  t.c_lflag |= ICANON | ECHO;
+  t.c_cflag &= ~CBAUD;
+  t.c_cflag |= BOTHER;
+  t.c_ospeed = t.c_ispeed = baud;
+  REQUIRE(::ioctl(fd, TCSETS2, &t) == 0);
+}
+
 }  // namespace
 
 TEST_CASE("termios2 sets any rate, raw 8N1, on a pty", "[port]") {
@@ -77,12 +88,7 @@ TEST_CASE("flow control settings reach the driver", "[port]") {
 
 TEST_CASE("the port's settings are restored on close", "[port]") {
   PtyPair pty;
-  struct termios2 before = get2(pty.slave);
-  before.c_lflag |= ICANON | ECHO;
-  before.c_cflag &= ~CBAUD;
-  before.c_cflag |= BOTHER;
-  before.c_ospeed = before.c_ispeed = 9600;
-  REQUIRE(::ioctl(pty.slave, TCSETS2, &before) == 0);
+  set_cooked(pty.slave, 9600);
   {
     SerialPort port;
     port.open(pty.name, PortSettings{921600, minrt::send::Flow::kNone});
@@ -174,12 +180,7 @@ TEST_CASE("bytes pass both ways through an open port", "[port]") {
 
 TEST_CASE("host-send restores the port's settings when it is interrupted", "[port][cli]") {
   PtyPair pty;
-  struct termios2 before = get2(pty.slave);
-  before.c_lflag |= ICANON | ECHO;
-  before.c_cflag &= ~CBAUD;
-  before.c_cflag |= BOTHER;
-  before.c_ospeed = before.c_ispeed = 4800;
-  REQUIRE(::ioctl(pty.slave, TCSETS2, &before) == 0);
+  set_cooked(pty.slave, 4800);
   const pid_t child = ::fork();
   if (child == 0) {
     const int devnull = ::open("/dev/null", O_RDWR);
