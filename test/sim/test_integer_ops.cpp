@@ -155,3 +155,13 @@ TEST_CASE("faults stop the run with cause, pc and address", "[isa][faults]") {
     CHECK(s.m.hart().instret == 5001);
   }
 }
+
+TEST_CASE("counter high halves carry past 32 bits", "[isa][counters]") {
+  Sim s({csrrs(10, kInstretH, 0), csrrs(11, kInstret, 0), csrrs(12, 0xc80, 0), csrrs(13, 0xc81, 0)});
+  s.m.hart().instret = 0x1fffffffeull;  // two instructions before the low half wraps
+  REQUIRE(s.run().cause == StopCause::Ebreak);
+  CHECK(s.x(10) == 1u);
+  CHECK(s.x(11) == 0xffffffffu);
+  CHECK(s.x(12) == 2u);  // cycleh: plain mode counts one cycle per instruction
+  CHECK(s.x(13) == 0u);  // timeh: 10 MHz timebase of a 100 MHz clock
+}
