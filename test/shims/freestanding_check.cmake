@@ -1,15 +1,13 @@
 # cmake -P script: compile freestanding_tu.cpp for riscv32 and check the
 # object's undefined symbols and instructions.
 #   CLANGXX, NM, OBJDUMP: tools; SRC: the TU; OBJ: output object;
-#   MARCH, MABI: target; STUB_DIR, STDCXX_DIR, STDCXX_CFG_DIR: the header
-#   directories (see CMakeLists.txt); CORE_DIR: core/;
+#   MARCH, MABI: target; CORE_DIR: core/ (the only include directory);
 #   ALLOWED_UNDEF: regex every undefined symbol must match ("" = none allowed);
 #   FORBIDDEN_INSNS: regex of mnemonics that must not appear in the code.
 execute_process(
   COMMAND ${CLANGXX} --target=riscv32-unknown-elf -march=${MARCH} -mabi=${MABI}
           -ffreestanding -fno-exceptions -fno-rtti -std=c++20 -O2
-          -ffp-contract=off -isystem ${STUB_DIR} -isystem ${STDCXX_DIR}
-          -isystem ${STDCXX_CFG_DIR} -I${CORE_DIR} -c ${SRC} -o ${OBJ}
+          -ffp-contract=off -I${CORE_DIR} -c ${SRC} -o ${OBJ}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "compile failed (${MARCH}):\n${out}${err}")
