@@ -5,15 +5,17 @@
 //
 // No libc, no <cmath>, no float<->int conversion instructions, no fma, no
 // double.  Like the rest of core/, it includes no C++ library header (only
-// the compiler's <stdint.h>), so it builds for a bare RISC-V target.  Algorithms and error analysis are in
-// docs/shims.md; the constants come from tools/shim_ulp/gen_coeffs.py.
+// the compiler's <stdint.h>), so it builds for a bare RISC-V target.
+// Algorithms and measured errors are in docs/shims.md; the constants come
+// from tools/shim_ulp/gen_coeffs.py.
 //
 //   PortableFloatT<2> (= PortableFloat, "float/portable"): sqrt correctly
-//     rounded, sin/cos/atan within about 1 ULP over the whole float range.
+//     rounded, sin/cos/atan below 1 ULP over the whole float range.
 //   PortableFloatT<1> (= PortableFloatFast, "float/portable-fast"): shorter
 //     polynomials, no extra-precision tail in the sin/cos reduction, one-step
 //     atan reduction, sqrt from a Newton iteration without the exact
-//     correction.  Meets the course rules (2^-18 sin/cos, 2^-20 atan/sqrt).
+//     correction; up to 2.6 ULP.  Meets the course rules (relative error
+//     2^-18 sin/cos, 2^-20 atan/sqrt).
 //
 // Everything assumes the build's -ffp-contract=off and IEEE binary32 with
 // round-to-nearest-even; the compensated steps below rely on both.
@@ -272,10 +274,10 @@ constexpr u64 bits64_at(const u32 (&p)[6], int pos) {
   return (u64(hi) << 32) | lo;
 }
 
-// Payne-Hanek in integer arithmetic for finite ax >= 2^13 (works from about
-// 2^1 up).  ax = m 2^s with a 24-bit integer m.  Bits of 2/pi whose weight
-// makes m * bit * 2^s a multiple of 4 cannot change the quadrant or the
-// fraction, so only a 96-bit window of 2/pi is multiplied: the product then
+// Payne-Hanek in integer arithmetic for finite ax >= 2^13 (a test checks it
+// against Cody-Waite from 2 up).  ax = m 2^s, m a 24-bit integer.  Bits of
+// 2/pi whose weight makes m * bit * 2^s a multiple of 4 cannot change the
+// quadrant or the fraction, so only a 96-bit window of 2/pi is multiplied: the product then
 // holds the quadrant and at least 94 fraction bits (error below 2^-70 of a
 // quarter turn).  The top 64 fraction bits, centred to [-1/2, 1/2], are
 // multiplied by pi/2 in fixed point and split into two floats.
