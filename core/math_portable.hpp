@@ -277,10 +277,11 @@ constexpr u64 bits64_at(const u32 (&p)[6], int pos) {
 // Payne-Hanek in integer arithmetic for finite ax >= 2^13 (a test checks it
 // against Cody-Waite from 2 up).  ax = m 2^s, m a 24-bit integer.  Bits of
 // 2/pi whose weight makes m * bit * 2^s a multiple of 4 cannot change the
-// quadrant or the fraction, so only a 96-bit window of 2/pi is multiplied: the product then
-// holds the quadrant and at least 94 fraction bits (error below 2^-70 of a
-// quarter turn).  The top 64 fraction bits, centred to [-1/2, 1/2], are
-// multiplied by pi/2 in fixed point and split into two floats.
+// quadrant or the fraction, so only a 96-bit window of 2/pi is multiplied:
+// the product then holds the quadrant and at least 94 fraction bits (error
+// below 2^-70 of a quarter turn).  The top 64 fraction bits, centred to
+// [-1/2, 1/2], are multiplied by pi/2 in fixed point and split into two
+// floats.
 constexpr Reduced reduce_payne_hanek(u32 ab) {
   const u32 m = (ab & kFracMask) | kHiddenBit;
   const int s = exponent_of(ab) - 23;
