@@ -1,0 +1,35 @@
+#!/bin/sh
+# Regenerates docs/accuracy.md and docs/accuracy/*.png: builds accuracy-report
+# in build-acc/, renders every scene of ../shared/scenes and sld/hard at
+# 128x128 in every math variant, measures contest.sld on the firmware
+# (build/release/firmware, build/release/firmware_sim) and under callgrind.
+# Environment: BUILD (default build-acc), MINRT_SHARED_DIR (default ../shared),
+# FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS (default
+# rv32imf,rv32im), NO_CACHE=1 to rerun the firmware even when its counts are
+# cached in $BUILD/accuracy-work/firmware-cache (keyed by a hash of the
+# simulator, ELF, scene and arguments; the soft-float run takes many minutes).
+set -eu
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${BUILD:-$root/build-acc}
+shared=${MINRT_SHARED_DIR:-$root/../shared}
+fw_build=${FW_BUILD:-$root/build/release}
+jobs=${JOBS:-2}
+
+[ -f "$build/CMakeCache.txt" ] || cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build" --target accuracy-report -j "$jobs"
+
+command=bench/accuracy/run.sh
+for var in BUILD MINRT_SHARED_DIR FW_BUILD JOBS FIRMWARE_ISAS NO_CACHE; do
+  eval "val=\${$var:-}"
+  [ -n "$val" ] && command="$var=$val $command"
+done
+set -- --tool "$build/tools/accuracy/accuracy-report" --root "$root" --shared "$shared" \
+  --work "$build/accuracy-work" --jobs "$jobs" --command "$command" \
+  --firmware-isas "${FIRMWARE_ISAS:-rv32imf,rv32im}"
+[ "${NO_CACHE:-0}" = 1 ] && set -- "$@" --no-cache
+if [ -x "$fw_build/firmware_sim/firmware-sim" ]; then
+  set -- "$@" --sim "$fw_build/firmware_sim/firmware-sim" --firmware-dir "$fw_build/firmware"
+else
+  echo "run.sh: no $fw_build/firmware_sim/firmware-sim: firmware counts left out" >&2
+fi
+exec /usr/bin/python3 "$root/bench/accuracy/make_report.py" "$@"
