@@ -3,8 +3,9 @@
 // of tools/shim_ulp/ulp_stats.hpp, plus the int <-> float conversion checks.
 //
 //   shim-ulp-table [--refine N] [--exhaustive] [--only sqrt|floor|sin|cos|atan|conv]
-//                  [--no-libm]
+//                  [--no-libm] [--renderer]
 //
+// --renderer keeps only the ranges the renderer uses (named "renderer ...").
 // --refine N divides the sampling strides (default 16); --exhaustive visits
 // every float of every range (minutes per function).
 #include <cmath>
@@ -30,8 +31,9 @@ std::string log2_text(double v) {
 }
 
 template <class P>
-void table_rows(Fn f, std::int64_t refine) {
+void table_rows(Fn f, std::int64_t refine, bool renderer_only) {
   for (const Range& r : ranges_for(f, refine)) {
+    if (renderer_only && r.name.rfind("renderer", 0) != 0) continue;
     const Stats s = measure<P>(f, r);
     const int rule = course_rule_log2(f);
     const bool ok = rule == 0 ? s.max_ulp == 0.0
@@ -79,6 +81,7 @@ int main(int argc, char** argv) {
   std::int64_t refine = 16;
   std::string only;
   bool libm = true;
+  bool renderer_only = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--refine") == 0 && i + 1 < argc) {
       refine = std::atoll(argv[++i]);
@@ -89,9 +92,12 @@ int main(int argc, char** argv) {
       only = argv[++i];
     } else if (std::strcmp(argv[i], "--no-libm") == 0) {
       libm = false;
+    } else if (std::strcmp(argv[i], "--renderer") == 0) {
+      renderer_only = true;
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--refine N] [--exhaustive] [--only FN|conv] [--no-libm]\n",
+                   "usage: %s [--refine N] [--exhaustive] [--only FN|conv] [--no-libm] "
+                   "[--renderer]\n",
                    argv[0]);
       return 2;
     }
@@ -103,9 +109,9 @@ int main(int argc, char** argv) {
   }
   for (Fn f : {Fn::sqrt, Fn::floor, Fn::sin, Fn::cos, Fn::atan}) {
     if (!only.empty() && only != fn_name(f)) continue;
-    if (libm) table_rows<minrt::LibmFloat>(f, refine);
-    table_rows<minrt::PortableFloatT<1>>(f, refine);
-    table_rows<minrt::PortableFloatT<2>>(f, refine);
+    if (libm) table_rows<minrt::LibmFloat>(f, refine, renderer_only);
+    table_rows<minrt::PortableFloatT<1>>(f, refine, renderer_only);
+    table_rows<minrt::PortableFloatT<2>>(f, refine, renderer_only);
   }
   if (only.empty() || only == "conv") {
     // Odd strides, so that every low bit pattern occurs.
