@@ -35,9 +35,10 @@ set(CMAKE_ASM_FLAGS_INIT "${_minrt_common}")
 set(CMAKE_CXX_FLAGS_INIT "${_minrt_common} -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "--ld-path=${MINRT_LLD} -nostdlib -static -Wl,--gc-sections")
 
-# -O2 for release builds (CMake's own default would be -O3).
+# -O3: on the renderer it executes about 5% fewer instructions than -O2
+# (contest 128x128), which is what the course measures.
 foreach(_lang C CXX ASM)
-  set(CMAKE_${_lang}_FLAGS_RELEASE "-O2 -DNDEBUG" CACHE STRING "")
+  set(CMAKE_${_lang}_FLAGS_RELEASE "-O3 -DNDEBUG" CACHE STRING "")
 endforeach()
 
 set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)

@@ -1,11 +1,11 @@
 # Sourced by the scripts in bench/firmware: finds the build, the simulator,
 # the firmware and the shared scenes.
-#   MINRT_BUILD_DIR   build directory (default: build-fw, then build, in the repo)
+#   MINRT_BUILD_DIR   build directory (default: build/release, the preset's, then build-fw, build)
 #   MINRT_SHARED_DIR  shared test data (default: ../shared next to the repo)
 #   MINRT_FIRMWARE    firmware ELF (default: $MINRT_BUILD_DIR/firmware/minrt-rv32imf.elf)
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 if [[ -z ${MINRT_BUILD_DIR:-} ]]; then
-  for d in "$repo/build-fw" "$repo/build"; do
+  for d in "$repo/build/release" "$repo/build-fw" "$repo/build"; do
     if [[ -x $d/firmware_sim/firmware-sim ]]; then MINRT_BUILD_DIR=$d; break; fi
   done
 fi
