@@ -92,6 +92,22 @@ inline bool equals_nocase(const char* s, int n, const char* word) {
   return i == n && word[i] == 0;
 }
 
+// The signed decimal exponent after 'e' or 'p' (the whole rest of the
+// token), added to `e`. Saturates far beyond any finite result.
+inline bool parse_exponent(const char* s, int n, int& e) {
+  int i = 0;
+  bool neg = false;
+  if (i < n && (s[i] == '+' || s[i] == '-')) neg = s[i++] == '-';
+  if (i == n) return false;
+  long x = 0;
+  for (; i < n; ++i) {
+    if (s[i] < '0' || s[i] > '9') return false;
+    if (x < 1000000) x = x * 10 + (s[i] - '0');
+  }
+  e += static_cast<int>(neg ? -x : x);
+  return true;
+}
+
 // Hexadecimal float ("0x1.8p3"), which OCaml's float_of_string accepts.
 template <class R>
 NumberStatus parse_hex_magnitude(const char* s, int n, typename IeeeFormat<R>::Bits& out) {
@@ -116,18 +132,8 @@ NumberStatus parse_hex_magnitude(const char* s, int n, typename IeeeFormat<R>::B
   }
   if (digits == 0) return NumberStatus::kInvalid;
   if (i < n) {
-    if (s[i] != 'p' && s[i] != 'P') return NumberStatus::kInvalid;
-    ++i;
-    bool neg = false;
-    if (i < n && (s[i] == '+' || s[i] == '-')) neg = s[i++] == '-';
-    if (i == n) return NumberStatus::kInvalid;
-    long x = 0;
-    for (; i < n; ++i) {
-      const int d = digit_value(s[i]);
-      if (d < 0 || d > 9) return NumberStatus::kInvalid;
-      if (x < 100000) x = x * 10 + d;
-    }
-    e += static_cast<int>(neg ? -x : x);
+    if ((s[i] != 'p' && s[i] != 'P') || !parse_exponent(s + i + 1, n - i - 1, e))
+      return NumberStatus::kInvalid;
   }
   out = round_to_format<R>(m, e, sticky);
   return NumberStatus::kOk;
@@ -153,17 +159,8 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
   }
   if (digits == 0) return NumberStatus::kInvalid;
   if (i < n) {
-    if (s[i] != 'e' && s[i] != 'E') return NumberStatus::kInvalid;
-    ++i;
-    bool neg = false;
-    if (i < n && (s[i] == '+' || s[i] == '-')) neg = s[i++] == '-';
-    if (i == n) return NumberStatus::kInvalid;
-    long x = 0;
-    for (; i < n; ++i) {
-      if (s[i] < '0' || s[i] > '9') return NumberStatus::kInvalid;
-      if (x < 1000000) x = x * 10 + (s[i] - '0');
-    }
-    exp10 += static_cast<int>(neg ? -x : x);
+    if ((s[i] != 'e' && s[i] != 'E') || !parse_exponent(s + i + 1, n - i - 1, exp10))
+      return NumberStatus::kInvalid;
   }
   out = 0;
   if (d.is_zero()) return NumberStatus::kOk;
