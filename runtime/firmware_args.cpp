@@ -82,6 +82,16 @@ bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic
         bad_value(error, arg, argv[i]).text("a count of polls (0: wait forever)");
         return false;
       }
+    } else if (equal(arg, "--protocol=raw")) {
+      options.protocol = Protocol::kRaw;
+    } else if (equal(arg, "--protocol=course")) {
+      options.protocol = Protocol::kCourse;
+    } else if (equal(arg, "--protocol=framed")) {
+      options.protocol = Protocol::kFramed;
+    } else if (equal(arg, "--endian=little")) {
+      options.big_endian = false;
+    } else if (equal(arg, "--endian=big")) {
+      options.big_endian = true;
     } else if (equal(arg, "--footprint")) {
       options.footprint = true;
     } else {

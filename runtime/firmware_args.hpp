@@ -5,6 +5,9 @@
 //   --format p3|p6     PPM flavour
 //   --idle-polls N     empty UART polls that end the input (0: never)
 //   --footprint        render, discard the image and print the memory report
+//   --protocol=raw|course|framed   serial protocol (default raw), see
+//                      docs/host-send.md; framed always renders P6 rows
+//   --endian=little|big  byte order of the course protocol's words
 //
 // Defaults are build-time settings (MINRT_FW_DEFAULT_* in runtime/CMakeLists.txt).
 #pragma once
@@ -26,11 +29,15 @@
 
 namespace minrt::fw {
 
+enum class Protocol { kRaw, kCourse, kFramed };
+
 struct FirmwareOptions {
   RenderOptions render{MINRT_FW_DEFAULT_WIDTH, MINRT_FW_DEFAULT_HEIGHT,
                        MINRT_FW_DEFAULT_P6 ? PpmFormat::kP6 : PpmFormat::kP3};
   uint32_t idle_polls;
   bool footprint = false;
+  Protocol protocol = Protocol::kRaw;
+  bool big_endian = false;  // course words
 };
 
 // Fills `options` from argv[1..argc-1]; on a usage error returns false with

@@ -11,7 +11,7 @@ int SerialInput::next() {
   for (uint32_t idle = 0;;) {
     if (uart_.rx_ready()) {
       const uint8_t byte = uart_.rx();
-      if (byte != MINRT_END_OF_INPUT) return byte;
+      if (binary_ || byte != MINRT_END_OF_INPUT) return byte;
       break;
     }
     if (idle_polls_ != 0 && ++idle >= idle_polls_) break;

@@ -16,7 +16,10 @@ namespace minrt::fw {
 
 class SerialInput {
  public:
-  SerialInput(Ns16550 uart, uint32_t idle_polls) : uart_(uart), idle_polls_(idle_polls) {}
+  // `binary`: MINRT_END_OF_INPUT is an ordinary byte (course words, framed
+  // frames); only the idle count ends the input.
+  SerialInput(Ns16550 uart, uint32_t idle_polls, bool binary = false)
+      : uart_(uart), idle_polls_(idle_polls), binary_(binary) {}
 
   ByteSource source() { return ByteSource{&read_fn, this}; }
   bool ended() const { return ended_; }
@@ -27,6 +30,7 @@ class SerialInput {
 
   Ns16550 uart_;
   uint32_t idle_polls_;
+  bool binary_;
   bool ended_ = false;
 };
 

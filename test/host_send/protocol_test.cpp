@@ -248,3 +248,49 @@ TEST_CASE("framed mode reports a plain error line from a board that does not fra
   CHECK_THAT(r.err, Catch::Contains("the board reported an error: 1:1:"));
   CHECK_FALSE(hs_test::file_exists(dir.file("x.ppm")));
 }
+
+TEST_CASE("course and framed end to end against firmware-sim running the firmware", "[e2e][course][framed][firmware]") {
+  if (!hs_test::firmware_available()) {
+    WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
+    return;
+  }
+  hs_test::TempDir dir;
+  for (const char* proto : {"course", "framed"}) {
+    for (const char* format : {"p3", "p6"}) {
+      for (const char* endian : {"little", "big"}) {
+        if (std::string(proto) == "framed" && std::string(endian) == "big") continue;
+        const std::string out = dir.file(std::string(proto) + format + endian + ".ppm");
+        std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
+                                      "--protocol", proto, "--size", "32x32", "--format", format, ball(), "-o", out};
+        if (std::string(proto) == "course") {
+          argv.insert(argv.end(), {"--endian", endian, "--program", ball()});
+        }
+        const auto r = hs_test::run(argv);
+        INFO(proto << " " << format << " " << endian << "\n" << r.err);
+        REQUIRE(r.status == 0);
+        CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "32x32", format));
+      }
+    }
+  }
+}
+
+TEST_CASE("course and framed scene errors from the firmware", "[e2e][course][framed][firmware][bad]") {
+  if (!hs_test::firmware_available()) {
+    WARN("skipped: firmware-sim or the firmware ELF not built");
+    return;
+  }
+  hs_test::TempDir dir;
+  const std::string bad = hs_test::shared_dir() + "/bad/nan-value.sld";
+  const std::string bad2 = hs_test::shared_dir() + "/bad/too-many-objects.sld";
+  for (const char* proto : {"course", "framed"}) {
+    for (const auto& scene : {bad, bad2}) {
+      const std::string out = dir.file("x.ppm");
+      const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--protocol",
+                                   proto, "--size", "16x16", scene, "-o", out, "--first-byte-timeout", "20"});
+      INFO(proto << " " << scene << "\n" << r.err);
+      CHECK(r.status == 3);
+      CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
+      CHECK_FALSE(hs_test::file_exists(out));
+    }
+  }
+}
