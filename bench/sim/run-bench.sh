@@ -6,7 +6,7 @@
 #   bench/sim/run-bench.sh [--sim PATH] [--runs N]
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
-sim=$root/build-sim/firmware_sim/firmware-sim
+sim=$root/build/release/firmware_sim/firmware-sim
 runs=3
 while [ $# -gt 0 ]; do
   case $1 in
