@@ -274,6 +274,23 @@ TEST_CASE("course and framed end to end against firmware-sim running the firmwar
   }
 }
 
+TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", "[e2e][course][firmware]") {
+  if (!hs_test::firmware_available()) {
+    WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
+    return;
+  }
+  hs_test::TempDir dir;
+  for (const char* baud : {"115200", "921600", "3000000"}) {
+    const std::string out = dir.file(std::string("course-") + baud + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
+                                 "--protocol", "course", "--baud", baud, "--size", "24x16", "--format", "p6",
+                                 "--program", ball(), ball(), "-o", out});
+    INFO(baud << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "24x16", "p6"));
+  }
+}
+
 TEST_CASE("course and framed scene errors from the firmware", "[e2e][course][framed][firmware][bad]") {
   if (!hs_test::firmware_available()) {
     WARN("skipped: firmware-sim or the firmware ELF not built");
