@@ -9,7 +9,14 @@ if [[ $# -lt 1 || $1 == -h || $1 == --help ]]; then
   sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'
   exit 2
 fi
-"$root/scripts/setup.sh" >&2
+# Set-up and build output go to a log; shown only when they fail.
+log=$(mktemp)
+if ! "$root/scripts/setup.sh" >"$log" 2>&1; then
+  cat "$log" >&2
+  echo "render: set-up or build failed (log above)" >&2
+  exit 1
+fi
+rm -f "$log"
 bin=$root/build/release
 if [[ -x $bin/host/send/host-send ]]; then
   exec "$bin/host/send/host-send" "$@"
