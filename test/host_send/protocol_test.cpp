@@ -193,25 +193,31 @@ TEST_CASE("the scene collector needs every chunk in order", "[framed]") {
   CHECK(too_large);
 }
 
-TEST_CASE("course and framed end to end against the stand-in board", "[e2e][course][framed]") {
+// Course (both byte orders) and framed, P3 and P6, through `sim_binary`
+// running `board`: each image must equal the host's float/portable render.
+static void check_course_and_framed(const std::string& sim_binary, const std::string& board, const std::string& size) {
   hs_test::TempDir dir;
   for (const char* proto : {"course", "framed"}) {
     for (const char* format : {"p3", "p6"}) {
       for (const char* endian : {"little", "big"}) {
         if (std::string(proto) == "framed" && std::string(endian) == "big") continue;
         const std::string out = dir.file(std::string(proto) + format + endian + ".ppm");
-        std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_STANDIN, "--sim", HS_STANDIN, "--protocol", proto,
-                                      "--size", "32x24", "--format", format, ball(), "-o", out};
+        std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", sim_binary, "--sim", board, "--protocol", proto,
+                                      "--size", size, "--format", format, ball(), "-o", out};
         if (std::string(proto) == "course") {
           argv.insert(argv.end(), {"--endian", endian, "--program", ball()});
         }
         const auto r = hs_test::run(argv);
         INFO(proto << " " << format << " " << endian << "\n" << r.err);
         REQUIRE(r.status == 0);
-        CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "32x24", format));
+        CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), size, format));
       }
     }
   }
+}
+
+TEST_CASE("course and framed end to end against the stand-in board", "[e2e][course][framed]") {
+  check_course_and_framed(HS_STANDIN, HS_STANDIN, "32x24");
 }
 
 TEST_CASE("course and framed report scene errors", "[e2e][course][framed][bad]") {
@@ -254,24 +260,7 @@ TEST_CASE("course and framed end to end against firmware-sim running the firmwar
     WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
     return;
   }
-  hs_test::TempDir dir;
-  for (const char* proto : {"course", "framed"}) {
-    for (const char* format : {"p3", "p6"}) {
-      for (const char* endian : {"little", "big"}) {
-        if (std::string(proto) == "framed" && std::string(endian) == "big") continue;
-        const std::string out = dir.file(std::string(proto) + format + endian + ".ppm");
-        std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
-                                      "--protocol", proto, "--size", "32x32", "--format", format, ball(), "-o", out};
-        if (std::string(proto) == "course") {
-          argv.insert(argv.end(), {"--endian", endian, "--program", ball()});
-        }
-        const auto r = hs_test::run(argv);
-        INFO(proto << " " << format << " " << endian << "\n" << r.err);
-        REQUIRE(r.status == 0);
-        CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "32x32", format));
-      }
-    }
-  }
+  check_course_and_framed(HS_FIRMWARE_SIM, HS_FIRMWARE_ELF, "32x32");
 }
 
 TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", "[e2e][course][firmware]") {
