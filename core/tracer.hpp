@@ -47,17 +47,18 @@ class Tracer {
   static constexpr int kDirvecsPerGroup = 120;
   static constexpr int kMaxReflections = 3;  // see setup_reflections
   static constexpr int kMaxDepth = 5;        // reflection levels 0..4
+  // Direction tables: the diffuse groups, then the light, then the mirrors.
+  static constexpr int kLightDirvec = kDirvecGroups * kDirvecsPerGroup;
+  static constexpr int kDirvecCount = kLightDirvec + 1 + kMaxReflections;
 
   // Arena bytes needed to render `scene` at image width `width`.
   static size_t arena_bytes(const Scene<R>& scene, int width) {
-    const size_t dirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
-    return Arena::footprint<R>(dirvecs * consts_total(scene)) + pixel_line_bytes(width);
+    return Arena::footprint<R>(size_t{kDirvecCount} * consts_total(scene)) + pixel_line_bytes(width);
   }
 
   // Arena bytes that suffice for any valid scene at this width.
   static constexpr size_t max_arena_bytes(int width) {
-    const size_t dirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
-    return Arena::footprint<R>(dirvecs * limits::kMaxObjects * 6) + pixel_line_bytes(width);
+    return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * 6) + pixel_line_bytes(width);
   }
 
   // The three rows of per-pixel state the diffuse pass works on.
@@ -79,16 +80,15 @@ class Tracer {
     n_reflections_ = 0;
 
     const int stride = consts_total(scene);
-    const size_t ndirvecs = kDirvecGroups * kDirvecsPerGroup + 1 + kMaxReflections;
-    R* consts = arena.alloc_zeroed<R>(ndirvecs * stride);
+    R* consts = arena.alloc_zeroed<R>(size_t{kDirvecCount} * stride);
     Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<size_t>(width));
     if (consts == nullptr || pixels == nullptr) return false;
     for (int g = 0; g < kDirvecGroups; ++g)
       for (int i = 0; i < kDirvecsPerGroup; ++i)
         dirvecs_[g][i].c = consts + (g * kDirvecsPerGroup + i) * stride;
-    light_dirvec_.c = consts + (kDirvecGroups * kDirvecsPerGroup) * stride;
+    light_dirvec_.c = consts + kLightDirvec * stride;
     for (int r = 0; r < kMaxReflections; ++r)
-      reflections_[r].dvec.c = consts + (kDirvecGroups * kDirvecsPerGroup + 1 + r) * stride;
+      reflections_[r].dvec.c = consts + (kLightDirvec + 1 + r) * stride;
     for (int l = 0; l < 3; ++l) lines_[l] = pixels + l * width;
 
     init_dirvecs();
