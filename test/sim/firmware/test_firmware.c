@@ -114,7 +114,12 @@ int main(int argc, char **argv) {
   if (streq(mode, "ebreak")) __asm__ volatile("ebreak");
   if (streq(mode, "ecall")) __asm__ volatile("ecall");
   if (streq(mode, "load-fault")) return *(volatile int *)0x40000000;
-  if (streq(mode, "misaligned")) return *(volatile int *)((char *)argv[1] + 1);
+  if (streq(mode, "misaligned")) {
+    /* An aligned word plus one: argv strings have no fixed alignment (they
+       follow argv[0], the ELF's path), so they cannot serve as the base. */
+    static volatile int words[2];
+    return *(volatile int *)((volatile char *)words + 1);
+  }
   if (streq(mode, "counters")) {
     unsigned c0, i0, c1, i1, t;
     __asm__ volatile("rdcycle %0\n rdinstret %1" : "=r"(c0), "=r"(i0));
