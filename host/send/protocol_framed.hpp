@@ -186,6 +186,7 @@ class SceneCollector {
   }
   const uint8_t* data() const { return buf_; }
   size_t size() const { return size_; }
+  size_t capacity() const { return cap_; }
 
  private:
   uint8_t* buf_;

@@ -174,16 +174,10 @@ int main(int argc, char** argv) {
     standin::Link link{&board, [](void* c, uint8_t* p, size_t n) { return static_cast<Board*>(c)->read_exact(p, n); },
                        [](void* c, const uint8_t* p, size_t n) { static_cast<Board*>(c)->put(p, n); },
                        board.fd};
-    standin::RenderFn render = [&](minrt::ByteSource src, minrt::ByteSink out, std::string& message) {
-      error = minrt::Diagnostic{};
-      const minrt::RenderStatus s = render_from(src, out);
-      if (s != minrt::RenderStatus::kOk) {
-        message.clear();
-        if (error.has_pos) message += std::to_string(error.pos.line) + ":" + std::to_string(error.pos.col) + ": ";
-        message += error.message;
-        return false;
-      }
-      return true;
+    standin::RenderFn render = [&](minrt::ByteSource src, minrt::ByteSink out, minrt::Diagnostic& err) {
+      err = minrt::Diagnostic{};
+      return minrt::host::render_variant(variant, src, out, options, err, minrt::WarningSink{}) ==
+             minrt::RenderStatus::kOk;
     };
     bool ok = false;
     if (protocol == "course") {

@@ -1,13 +1,14 @@
-// The stand-in board's course and framed protocol loops, built on the
-// shared protocol code in host/send/protocol_{course,framed}.hpp.
+// The stand-in board's course and framed protocols: the board side the
+// firmware runs too (host/send/protocol_{course,framed}_board.hpp) over the
+// stand-in's pty.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <string>
 
 #include "byte_io.hpp"
+#include "diagnostic.hpp"
 #include "render.hpp"
 
 namespace standin {
@@ -19,8 +20,8 @@ struct Link {
   int fd;
 };
 
-// Renders the SLD text from `in` to `out`; false with the message on error.
-using RenderFn = std::function<bool(minrt::ByteSource in, minrt::ByteSink out, std::string& message)>;
+// Renders the SLD text from `in` to `out`; false with the reason in `error`.
+using RenderFn = std::function<bool(minrt::ByteSource in, minrt::ByteSink out, minrt::Diagnostic& error)>;
 
 bool serve_course(Link& link, const RenderFn& render, bool big_endian);
 bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderFn& render);

@@ -1,0 +1,86 @@
+// Course protocol, board side: the two stages as the firmware (runtime/)
+// and the stand-in board (test/host_send) both run them. Freestanding like
+// protocol_course.hpp: no heap, no exceptions, <stdint.h>/<stddef.h> only.
+//
+//   stage 1  send 0x99, read the program (u32 length + bytes)
+//   stage 2  send 0xaa, render the scene words; an error goes out as one
+//            MINRT_ERROR_MARKER line
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <minrt/serial_protocol.h>
+
+#include "byte_io.hpp"
+#include "diagnostic.hpp"
+#include "protocol_course.hpp"
+
+namespace minrt::send::course {
+
+// MINRT_ERROR_MARKER, "LINE:COL: " when the error has a position, the
+// message, '\n' (the raw protocol's error line).
+inline void write_error_line(ByteSink out, const Diagnostic& error) {
+  Diagnostic where;
+  if (error.has_pos) where.number(error.pos.line).text(":").number(error.pos.col).text(": ");
+  const char marker[] = MINRT_ERROR_MARKER;
+  out.put(reinterpret_cast<const uint8_t*>(marker), sizeof marker - 1);
+  out.put(reinterpret_cast<const uint8_t*>(where.message), static_cast<size_t>(where.length));
+  out.put(reinterpret_cast<const uint8_t*>(error.message), static_cast<size_t>(error.length));
+  out.put(reinterpret_cast<const uint8_t*>("\n"), 1);
+}
+
+enum class ProgramResult { kReceived, kNoLength, kTooLarge, kCut };
+
+// Stage 1: sends 0x99 and reads the program length, then the bytes into
+// `dest` (nullptr: read and dropped). A length above `capacity` is refused
+// before any program byte is read. On failure the error line has been sent
+// and `error` holds its text.
+inline ProgramResult receive_program(ByteSource in, ByteSink out, Endian endian, uint8_t* dest, uint32_t capacity,
+                                     uint32_t& length, Diagnostic& error) {
+  out.put(&kProgramRequest, 1);
+  uint8_t len[4];
+  for (uint8_t& b : len) {
+    const int c = in.get();
+    if (c < 0) {
+      error.text("course: no program size from the host");
+      write_error_line(out, error);
+      return ProgramResult::kNoLength;
+    }
+    b = static_cast<uint8_t>(c);
+  }
+  length = get_u32(len, endian);
+  if (length > capacity) {
+    error.text("course: program of ")
+        .number(length)
+        .text(" bytes does not fit the board's ")
+        .number(capacity)
+        .text("-byte program region");
+    write_error_line(out, error);
+    return ProgramResult::kTooLarge;
+  }
+  for (uint32_t i = 0; i < length; ++i) {
+    const int c = in.get();
+    if (c < 0) {
+      error.text("course: program ended early, ").number(length - i).text(" of ").number(length).text(" bytes missing");
+      write_error_line(out, error);
+      return ProgramResult::kCut;
+    }
+    if (dest != nullptr) dest[i] = static_cast<uint8_t>(c);
+  }
+  return ProgramResult::kReceived;
+}
+
+// Stage 2: sends 0xaa and hands `render` the scene words as SLD text
+// (SceneTextSource). `render(ByteSource scene)` returns false with the
+// reason in `error`, which then goes out as the error line.
+template <class Render>
+bool serve_scene(ByteSource in, ByteSink out, Endian endian, Render&& render, Diagnostic& error) {
+  out.put(&kSceneRequest, 1);
+  SceneTextSource text(in, endian);
+  if (render(text.source())) return true;
+  write_error_line(out, error);
+  return false;
+}
+
+}  // namespace minrt::send::course
