@@ -4,6 +4,7 @@
  * already below its argument block (firmware_sim/boot_args.hpp); anything
  * else (QEMU -M virt: a0 = hart id, a1 = device tree) gets the linker
  * script's stack and main(0, NULL), i.e. the build-time defaults. */
+#include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
 
 #include "firmware_layout.h"
@@ -20,6 +21,13 @@ _start:
   fscsr zero             /* round to nearest even, no flags */
 #endif
 
+  /* Handoff from the course boot loader (memory_map.h): a5 when a4 holds
+   * the magic, kept in s4 until .bss is cleared. */
+  li s4, 0
+  li t0, MINRT_PROGRAM_HANDOFF_MAGIC
+  bne a4, t0, 0f
+  mv s4, a5
+0:
   li t0, MINRT_FW_BOOT_MAGIC
   beq a3, t0, 1f
   la sp, __stack_top
@@ -53,6 +61,8 @@ _start:
 5:
   la t0, minrt_initial_sp   /* where the stack starts, for the footprint */
   sw sp, 0(t0)
+  la t0, minrt_program_handoff
+  sw s4, 0(t0)
   /* Stack: fill up to sp with the pattern for the high-water report. */
   la t0, __stack_bottom
   li t1, MINRT_FW_STACK_PATTERN

@@ -1,7 +1,11 @@
 /* Linker script of the firmware, preprocessed with `clang -E -P -x c` so the
  * addresses come from include/minrt/memory_map.h and firmware_layout.h.
  * One RAM region; the ELF loader (firmware-sim, QEMU -kernel) puts every
- * section at its final address. */
+ * section at its final address.
+ *
+ * With -DMINRT_LINK_PROGRAM the image starts at MINRT_PROGRAM_LOAD_ADDR
+ * instead: a program for the course protocol's boot stage, uploaded as the
+ * flat binary of .text/.rodata/.data (llvm-objcopy -O binary). */
 #include <minrt/memory_map.h>
 #include "firmware_layout.h"
 
@@ -18,9 +22,15 @@
 OUTPUT_ARCH(riscv)
 ENTRY(_start)
 
+#ifdef MINRT_LINK_PROGRAM
+#define MINRT_IMAGE_BASE MINRT_PROGRAM_LOAD_ADDR
+#else
+#define MINRT_IMAGE_BASE MINRT_RAM_BASE
+#endif
+
 MEMORY
 {
-  RAM (rwx) : ORIGIN = MINRT_RAM_BASE, LENGTH = MINRT_RAM_DEFAULT_SIZE
+  RAM (rwx) : ORIGIN = MINRT_IMAGE_BASE, LENGTH = MINRT_RAM_BASE + MINRT_RAM_DEFAULT_SIZE - MINRT_IMAGE_BASE
 }
 
 SECTIONS
@@ -66,6 +76,13 @@ SECTIONS
   __stack_bottom = __stack_top - MINRT_FW_STACK_SIZE;
   __arena_end = __stack_bottom;
   ASSERT(__arena_end > __arena_start, "the image leaves no room for the arena and the stack")
+#ifdef MINRT_LINK_PROGRAM
+  ASSERT(__data_end - ORIGIN(RAM) <= MINRT_PROGRAM_MAX_SIZE, "the program's code and data exceed MINRT_PROGRAM_MAX_SIZE")
+#else
+  /* The boot stage writes an uploaded program there while it runs. */
+  ASSERT(__bss_end <= MINRT_PROGRAM_LOAD_ADDR, "the resident image reaches into the program region")
+  ASSERT(MINRT_PROGRAM_LOAD_ADDR + MINRT_PROGRAM_MAX_SIZE <= __stack_bottom, "the program region reaches the stack")
+#endif
 
   /DISCARD/ : { *(.eh_frame .eh_frame_hdr .comment .note .note.*) }
 }

@@ -4,19 +4,22 @@
 // a non-zero status, which crt0 hands to the test finisher.
 //
 // --protocol=course and --protocol=framed run the board side of host-send's
-// other two protocols (docs/host-send.md) with the shared code in
-// host/send/protocol_{course,framed}.hpp, as the stand-in board in
-// test/host_send/standin_protocols.cpp does on the host.
+// other two protocols (docs/host-send.md) with the code the stand-in board
+// in test/host_send runs too: host/send/protocol_{course,framed}_board.hpp.
+// The course protocol's first stage is a boot loader: an uploaded program
+// is loaded and started instead of this renderer.
+#include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
 
 #include "diagnostic.hpp"
 #include "firmware_args.hpp"
 #include "footprint.hpp"
 #include "math_portable.hpp"
-#include "protocol_course.hpp"
-#include "protocol_framed.hpp"
 #include "math_rv32f.hpp"
 #include "ns16550.hpp"
+#include "program_loader.hpp"
+#include "protocol_course_board.hpp"
+#include "protocol_framed_board.hpp"
 #include "render.hpp"
 #include "serial_stream.hpp"
 
@@ -34,22 +37,10 @@ using Math = minrt::PortableFloat;
 // The scene and the tracer's tables: static, so their size shows in .bss.
 minrt::RenderState<Math> g_state;
 
+// The raw protocol's error line (the course protocol's too).
 void send_error(minrt::fw::Ns16550 uart, const minrt::Diagnostic& error) {
-  minrt::Diagnostic where;
-  if (error.has_pos)
-    where.number(error.pos.line).text(":").number(error.pos.col).text(": ");
-  uart.write(MINRT_ERROR_MARKER);
-  uart.write(where.message);
-  uart.write(error.message);
-  uart.write("\n");
-}
-
-// The error as "line:col: message" (what send_error puts after the marker).
-minrt::Diagnostic error_text(const minrt::Diagnostic& error) {
-  minrt::Diagnostic text;
-  if (error.has_pos) text.number(error.pos.line).text(":").number(error.pos.col).text(": ");
-  text.text(error.message);
-  return text;
+  minrt::fw::SerialOutput link(uart, false);
+  minrt::send::course::write_error_line(link.sink(), error);
 }
 
 int status_of(minrt::RenderStatus status) {
@@ -62,120 +53,84 @@ int status_of(minrt::RenderStatus status) {
   return MINRT_STATUS_SCENE_ERROR;
 }
 
-// Course protocol: 0x99, program size and bytes (read and discarded: this
-// firmware is already the program), 0xaa, then the scene as 4-byte words
-// that SceneTextSource turns back into SLD text for the usual reader. The
-// image and errors go out as in the raw protocol.
-int serve_course(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
-                 minrt::Diagnostic& error) {
+// Course protocol (host/send/protocol_course_board.hpp). Stage 1, the boot
+// stage: 0x99, then the program. Length 0 means "no program": this image
+// renders. Otherwise the program is loaded at MINRT_PROGRAM_LOAD_ADDR and
+// started there (program_loader.hpp); a program started that way (this
+// renderer linked for the region, say) finds the handoff and skips stage 1.
+// Stage 2: 0xaa, then the scene words, rendered as in the raw protocol.
+int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw::FirmwareOptions& options,
+                 minrt::Arena& arena, minrt::Diagnostic& error) {
   using namespace minrt::send::course;
-  const Endian endian = options.big_endian ? Endian::kBig : Endian::kLittle;
+  const uint32_t handoff = minrt::fw::program_handoff();
+  const bool loaded = (handoff & MINRT_PROGRAM_LOADED) != 0;
+  const bool big = loaded ? (handoff & MINRT_PROGRAM_BIG_ENDIAN) != 0 : options.big_endian;
+  const Endian endian = big ? Endian::kBig : Endian::kLittle;
   minrt::fw::SerialInput input(uart, options.idle_polls, /*binary=*/true);
-  minrt::ByteSource in = input.source();
-  uart.tx(kProgramRequest);
-  uint8_t len[4];
-  for (uint8_t& b : len) {
-    const int c = in.get();
-    if (c < 0) {
-      error.text("course: no program size from the host");
-      send_error(uart, error);
-      return MINRT_STATUS_SCENE_ERROR;
-    }
-    b = static_cast<uint8_t>(c);
+  const minrt::ByteSource in = input.source();
+  minrt::fw::SerialOutput link(uart, false);
+  const minrt::ByteSink out = link.sink();
+  if (!loaded) {
+    const minrt::fw::ProgramRegion region = minrt::fw::program_region();
+    uint32_t length = 0;
+    if (receive_program(in, out, endian, region.base, region.capacity, length, error) != ProgramResult::kReceived)
+      return MINRT_STATUS_BAD_PROGRAM;
+    if (length > 0) minrt::fw::start_program(argc, argv, big);
   }
-  for (uint32_t left = get_u32(len, endian); left > 0; --left) {
-    if (in.get() < 0) {
-      error.text("course: program ended early, ").number(static_cast<int64_t>(left)).text(" bytes missing");
-      send_error(uart, error);
-      return MINRT_STATUS_SCENE_ERROR;
-    }
-  }
-  uart.tx(kSceneRequest);
-  SceneTextSource text(in, endian);
-  minrt::fw::SerialOutput output(uart, options.footprint);
-  const minrt::RenderStatus status =
-      minrt::render_sld<Math>(text.source(), output.sink(), options.render, g_state, arena, error);
-  if (status != minrt::RenderStatus::kOk) {
-    send_error(uart, error);
-    return status_of(status);
-  }
-  if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
+  minrt::fw::SerialOutput image(uart, options.footprint);
+  minrt::RenderStatus status = minrt::RenderStatus::kOk;
+  const bool ok = serve_scene(
+      in, out, endian,
+      [&](minrt::ByteSource scene) {
+        status = minrt::render_sld<Math>(scene, image.sink(), options.render, g_state, arena, error);
+        return status == minrt::RenderStatus::kOk;
+      },
+      error);
+  if (!ok) return status_of(status);
+  if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), image.bytes());
   return MINRT_STATUS_OK;
 }
 
-// Framed protocol: collects the SLD text from S/E frames (answering K, N or
-// X), renders P6 into a RowFramer that sends H and one D frame per row and
-// keeps the rows in a store from the arena, sends Z, then answers Q
-// requests until F (or until the line stays idle).
+// Framed protocol (host/send/protocol_framed_board.hpp): the frame and
+// scene buffers and a 3*W*H-byte row store come from the arena (without
+// room for the store the rows are sent once but Q cannot be answered); the
+// scene renders as P6 into the RowFramer.
 constexpr size_t kFramedPayload = 4096;
 constexpr size_t kFramedScene = 64 * 1024;
-
-void send_frame_text(minrt::ByteSink out, uint8_t type, const minrt::Diagnostic& text) {
-  minrt::send::framed::write_frame(out, type, 0, reinterpret_cast<const uint8_t*>(text.message),
-                                   static_cast<uint16_t>(text.length));
-}
 
 int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
                  minrt::Diagnostic& error) {
   using namespace minrt::send::framed;
   minrt::fw::SerialInput input(uart, options.idle_polls, /*binary=*/true);
-  minrt::ByteSource in = input.source();
   minrt::fw::SerialOutput link(uart, false);
   const minrt::ByteSink out = link.sink();
   uint8_t* payload = arena.alloc_zeroed<uint8_t>(kFramedPayload);
   uint8_t* scene = arena.alloc_zeroed<uint8_t>(kFramedScene);
   if (payload == nullptr || scene == nullptr) {
     error.text("framed: no room for the frame and scene buffers");
-    send_frame_text(out, kError, error);
+    write_error_frame(out, error);
     return MINRT_STATUS_OUT_OF_MEMORY;
-  }
-  FrameParser parser(payload, kFramedPayload);
-  SceneCollector collector(scene, kFramedScene);
-  for (bool complete = false; !complete;) {
-    const int c = in.get();
-    if (c < 0) {
-      error.text("framed: the scene did not arrive");
-      send_frame_text(out, kError, error);
-      return MINRT_STATUS_SCENE_ERROR;
-    }
-    if (parser.feed(static_cast<uint8_t>(c)) != FrameParser::kFrame) continue;
-    switch (collector.frame(parser)) {
-      case SceneCollector::kComplete:
-        write_frame(out, kAck, 0, nullptr, 0);
-        complete = true;
-        break;
-      case SceneCollector::kDamaged:
-        write_frame(out, kNak, 0, nullptr, 0);
-        break;
-      case SceneCollector::kTooLarge:
-        error.text("scene larger than the board's ").number(static_cast<int64_t>(kFramedScene)).text("-byte buffer");
-        send_frame_text(out, kError, error);
-        return MINRT_STATUS_SCENE_ERROR;
-      case SceneCollector::kMore:
-        break;
-    }
   }
   minrt::RenderOptions render = options.render;
   render.format = minrt::PpmFormat::kP6;  // rows travel as binary RGB
   const size_t store_size = static_cast<size_t>(render.width) * static_cast<size_t>(render.height) * 3;
   uint8_t* store = arena.alloc_zeroed<uint8_t>(store_size);
-  // Static: its one-row spill buffer is too big for the stack. Without a
-  // store the rows are still sent once, but Q cannot be answered.
+  FrameParser parser(payload, kFramedPayload);
+  SceneCollector collector(scene, kFramedScene);
+  // Static: its one-row spill buffer is too big for the stack.
   static RowFramer framer(out, store, store == nullptr ? 0 : store_size);
-  minrt::MemorySource src{collector.data(), collector.size()};
-  const minrt::RenderStatus status = minrt::render_sld<Math>(src.source(), framer.sink(), render, g_state, arena, error);
-  if (status != minrt::RenderStatus::kOk) {
-    send_frame_text(out, kError, error_text(error));
-    return status_of(status);
-  }
-  framer.send_end();
-  for (;;) {
-    const int c = in.get();
-    if (c < 0) return MINRT_STATUS_OK;
-    if (parser.feed(static_cast<uint8_t>(c)) != FrameParser::kFrame) continue;
-    if (parser.type() == kRequest) framer.answer_request(parser);
-    else if (parser.type() == kFinished) return MINRT_STATUS_OK;
-    else if (parser.type() == kSceneEnd) write_frame(out, kAck, 0, nullptr, 0);
+  minrt::RenderStatus status = minrt::RenderStatus::kOk;
+  const BoardResult result = serve_board(
+      input.source(), out, parser, collector, framer,
+      [&](minrt::ByteSource src, minrt::ByteSink rows) {
+        status = minrt::render_sld<Math>(src, rows, render, g_state, arena, error);
+        return status == minrt::RenderStatus::kOk;
+      },
+      error);
+  switch (result) {
+    case BoardResult::kDone: return MINRT_STATUS_OK;
+    case BoardResult::kRenderFailed: return status_of(status);
+    default: return MINRT_STATUS_SCENE_ERROR;
   }
 }
 
@@ -198,7 +153,8 @@ extern "C" int main(int argc, char** argv) {
 
   const minrt::fw::ArenaRegion region = minrt::fw::arena_region();
   minrt::Arena arena(region.base, region.size);
-  if (options.protocol == minrt::fw::Protocol::kCourse) return serve_course(uart, options, arena, error);
+  if (options.protocol == minrt::fw::Protocol::kCourse || (minrt::fw::program_handoff() & MINRT_PROGRAM_LOADED) != 0)
+    return serve_course(uart, argc, argv, options, arena, error);
   if (options.protocol == minrt::fw::Protocol::kFramed) return serve_framed(uart, options, arena, error);
   minrt::fw::SerialInput input(uart, options.idle_polls);
   minrt::fw::SerialOutput output(uart, options.footprint);

@@ -39,5 +39,8 @@
 #define MINRT_STATUS_SCENE_ERROR 2   /* the SLD input was rejected */
 #define MINRT_STATUS_OUT_OF_MEMORY 3 /* the scene does not fit the arena */
 #define MINRT_STATUS_TRAP 4          /* unexpected CPU exception */
+#define MINRT_STATUS_BAD_PROGRAM 8   /* course boot stage: the uploaded program is
+                                        larger than the program region (memory_map.h)
+                                        or ended early */
 
 #endif
