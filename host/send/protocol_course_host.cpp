@@ -1,7 +1,11 @@
 #include "protocol_course_host.hpp"
 
+#include <poll.h>
+#include <unistd.h>
+
 #include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -80,6 +84,43 @@ bool wait_for(Exchange& ex, uint8_t want, int timeout_ms, PpmReceiver& rx, Trans
   return false;
 }
 
+// Sends the program's length and bytes while listening: a board that
+// refuses the program (too large for its program region) answers at once
+// and may stop reading, and its error line must not sit unread behind a
+// blocked write. Returns false with `r` set on a link error; true when all
+// is sent or the board spoke first (wait_for then reads what it said).
+bool send_program(Exchange& ex, const std::string& out, TransferResult& r) {
+  using Clock = std::chrono::steady_clock;
+  const int fd = ex.port.fd();
+  std::size_t sent = 0;
+  auto last_tx = Clock::now();
+  while (sent < out.size()) {
+    if (g_interrupted) {
+      r.message = "interrupted";
+      return false;
+    }
+    pollfd p{fd, POLLIN | POLLOUT, 0};
+    ::poll(&p, 1, 100);
+    if (p.revents & (POLLIN | POLLHUP | POLLERR)) return true;
+    if (p.revents & POLLOUT) {
+      const ssize_t n = ::write(fd, out.data() + sent, out.size() - sent);
+      if (n > 0) {
+        sent += static_cast<std::size_t>(n);
+        last_tx = Clock::now();
+      } else if (n < 0 && errno != EAGAIN && errno != EINTR) {
+        r.message = "cannot send the program: " + std::string(std::strerror(errno));
+        return false;
+      }
+    }
+    if (Clock::now() - last_tx > std::chrono::milliseconds(ex.timeouts.idle_ms)) {
+      r.message = "the board stopped reading the program (" + std::to_string(sent) + " of " +
+                  std::to_string(out.size()) + " bytes sent)";
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 TransferResult run_course(Exchange& ex, const std::string& scene_text, const std::string& program,
@@ -97,10 +138,7 @@ TransferResult run_course(Exchange& ex, const std::string& scene_text, const std
   std::string out(4, '\0');
   course::put_u32(reinterpret_cast<uint8_t*>(out.data()), static_cast<uint32_t>(program.size()), endian);
   out += program;
-  if (!ex.port.write_all(out.data(), out.size(), ex.timeouts.idle_ms)) {
-    r.message = "cannot send the program: " + std::string(std::strerror(errno));
-    return r;
-  }
+  if (!send_program(ex, out, r)) return r;
   if (!wait_for(ex, course::kSceneRequest, options.handshake_timeout_ms, rx, r, "0xaa (scene request)")) return r;
   r = exchange(ex, words, rx);
   r.sent += out.size();
