@@ -134,10 +134,7 @@ TEST_CASE("every bad scene ends with the stand-in's error, status 3 and no image
 }
 
 TEST_CASE("host-send and firmware-sim give the bytes of minrt float/portable", "[e2e][firmware]") {
-  if (!hs_test::firmware_available()) {
-    WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
-    return;
-  }
+  HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
   for (const char* baud : {"115200", "921600", "3000000"}) {
     for (const char* format : {"p3", "p6"}) {
@@ -152,10 +149,7 @@ TEST_CASE("host-send and firmware-sim give the bytes of minrt float/portable", "
 }
 
 TEST_CASE("every bad scene through firmware-sim ends with the firmware's error", "[e2e][firmware][bad]") {
-  if (!hs_test::firmware_available()) {
-    WARN("skipped: firmware-sim or the firmware ELF not built");
-    return;
-  }
+  HS_NEEDS_FIRMWARE();
   check_bad_scenes([](const std::string& scene, const std::string& out) {
     return run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--size", "16x16", "--format",
                 "p6", scene, "-o", out});

@@ -195,7 +195,9 @@ TEST_CASE("the scene collector needs every chunk in order", "[framed]") {
 
 // Course (both byte orders) and framed, P3 and P6, through `sim_binary`
 // running `board`: each image must equal the host's float/portable render.
-static void check_course_and_framed(const std::string& sim_binary, const std::string& board, const std::string& size) {
+// `program` is sent in course mode ("" sends none: the firmware renders).
+static void check_course_and_framed(const std::string& sim_binary, const std::string& board, const std::string& size,
+                                    const std::string& program) {
   hs_test::TempDir dir;
   for (const char* proto : {"course", "framed"}) {
     for (const char* format : {"p3", "p6"}) {
@@ -205,7 +207,8 @@ static void check_course_and_framed(const std::string& sim_binary, const std::st
         std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", sim_binary, "--sim", board, "--protocol", proto,
                                       "--size", size, "--format", format, ball(), "-o", out};
         if (std::string(proto) == "course") {
-          argv.insert(argv.end(), {"--endian", endian, "--program", ball()});
+          argv.insert(argv.end(), {"--endian", endian});
+          if (!program.empty()) argv.insert(argv.end(), {"--program", program});
         }
         const auto r = hs_test::run(argv);
         INFO(proto << " " << format << " " << endian << "\n" << r.err);
@@ -217,7 +220,7 @@ static void check_course_and_framed(const std::string& sim_binary, const std::st
 }
 
 TEST_CASE("course and framed end to end against the stand-in board", "[e2e][course][framed]") {
-  check_course_and_framed(HS_STANDIN, HS_STANDIN, "32x24");
+  check_course_and_framed(HS_STANDIN, HS_STANDIN, "32x24", ball());  // the stand-in drops the program
 }
 
 TEST_CASE("course and framed report scene errors", "[e2e][course][framed][bad]") {
@@ -256,24 +259,18 @@ TEST_CASE("framed mode reports a plain error line from a board that does not fra
 }
 
 TEST_CASE("course and framed end to end against firmware-sim running the firmware", "[e2e][course][framed][firmware]") {
-  if (!hs_test::firmware_available()) {
-    WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
-    return;
-  }
-  check_course_and_framed(HS_FIRMWARE_SIM, HS_FIRMWARE_ELF, "32x32");
+  HS_NEEDS_FIRMWARE();
+  check_course_and_framed(HS_FIRMWARE_SIM, HS_FIRMWARE_ELF, "32x32", "");
 }
 
 TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", "[e2e][course][firmware]") {
-  if (!hs_test::firmware_available()) {
-    WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built");
-    return;
-  }
+  HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
   for (const char* baud : {"115200", "921600", "3000000"}) {
     const std::string out = dir.file(std::string("course-") + baud + ".ppm");
     const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
                                  "--protocol", "course", "--baud", baud, "--size", "24x16", "--format", "p6",
-                                 "--program", ball(), ball(), "-o", out});
+                                 ball(), "-o", out});
     INFO(baud << "\n" << r.err);
     REQUIRE(r.status == 0);
     CHECK(hs_test::read_file(out) == hs_test::reference_image(ball(), "24x16", "p6"));
@@ -281,10 +278,7 @@ TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", 
 }
 
 TEST_CASE("course and framed scene errors from the firmware", "[e2e][course][framed][firmware][bad]") {
-  if (!hs_test::firmware_available()) {
-    WARN("skipped: firmware-sim or the firmware ELF not built");
-    return;
-  }
+  HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
   const std::string bad = hs_test::shared_dir() + "/bad/nan-value.sld";
   const std::string bad2 = hs_test::shared_dir() + "/bad/too-many-objects.sld";

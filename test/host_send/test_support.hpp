@@ -34,6 +34,15 @@ void start_standin(minrt::send::SimLauncher& board, const std::string& size, con
                    const std::string& protocol = "raw");
 
 bool firmware_available();
+// Ends the test case with a warning when firmware-sim or the firmware is
+// not built (ctest then shows it passed vacuously, as for missing data).
+#define HS_NEEDS_FIRMWARE()                                                                    \
+  do {                                                                                         \
+    if (!hs_test::firmware_available()) {                                                      \
+      WARN("skipped: firmware-sim (" HS_FIRMWARE_SIM ") or firmware (" HS_FIRMWARE_ELF ") not built"); \
+      return;                                                                                  \
+    }                                                                                          \
+  } while (0)
 std::string shared_dir();
 std::vector<std::string> bad_scenes();
 
