@@ -1,5 +1,6 @@
-// A damaged line (tools/fault_relay): framed mode delivers the exact image
-// in every seeded run; raw mode notices the damage and writes nothing.
+// A damaged line (tools/fault_relay) to the stand-in board and to the
+// firmware in firmware-sim: framed mode delivers the exact image in every
+// seeded run; raw mode notices the damage and writes nothing.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -13,12 +14,26 @@ namespace {
 
 std::string ball() { return hs_test::shared_dir() + "/scenes/ball.sld"; }
 
+enum class Board { kStandin, kFirmware };
+
 struct DamagedLine {
   minrt::send::SimLauncher board, relay;
   std::string port;  // where host-send connects
 
-  DamagedLine(const std::string& protocol, const std::vector<std::string>& faults) {
-    hs_test::start_standin(board, "32x32", "p6", protocol);
+  DamagedLine(Board who, const std::string& protocol, const std::vector<std::string>& faults) {
+    if (who == Board::kStandin) {
+      hs_test::start_standin(board, "32x32", "p6", protocol);
+    } else {
+      // firmware-sim with the firmware on its own pty. --idle-polls 0: a
+      // damaged line has silences far longer than the default count of
+      // empty polls (a fraction of a second in the simulator).
+      minrt::send::SimConfig cfg;
+      cfg.simulator = HS_FIRMWARE_SIM;
+      cfg.firmware = HS_FIRMWARE_ELF;
+      cfg.firmware_args = {"--size", "32x32", "--format", "p6", "--protocol=" + protocol, "--idle-polls", "0"};
+      std::string err;
+      REQUIRE(board.start(cfg, err));
+    }
     std::string err;
     minrt::send::SimConfig r;
     r.exact_args = {HS_FAULT_RELAY};
@@ -32,6 +47,61 @@ struct DamagedLine {
     board.stop(3000);
   }
 };
+
+// Six seeded runs of drops, flips, duplicates, delays and stalls (both
+// ways in the last two): framed mode must deliver the exact image each time.
+void check_framed_over_damage(Board who) {
+  const std::string ref = hs_test::reference_image(ball(), "32x32", "p6");
+  hs_test::TempDir dir;
+  for (int seed = 1; seed <= 6; ++seed) {
+    std::vector<std::string> faults{"--seed",  std::to_string(seed), "--drop", "0.002", "--flip", "0.002", "--dup",
+                                    "0.002",   "--stall",            "0.0005", "--stall-ms", "200", "--delay", "0.001"};
+    if (seed > 4) faults.push_back("--both-ways");
+    DamagedLine line(who, "framed", faults);
+    const std::string out = dir.file("f" + std::to_string(seed) + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", "framed", "--size", "32x32",
+                                 "--format", "p6", ball(), "-o", out, "--idle-timeout", "20"});
+    INFO("seed " << seed << "\n" << r.err << line.relay.output());
+    REQUIRE(r.status == 0);
+    CHECK(hs_test::read_file(out) == ref);
+  }
+}
+
+// Byte losses, duplicates, a damaged header, and stalls longer than the
+// idle timeout: raw mode either got the exact image or fails with status 1
+// and writes nothing. (A flipped pixel byte cannot be seen by raw mode;
+// that is what --expect-sha256 and the framed protocol are for.)
+void check_raw_over_damage(Board who) {
+  const std::string ref = hs_test::reference_image(ball(), "32x32", "p6");
+  hs_test::TempDir dir;
+  int detected = 0;
+  const std::vector<std::vector<std::string>> runs = {
+      {"--drop", "0.003"},  {"--drop", "0.01"},   {"--dup", "0.003"},
+      {"--dup", "0.01"},    {"--flip", "0.5"},
+      {"--stall", "0.002", "--stall-ms", "1500"},
+  };
+  int seed = 0;
+  for (const auto& f : runs) {
+    ++seed;
+    std::vector<std::string> faults{"--seed", std::to_string(seed)};
+    faults.insert(faults.end(), f.begin(), f.end());
+    DamagedLine line(who, "raw", faults);
+    const std::string out = dir.file("r" + std::to_string(seed) + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--size", "32x32", "--format", "p6", ball(), "-o",
+                                 out, "--idle-timeout", "1"});
+    INFO("run " << seed << "\n" << r.err << line.relay.output());
+    if (r.status == 0) {
+      CHECK(hs_test::read_file(out) == ref);  // the faults missed the image
+    } else {
+      ++detected;
+      CHECK(r.status == 1);
+      CHECK_FALSE(hs_test::file_exists(out));
+      CHECK_THAT(r.err, Catch::Contains("truncated") || Catch::Contains("header") || Catch::Contains("idle") ||
+                            Catch::Contains("unexpected") || Catch::Contains("image is") || Catch::Contains("magic"));
+    }
+  }
+  CHECK(detected >= 5);
+}
 
 }  // namespace
 
@@ -58,53 +128,19 @@ TEST_CASE("the fault model is repeatable and roughly at its rates", "[fault]") {
 }
 
 TEST_CASE("framed mode delivers the exact image over a damaged line", "[fault][framed]") {
-  const std::string ref = hs_test::reference_image(ball(), "32x32", "p6");
-  hs_test::TempDir dir;
-  for (int seed = 1; seed <= 6; ++seed) {
-    std::vector<std::string> faults{"--seed",  std::to_string(seed), "--drop", "0.002", "--flip", "0.002", "--dup",
-                                    "0.002",   "--stall",            "0.0005", "--stall-ms", "200", "--delay", "0.001"};
-    if (seed > 4) faults.push_back("--both-ways");
-    DamagedLine line("framed", faults);
-    const std::string out = dir.file("f" + std::to_string(seed) + ".ppm");
-    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", "framed", "--size", "32x32",
-                                 "--format", "p6", ball(), "-o", out, "--idle-timeout", "20"});
-    INFO("seed " << seed << "\n" << r.err << line.relay.output());
-    REQUIRE(r.status == 0);
-    CHECK(hs_test::read_file(out) == ref);
-  }
+  check_framed_over_damage(Board::kStandin);
 }
 
 TEST_CASE("raw mode reports a damaged line instead of writing a wrong image", "[fault][raw]") {
-  const std::string ref = hs_test::reference_image(ball(), "32x32", "p6");
-  hs_test::TempDir dir;
-  int detected = 0;
-  // Byte losses, duplicates, a damaged header, and stalls longer than the
-  // idle timeout. (A flipped pixel byte cannot be seen by raw mode; that is
-  // what --expect-sha256 and the framed protocol are for.)
-  const std::vector<std::vector<std::string>> runs = {
-      {"--drop", "0.003"},  {"--drop", "0.01"},   {"--dup", "0.003"},
-      {"--dup", "0.01"},    {"--flip", "0.5"},
-      {"--stall", "0.002", "--stall-ms", "1500"},
-  };
-  int seed = 0;
-  for (const auto& f : runs) {
-    ++seed;
-    std::vector<std::string> faults{"--seed", std::to_string(seed)};
-    faults.insert(faults.end(), f.begin(), f.end());
-    DamagedLine line("raw", faults);
-    const std::string out = dir.file("r" + std::to_string(seed) + ".ppm");
-    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--size", "32x32", "--format", "p6", ball(), "-o",
-                                 out, "--idle-timeout", "1"});
-    INFO("run " << seed << "\n" << r.err << line.relay.output());
-    if (r.status == 0) {
-      CHECK(hs_test::read_file(out) == ref);  // the faults missed the image
-    } else {
-      ++detected;
-      CHECK(r.status == 1);
-      CHECK_FALSE(hs_test::file_exists(out));
-      CHECK_THAT(r.err, Catch::Contains("truncated") || Catch::Contains("header") || Catch::Contains("idle") ||
-                            Catch::Contains("unexpected") || Catch::Contains("image is") || Catch::Contains("magic"));
-    }
-  }
-  CHECK(detected >= 5);
+  check_raw_over_damage(Board::kStandin);
+}
+
+TEST_CASE("framed mode delivers the firmware's exact image over a damaged line", "[fault][framed][firmware]") {
+  HS_NEEDS_FIRMWARE();
+  check_framed_over_damage(Board::kFirmware);
+}
+
+TEST_CASE("raw mode from the firmware over a damaged line never writes a wrong image", "[fault][raw][firmware]") {
+  HS_NEEDS_FIRMWARE();
+  check_raw_over_damage(Board::kFirmware);
 }
