@@ -27,12 +27,17 @@ uint64_t parse_count(const std::string& opt, const std::string& v, bool allow_su
 
 const char* cli_help_text() {
   return "usage: firmware-sim [OPTIONS] ELF [-- ARGS...]\n"
+         "       firmware-sim [--fpu-model FILE] [--fpu KEY=VALUE,...] --fpu-check\n"
          "Runs a bare-metal RV32IMF ELF; exits with the firmware's exit code.\n"
          "  --uart-in FILE         UART input from FILE (default stdin)\n"
          "  --uart-out FILE        UART output to FILE (default stdout)\n"
          "  --pty                  UART on a new pseudo-terminal (path printed on stderr)\n"
          "  --baud N               pace the UART at N baud, 8N1, in simulated time\n"
          "  --cycle-model FILE     cycle model file ('default' = built-in model)\n"
+         "  --fpu-model FILE       FPU model file (approximate div/sqrt, truncation...)\n"
+         "  --fpu KEY=VALUE,...    FPU model settings, applied after --fpu-model\n"
+         "  --fpu-check            measure the FPU model against the course's error rules\n"
+         "                         (exit 0 if every op meets them, 1 if one misses)\n"
          "  --profile-out FILE     per-function profile in callgrind format\n"
          "  --folded-out FILE      folded call stacks (cycles) for flame graphs\n"
          "  --max-instructions N   stop with an error after N instructions\n"
@@ -64,6 +69,9 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     else if (a == "--pty") o.pty = true;
     else if (a == "--baud") o.baud = parse_count(a, value(a), false);
     else if (a == "--cycle-model") o.cycle_model = value(a);
+    else if (a == "--fpu-model") o.fpu_model = value(a);
+    else if (a == "--fpu") o.fpu_settings.push_back(value(a));
+    else if (a == "--fpu-check") o.fpu_check = true;
     else if (a == "--profile-out") o.profile_out = value(a);
     else if (a == "--folded-out") o.folded_out = value(a);
     else if (a == "--max-instructions") o.max_instructions = parse_count(a, value(a), false);
@@ -79,6 +87,10 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     else throw UsageError("unexpected argument '" + a + "' (firmware arguments go after --)");
   }
   if (o.help || o.version) return o;
+  if (o.fpu_check) {
+    if (!o.elf.empty()) throw UsageError("--fpu-check runs no firmware: drop '" + o.elf + "'");
+    return o;
+  }
   if (o.elf.empty()) throw UsageError("missing ELF file");
   if (o.pty && (!o.uart_in.empty() || !o.uart_out.empty()))
     throw UsageError("--pty cannot be combined with --uart-in/--uart-out");

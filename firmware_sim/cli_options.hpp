@@ -15,6 +15,9 @@ struct CliOptions {
   bool pty = false;
   uint64_t baud = 0;              // 0 = no pacing
   std::string cycle_model;        // file, or "default"
+  std::string fpu_model;          // FPU model file; empty = IEEE
+  std::vector<std::string> fpu_settings;  // --fpu lists, applied in order after the file
+  bool fpu_check = false;         // measure the FPU model's error instead of running an ELF
   std::string profile_out, folded_out;
   uint64_t max_instructions = 0;  // 0 = unlimited
   uint32_t ram_size = 0;          // 0 = MINRT_RAM_DEFAULT_SIZE

@@ -16,6 +16,7 @@
 #include "decoder.hpp"
 #include "disassembler.hpp"
 #include "fpu.hpp"
+#include "fpu_approx.hpp"
 #include "host_fma.hpp"
 #include "machine.hpp"
 
@@ -108,7 +109,36 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     kLabelsRne[static_cast<int>(Op::FCVT_S_WU)] = &&R_FCVT_S_WU;
     rne_table_ready = true;
   }
-  const void* const* labels = hart_.frm == fpu::RNE ? kLabelsRne : kLabels;
+  // With an FPU model, the ops it replaces dispatch to the M_ handlers in
+  // both tables; the IEEE tables and handlers stay untouched.
+  constexpr size_t kOpCount = sizeof kLabels / sizeof kLabels[0];
+  const void* model_labels[kOpCount];
+  const void* model_labels_rne[kOpCount];
+  const void* const* labels_any = kLabels;
+  const void* const* labels_rne = kLabelsRne;
+  const FpuApprox* const approx = fpu_model_;
+  if (approx) {
+    std::memcpy(model_labels, kLabels, sizeof kLabels);
+    std::memcpy(model_labels_rne, kLabelsRne, sizeof kLabels);
+    // A macro, not a lambda: with the label addresses passed through a
+    // lambda, GCC -O2 left fdiv.s on the IEEE handler (the tests catch it).
+#define ROUTE(op, handler) \
+  model_labels[static_cast<int>(op)] = model_labels_rne[static_cast<int>(op)] = (handler)
+    if (approx->models_add()) {
+      ROUTE(Op::FADD_S, &&M_FADD_S);
+      ROUTE(Op::FSUB_S, &&M_FSUB_S);
+    }
+    if (approx->models_mul()) ROUTE(Op::FMUL_S, &&M_FMUL_S);
+    if (approx->models_div()) ROUTE(Op::FDIV_S, &&M_FDIV_S);
+    if (approx->models_sqrt()) ROUTE(Op::FSQRT_S, &&M_FSQRT_S);
+#undef ROUTE
+    labels_any = model_labels;
+    labels_rne = model_labels_rne;
+  }
+  // Indexed by "frm is RNE"; kept in memory so the hot loop spends no
+  // registers on it (only CSR instructions read it).
+  const void* const* const dispatch_tables[2] = {labels_any, labels_rne};
+  const void* const* labels = dispatch_tables[hart_.frm == fpu::RNE];
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
   uint64_t cycles = hart_.cycles;  // timed variant only
@@ -242,7 +272,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     if (!csr_.access(hart_, static_cast<unsigned>(ip->imm) & 0xfff, op, operand, write, old)) \
       FAULT(StopCause::IllegalInstruction, 0);                                          \
     RD = old;                                                                           \
-    labels = hart_.frm == fpu::RNE ? kLabelsRne : kLabels;                              \
+    labels = dispatch_tables[hart_.frm == fpu::RNE];                                    \
     NEXT();                                                                             \
   } while (0)
   // Effective rounding mode; reserved modes are illegal instructions.
@@ -294,7 +324,22 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     NEXT();                                                                              \
   } while (0)
 
+  // FPU-model handlers: the rounding-mode field is still checked (reserved
+  // modes stay illegal); the model decides what it does with the mode.
+#define FP_MODEL(expr)            \
+  do {                            \
+    ROUNDING(rm);                 \
+    f[ip->rd] = (expr);           \
+    NEXT();                       \
+  } while (0)
+
   DISPATCH();
+
+M_FADD_S: FP_MODEL(approx->add(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+M_FSUB_S: FP_MODEL(approx->sub(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+M_FMUL_S: FP_MODEL(approx->mul(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+M_FDIV_S: FP_MODEL(approx->div(f[ip->rs1], f[ip->rs2], rm, hart_.fflags));
+M_FSQRT_S: FP_MODEL(approx->sqrt(f[ip->rs1], rm, hart_.fflags));
 
 R_FADD_S: FP_RNE(L_FADD_S, a + b);
 R_FSUB_S: FP_RNE(L_FSUB_S, a - b);
@@ -527,6 +572,7 @@ out:
 #undef FP_FUSED
 #undef FP_RNE
 #undef FP_RNE_FUSED
+#undef FP_MODEL
 }
 
 template StopInfo Machine::run_loop<true>(uint64_t);

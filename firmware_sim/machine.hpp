@@ -15,6 +15,8 @@
 
 namespace fwsim {
 
+class FpuApprox;
+
 class Machine {
  public:
   explicit Machine(uint32_t ram_size) : bus_(ram_size), code_(ram_size) {}
@@ -31,6 +33,9 @@ class Machine {
   }
   void set_profiler(Profiler* p) { profiler_ = p; }
   void set_trace(std::FILE* out) { trace_ = out; }
+  // Null (the default) = exact IEEE arithmetic; otherwise the model's
+  // arithmetic for the ops it replaces (fpu_approx.hpp).
+  void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
 
   // Runs from hart().pc until the firmware stops, faults, or more than
   // `max_instructions` (total, counted from reset) have retired.
@@ -48,6 +53,7 @@ class Machine {
   CycleModel* model_ = nullptr;
   Profiler* profiler_ = nullptr;
   std::FILE* trace_ = nullptr;
+  const FpuApprox* fpu_model_ = nullptr;
 };
 
 }  // namespace fwsim

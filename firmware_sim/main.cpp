@@ -14,6 +14,9 @@
 #include "cli_options.hpp"
 #include "disassembler.hpp"
 #include "elf_loader.hpp"
+#include "fpu_approx.hpp"
+#include "fpu_check.hpp"
+#include "fpu_model_config.hpp"
 #include "machine.hpp"
 #include "profile_writers.hpp"
 #include "pty_backend.hpp"
@@ -50,9 +53,9 @@ int open_file(const std::string& path, int flags) {
   return fd;
 }
 
-std::string read_text(const std::string& path) {
+std::string read_text(const std::string& path, const char* what) {
   std::ifstream in(path);
-  if (!in) die(kExitUsage, path + ": cannot read cycle model");
+  if (!in) die(kExitUsage, path + ": cannot read " + what);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
@@ -82,12 +85,28 @@ int run(const std::vector<std::string>& argv) {
     return 0;
   }
 
+  FpuModelConfig fpu_cfg;
+  try {
+    if (!opt.fpu_model.empty()) fpu_cfg = parse_fpu_model(read_text(opt.fpu_model, "FPU model"), opt.fpu_model);
+    for (const std::string& list : opt.fpu_settings) apply_fpu_settings(fpu_cfg, list);
+  } catch (const std::runtime_error& e) {
+    die(kExitUsage, e.what());
+  }
+  if (opt.fpu_check) {
+    const FpuCheckReport report = check_fpu_model(fpu_cfg);
+    print_fpu_check(report, stdout);
+    return report.all_meet() ? 0 : 1;
+  }
+  // Only a non-IEEE model changes the interpreter's dispatch.
+  std::unique_ptr<FpuApprox> fpu_model;
+  if (!fpu_cfg.is_ieee()) fpu_model = std::make_unique<FpuApprox>(fpu_cfg);
+
   std::unique_ptr<CycleModel> model;
   CycleModelConfig model_cfg = default_cycle_model();
   const bool timed = !opt.cycle_model.empty() || !opt.profile_out.empty() || !opt.folded_out.empty();
   try {
     if (!opt.cycle_model.empty() && opt.cycle_model != "default")
-      model_cfg = parse_cycle_model(read_text(opt.cycle_model), opt.cycle_model);
+      model_cfg = parse_cycle_model(read_text(opt.cycle_model, "cycle model"), opt.cycle_model);
   } catch (const std::runtime_error& e) {
     die(kExitUsage, e.what());
   }
@@ -128,6 +147,7 @@ int run(const std::vector<std::string>& argv) {
   m.set_cycle_model(model.get());
   m.set_profiler(profiler.get());
   if (opt.trace) m.set_trace(stderr);
+  m.set_fpu_model(fpu_model.get());
 
   const double cpu0 = cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
@@ -157,7 +177,7 @@ int run(const std::vector<std::string>& argv) {
                  std::chrono::duration<double, std::micro>(t1 - t0).count(), (cpu1 - cpu0) * 1e6,
                  model.get(), model_cfg,
                  opt.cycle_model.empty() ? (timed ? "default" : "none") : opt.cycle_model,
-                 uart.bytes_out(), uart.bytes_in(), opt.baud, profiler.get()};
+                 uart.bytes_out(), uart.bytes_in(), opt.baud, profiler.get(), describe(fpu_cfg)};
     print_stats(s, stderr);
   }
   return exit_status(stop);

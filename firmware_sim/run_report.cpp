@@ -33,6 +33,7 @@ void print_stats(const RunSummary& s, std::FILE* out) {
                s.cpu_us > 0 ? s.instructions / s.cpu_us : 0.0);
   std::fprintf(out, "cycle model: %s%s\n", s.model_name.c_str(),
                s.model ? "" : " (1 cycle per instruction; use --cycle-model for timing)");
+  std::fprintf(out, "fpu model: %s\n", s.fpu_model.c_str());
   const double hz = static_cast<double>(s.model_cfg.clock_hz);
   std::fprintf(out, "CPI: %.3f\n", s.instructions ? static_cast<double>(s.cycles) / s.instructions : 0.0);
   const double cpu_s = s.cycles / hz;

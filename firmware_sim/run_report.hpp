@@ -24,6 +24,7 @@ struct RunSummary {
   std::string model_name;
   uint64_t uart_out, uart_in, baud;
   const Profiler* profiler;
+  std::string fpu_model;  // describe(FpuModelConfig)
 };
 
 // First three lines are the contract: instructions, cycles, host MIPS.
