@@ -223,21 +223,28 @@ TEST_CASE("course and framed end to end against the stand-in board", "[e2e][cour
   check_course_and_framed(HS_STANDIN, HS_STANDIN, "32x24", ball());  // the stand-in drops the program
 }
 
-TEST_CASE("course and framed report scene errors", "[e2e][course][framed][bad]") {
+// Two bad scenes in course and framed mode through `sim_binary` running
+// `board`: the board's error (status 3), no image.
+static void check_scene_errors(const std::string& sim_binary, const std::string& board) {
   hs_test::TempDir dir;
   const std::string bad = hs_test::shared_dir() + "/bad/nan-value.sld";
   const std::string bad2 = hs_test::shared_dir() + "/bad/too-many-objects.sld";
   for (const char* proto : {"course", "framed"}) {
     for (const auto& scene : {bad, bad2}) {
       const std::string out = dir.file("x.ppm");
-      const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_STANDIN, "--sim", HS_STANDIN, "--protocol", proto,
+      const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", sim_binary, "--sim", board, "--protocol", proto,
                                    "--size", "16x16", scene, "-o", out, "--first-byte-timeout", "20"});
       INFO(proto << " " << scene << "\n" << r.err);
       CHECK(r.status == 3);
-      CHECK_THAT(r.err, Catch::Contains("error"));
+      CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
       CHECK_FALSE(hs_test::file_exists(out));
     }
   }
+}
+
+TEST_CASE("course and framed report scene errors", "[e2e][course][framed][bad]") {
+  check_scene_errors(HS_STANDIN, HS_STANDIN);
+  hs_test::TempDir dir;
   // Truncated scenes are caught by the course converter before sending.
   const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_STANDIN, "--sim", HS_STANDIN, "--protocol", "course",
                                hs_test::shared_dir() + "/bad/truncated-object.sld", "-o", dir.file("y.ppm")});
@@ -279,18 +286,5 @@ TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", 
 
 TEST_CASE("course and framed scene errors from the firmware", "[e2e][course][framed][firmware][bad]") {
   HS_NEEDS_FIRMWARE();
-  hs_test::TempDir dir;
-  const std::string bad = hs_test::shared_dir() + "/bad/nan-value.sld";
-  const std::string bad2 = hs_test::shared_dir() + "/bad/too-many-objects.sld";
-  for (const char* proto : {"course", "framed"}) {
-    for (const auto& scene : {bad, bad2}) {
-      const std::string out = dir.file("x.ppm");
-      const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--protocol",
-                                   proto, "--size", "16x16", scene, "-o", out, "--first-byte-timeout", "20"});
-      INFO(proto << " " << scene << "\n" << r.err);
-      CHECK(r.status == 3);
-      CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
-      CHECK_FALSE(hs_test::file_exists(out));
-    }
-  }
+  check_scene_errors(HS_FIRMWARE_SIM, HS_FIRMWARE_ELF);
 }
