@@ -127,6 +127,7 @@ class Tracer {
   struct DirVec {
     R v[3];
     R* c;
+    uint32_t code;  // direction_code(v)
   };
   // Fields the intersection loops touch come first, to share cache lines.
   struct Object {
@@ -141,6 +142,10 @@ class Tracer {
     int32_t texture, reflection;
     R diffuse, hilight;
     R color[3];
+    // Half-widths of a box around the points is_outside counts as inside;
+    // only for non-inverted boxes and axis-aligned ellipsoids.
+    R slab[3];
+    bool slab_bounded;
   };
   struct Reflection {
     int surface_id;
@@ -280,6 +285,7 @@ class Tracer {
       }
       // original: the rotation is applied to every form, boxes and planes too.
       if (o.rotated != 0) rotate_quadratic_form(o.abc, o.rot);
+      setup_slab(o);
       o.consts_offset = offset;
       o.index = i;
       offset += consts_count(o.form);
@@ -456,6 +462,7 @@ class Tracer {
 
   void setup_dirvec_constants(DirVec& dv) {
     const R* v = dv.v;
+    dv.code = direction_code(v);
     for (int i = n_objects_ - 1; i >= 0; --i) {
       const Object& m = objects_[i];
       R* c = dv.c + m.consts_offset;
@@ -516,6 +523,74 @@ class Tracer {
     }
   }
 
+  // Masks for forward culling from the point given to setup_startp: per
+  // object, per network in each OR row, and for each row the bits all its
+  // networks share (any of them culls the whole row).
+  void setup_forward_culling() {
+    for (int i = 0; i < n_objects_; ++i) {
+      const Object& m = objects_[i];
+      uint32_t mask = 0;
+      if (m.slab_bounded)
+        for (int k = 0; k < 3; ++k)
+          mask |= uint32_t{m.start[k] >= m.slab[k]} << (2 * k) |
+                  uint32_t{m.start[k] <= -m.slab[k]} << (2 * k + 1);
+      object_fwd_[i] = mask;
+    }
+    for (int r = 0; r < n_or_rows_; ++r) {
+      OrRow& row = or_rows_[r];
+      uint32_t all = ~0u;
+      for (int k = 0; row.nets[k] != nullptr; ++k) {
+        uint32_t mask = 0;
+        for (ObjectList e = row.nets[k]; *e != nullptr; ++e) mask |= object_fwd_[(*e)->index];
+        row.fwd[k] = mask;
+        all &= mask;
+      }
+      row.fwd_all = all;
+    }
+  }
+
+  // Forward culling. A ray from the start point along v reaches points q
+  // with fl(q_k - center_k) >= start[k] when v_k >= 0 (rounding is
+  // monotonic), so when start[k] >= slab[k] no such point is inside the
+  // member, and the member's AND network cannot record a hit (record_hit
+  // needs the point inside every member). The same holds mirrored for
+  // v_k <= 0. Bit 2k of a code: v_k >= 0; bit 2k+1: v_k <= 0; a network is
+  // skipped when its mask shares a bit with the ray's code.
+  static uint32_t direction_code(const R* v) {
+    uint32_t c = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (v[k] >= R(0)) c |= 1u << (2 * k);
+      if (v[k] <= R(0)) c |= 2u << (2 * k);
+    }
+    return c;
+  }
+
+  // slab[] for a non-inverted box is its half-widths (|p_k| < abc_k inside).
+  // For an axis-aligned ellipsoid sum abc_k p_k^2 - 1 < 0 inside; every term
+  // is >= 0, so |p_k| >= slab_k with fl(fl(slab_k^2) abc_k) > 1 makes the
+  // rounded sum exceed 1 too: slab_k is checked in the same arithmetic.
+  static void setup_slab(Object& o) {
+    o.slab_bounded = false;
+    if (o.inverted) return;
+    if (o.form == kFormBox) {
+      copy3(o.slab, o.abc);
+      o.slab_bounded = true;
+      return;
+    }
+    if (o.form != kFormQuadric || o.rotated != 0) return;
+    for (int k = 0; k < 3; ++k) {
+      const R a = o.abc[k];
+      if (!(a > R(0)) || !finite(a)) return;
+      R h = R(1.001) / M::sqrt(a);
+      for (int tries = 0; !(sqr(h) * a - R(1.0) > R(0)); ++tries) {
+        if (tries == 8 || !finite(h)) return;
+        h = h * R(1.01);
+      }
+      o.slab[k] = h;
+    }
+    o.slab_bounded = true;
+  }
+
   // --- inside/outside -----------------------------------------------------
 
   MINRT_INLINE static bool is_outside(const Object& m, R q0, R q1, R q2) {
@@ -537,6 +612,8 @@ class Tracer {
   struct OrRow {
     const Object* range;
     ObjectList nets[limits::kMaxOrNetworkLength + 1];
+    uint32_t fwd[limits::kMaxOrNetworkLength];  // see setup_forward_culling
+    uint32_t fwd_all;
   };
 
   void build_networks(const Scene<R>& scene) {
@@ -638,18 +715,25 @@ class Tracer {
     return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
   }
 
+  // kCull: skip the networks forward culling rules out (the masks must be
+  // set up for the current start point).
+  template <bool kCull>
   bool judge_intersection_fast(const DirVec& dv) {
     tmin_ = R(1000000000.0);
+    const uint32_t code = dv.code;
     for (int r = 0; r < n_or_rows_; ++r) {
       const OrRow& row = or_rows_[r];
+      if (kCull && (row.fwd_all & code) != 0) continue;
       if (row.range != nullptr && !(solver_fast2(*row.range, dv) != 0 && solver_dist_ < tmin_))
         continue;
-      for (const ObjectList* a = row.nets; *a != nullptr; ++a) {
-        for (ObjectList e = *a; *e != nullptr; ++e) {
+      for (int k = 0; row.nets[k] != nullptr; ++k) {
+        if (kCull && (row.fwd[k] & code) != 0) continue;
+        const ObjectList net = row.nets[k];
+        for (ObjectList e = net; *e != nullptr; ++e) {
           const Object& m = **e;
           const int t0 = solver_fast2<true>(m, dv);
           if (t0 != 0)
-            record_hit(*a, m, t0, dv.v, startp_fast_);
+            record_hit(net, m, t0, dv.v, startp_fast_);
           else if (!m.inverted)
             break;
         }
@@ -756,7 +840,7 @@ class Tracer {
   void trace_reflections(R diffuse, R hilight_scale, const R* dir) {
     for (int i = n_reflections_ - 1; i >= 0; --i) {
       const Reflection& r = reflections_[i];
-      if (!judge_intersection_fast(r.dvec)) continue;
+      if (!judge_intersection_fast<false>(r.dvec)) continue;
       if (intersected_object_id_ * 4 + intsec_rectside_ != r.surface_id) continue;
       const R p = dot(nvector_, r.dvec.v);
       const R scale = r.bright;
@@ -820,7 +904,7 @@ class Tracer {
   // --- diffuse light ------------------------------------------------------
 
   void trace_diffuse_ray(const DirVec& dv, R energy) {
-    if (!judge_intersection_fast(dv)) return;
+    if (!judge_intersection_fast<true>(dv)) return;
     const Object& obj = objects_[intersected_object_id_];
     get_nvector(obj, dv.v);
     utexture(obj, intersection_point_);
@@ -840,6 +924,7 @@ class Tracer {
   // Samples the 60 directions of one group that face along `normal`.
   void trace_diffuse_rays(const DirVec* group, const R* normal, const R* org) {
     setup_startp(org);
+    setup_forward_culling();
     // Entries 2n and 2n+1 point in opposite directions.
     for (int i = kDirvecsPerGroup - 2; i >= 0; i -= 2) {
       const R p = dot(group[i].v, normal);
@@ -1045,6 +1130,8 @@ class Tracer {
   R rgb_[3] = {};
   R startp_[3] = {};
   R startp_fast_[3] = {};
+
+  uint32_t object_fwd_[limits::kMaxObjects] = {};
 };
 
 }  // namespace minrt
