@@ -123,7 +123,7 @@ class Tracer {
 
  private:
   // Per-direction tables: for each object, the constants its fast solver
-  // needs for rays along `v` (6 for boxes, 4 for planes, 5 otherwise).
+  // needs for rays along `v` (6 for boxes, 4 for planes, 6 otherwise).
   struct DirVec {
     R v[3];
     R* c;
@@ -133,7 +133,7 @@ class Tracer {
   struct Object {
     int32_t form, rotated;
     bool inverted;
-    int consts_offset;
+    int consts_offset;  // in bytes, to save a shift in the ray loops
     int index;
     R abc[3];
     R rot[3];  // after preprocessing: the yz, zx, xy cross-term coefficients
@@ -169,7 +169,7 @@ class Tracer {
   // --- small helpers ------------------------------------------------------
 
   static int consts_count(int32_t form) {
-    return form == kFormBox ? 6 : form == kFormPlane ? 4 : 5;
+    return form == kFormBox ? 6 : form == kFormPlane ? 4 : 6;
   }
   static int consts_total(const Scene<R>& scene) {
     int n = 0;
@@ -286,7 +286,7 @@ class Tracer {
       // original: the rotation is applied to every form, boxes and planes too.
       if (o.rotated != 0) rotate_quadratic_form(o.abc, o.rot);
       setup_slab(o);
-      o.consts_offset = offset;
+      o.consts_offset = offset * static_cast<int>(sizeof(R));
       o.index = i;
       offset += consts_count(o.form);
     }
@@ -404,17 +404,19 @@ class Tracer {
     return 0;
   }
 
+  // The original returns 0 when a = 0; the table holds NaN in c[1] then,
+  // which makes d NaN and fails d > 0 without the extra test.
   // kAheadOnly: the caller only uses a positive distance. For an outward
   // surface with 1/a > 0 and -b' <= 0, (-b' - sqrt(d)) / a is negative, so the
-  // square root is skipped and 0 is reported as the distance.
+  // square root is skipped and 0 is reported as the distance; c[5] is 0 for
+  // such surfaces and NaN (never skip) for the others.
   template <bool kAheadOnly = false>
   MINRT_INLINE int solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc) {
     const R aa = c[0];
-    if (aa == R(0)) return 0;
     const R neg_bb = c[1] * b0 + c[2] * b1 + c[3] * b2;
     const R d = sqr(neg_bb) - aa * cc;
     if (d > R(0)) {
-      if (kAheadOnly && !m.inverted && neg_bb <= R(0) && c[4] > R(0)) {
+      if (kAheadOnly && neg_bb <= c[5]) {
         solver_dist_ = R(0);
         return 1;
       }
@@ -424,12 +426,16 @@ class Tracer {
     return 0;
   }
 
+  static const R* consts_of(const DirVec& dv, const Object& m) {
+    return reinterpret_cast<const R*>(reinterpret_cast<const char*>(dv.c) + m.consts_offset);
+  }
+
   // Ray along dv from an arbitrary point.
   int solver_fast(const Object& m, const DirVec& dv, const R* org) {
     const R b0 = org[0] - m.center[0];
     const R b1 = org[1] - m.center[1];
     const R b2 = org[2] - m.center[2];
-    const R* c = dv.c + m.consts_offset;
+    const R* c = consts_of(dv, m);
     if (m.form == kFormBox) return solve_box_fast(m, dv.v, c, b0, b1, b2);
     if (m.form == kFormPlane) {
       if (c[0] < R(0)) {
@@ -438,7 +444,6 @@ class Tracer {
       }
       return 0;
     }
-    if (c[0] == R(0)) return 0;
     return solve_second_fast(m, c, b0, b1, b2, quadric_constant(m, quadratic(m, b0, b1, b2)));
   }
 
@@ -446,7 +451,7 @@ class Tracer {
   template <bool kAheadOnly = false>
   MINRT_INLINE int solver_fast2(const Object& m, const DirVec& dv) {
     const R* s = m.start;
-    const R* c = dv.c + m.consts_offset;
+    const R* c = consts_of(dv, m);
     if (m.form == kFormBox) return solve_box_fast(m, dv.v, c, s[0], s[1], s[2]);
     if (m.form == kFormPlane) {
       if (c[0] < R(0)) {
@@ -465,7 +470,7 @@ class Tracer {
     dv.code = direction_code(v);
     for (int i = n_objects_ - 1; i >= 0; --i) {
       const Object& m = objects_[i];
-      R* c = dv.c + m.consts_offset;
+      R* c = const_cast<R*>(consts_of(dv, m));
       if (m.form == kFormBox) {
         for (int k = 0; k < 3; ++k) {
           if (v[k] == R(0)) {
@@ -502,6 +507,8 @@ class Tracer {
           c[3] = c3;
         }
         if (aa != R(0)) c[4] = R(1.0) / aa;
+        else c[1] = R(__builtin_nan(""));
+        c[5] = !m.inverted && c[4] > R(0) ? R(0) : R(__builtin_nan(""));
       }
     }
   }
