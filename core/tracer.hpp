@@ -94,6 +94,7 @@ class Tracer {
     init_dirvecs();
     copy3(light_dirvec_.v, light_);
     setup_dirvec_constants(light_dirvec_);
+    setup_shadow_culling();
     setup_reflections(n_objects_ - 1);
     return true;
   }
@@ -616,11 +617,24 @@ class Tracer {
   // primitive (null for none) and null-terminated lists of AND networks:
   // resolved once so the ray loops follow pointers instead of indices.
   using ObjectList = const Object* const*;
+  // Shadow culling. A shadow point is light * t + p with t < -0.19; along
+  // an axis where light_k <= 0 it is >= p_k, rounding included, so once
+  // p_k >= limit with fl(limit - center_k) >= slab_k no shadow point is
+  // inside that member and its network cannot shadow (mirrored where
+  // light_k > 0: the flipped axes). A row is skipped when one axis limit
+  // covers all its networks.
+  struct ShadowLimits {
+    R limit[3];  // NaN: no limit on that axis
+    bool culls(R x0, R x1, R x2) const { return x0 >= limit[0] || x1 >= limit[1] || x2 >= limit[2]; }
+  };
+
   struct OrRow {
     const Object* range;
     ObjectList nets[limits::kMaxOrNetworkLength + 1];
     uint32_t fwd[limits::kMaxOrNetworkLength];  // see setup_forward_culling
     uint32_t fwd_all;
+    ShadowLimits shadow[limits::kMaxOrNetworkLength];  // see setup_shadow_culling
+    ShadowLimits shadow_all;
   };
 
   void build_networks(const Scene<R>& scene) {
@@ -669,16 +683,67 @@ class Tracer {
   }
 
   bool in_shadow() {
+    // The start with each axis signed so that moving towards the light never
+    // decreases it (see setup_shadow_culling).
+    const R* p = intersection_point_;
+    const R x0 = toward_light_flip_[0] ? -p[0] : p[0];
+    const R x1 = toward_light_flip_[1] ? -p[1] : p[1];
+    const R x2 = toward_light_flip_[2] ? -p[2] : p[2];
     for (int r = 0; r < n_or_rows_; ++r) {
       const OrRow& row = or_rows_[r];
+      if (row.shadow_all.culls(x0, x1, x2)) continue;
       if (row.range != nullptr &&
           !(solver_fast(*row.range, light_dirvec_, intersection_point_) != 0 &&
             solver_dist_ < R(-0.1)))
         continue;
-      for (const ObjectList* a = row.nets; *a != nullptr; ++a)
-        if (shadow_and_group(*a)) return true;
+      for (int k = 0; row.nets[k] != nullptr; ++k)
+        if (!row.shadow[k].culls(x0, x1, x2) && shadow_and_group(row.nets[k])) return true;
     }
     return false;
+  }
+
+  void setup_shadow_culling() {
+    const R nan = R(__builtin_nan(""));
+    for (int k = 0; k < 3; ++k) toward_light_flip_[k] = light_[k] > R(0);
+    for (int r = 0; r < n_or_rows_; ++r) {
+      OrRow& row = or_rows_[r];
+      ShadowLimits all{{-nan, -nan, -nan}};
+      bool first = true;
+      for (int n = 0; row.nets[n] != nullptr; ++n) {
+        ShadowLimits& lim = row.shadow[n];
+        lim = ShadowLimits{{nan, nan, nan}};
+        for (ObjectList e = row.nets[n]; *e != nullptr; ++e) {
+          const Object& m = **e;
+          if (!m.slab_bounded) continue;
+          for (int k = 0; k < 3; ++k) {
+            const R x = shadow_limit(m.center[k], m.slab[k], toward_light_flip_[k]);
+            if (!(lim.limit[k] <= x)) lim.limit[k] = x;  // the lowest, NaN replaced
+          }
+        }
+        for (int k = 0; k < 3; ++k) {
+          // NaN (some network unlimited on k) stays NaN.
+          if (first || all.limit[k] < lim.limit[k] || lim.limit[k] != lim.limit[k]) all.limit[k] = lim.limit[k];
+        }
+        first = false;
+      }
+      row.shadow_all = first ? ShadowLimits{{nan, nan, nan}} : all;
+    }
+  }
+
+  // The least x, as far as a coarse search finds, such that every flipped
+  // coordinate >= x is at least `slab` beyond `center` in the rounded
+  // subtraction is_outside does (unflipped: fl(x - c) >= slab; flipped, for
+  // p = -x: fl(p - c) <= -slab). Rounding is monotonic, so checking x
+  // itself covers everything above it. NaN when none is found.
+  static R shadow_limit(R center, R slab, bool flipped) {
+    const R c = flipped ? -center : center;
+    R x = c + slab;
+    for (int tries = 0; tries < 64; ++tries) {
+      const R diff = flipped ? (-x) - center : x - center;
+      if (flipped ? diff <= -slab : diff >= slab) return x;
+      x = x + (fabs(x) + fabs(c) + fabs(slab)) * R(1.0e-6);
+    }
+    return R(__builtin_nan(""));
   }
 
   // --- nearest intersection -----------------------------------------------
@@ -1139,6 +1204,7 @@ class Tracer {
   R startp_fast_[3] = {};
 
   uint32_t object_fwd_[limits::kMaxObjects] = {};
+  bool toward_light_flip_[3] = {};
 };
 
 }  // namespace minrt
