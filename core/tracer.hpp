@@ -147,6 +147,7 @@ class Tracer {
     // only for non-inverted boxes and axis-aligned ellipsoids.
     R slab[3];
     bool slab_bounded;
+    uint32_t fwd;  // forward-culling mask from the current start point
   };
   struct Reflection {
     int surface_id;
@@ -514,6 +515,9 @@ class Tracer {
     }
   }
 
+  // kCull: also the objects' forward-culling masks (the diffuse rays use
+  // them; see direction_code).
+  template <bool kCull = false>
   void setup_startp(const R* p) {
     copy3(startp_fast_, p);
     for (int i = n_objects_ - 1; i >= 0; --i) {
@@ -522,6 +526,13 @@ class Tracer {
       s[0] = p[0] - m.center[0];
       s[1] = p[1] - m.center[1];
       s[2] = p[2] - m.center[2];
+      if (kCull) {
+        uint32_t mask = 0;
+        if (m.slab_bounded)
+          for (int k = 0; k < 3; ++k)
+            mask |= uint32_t{s[k] >= m.slab[k]} << (2 * k) | uint32_t{s[k] <= -m.slab[k]} << (2 * k + 1);
+        m.fwd = mask;
+      }
       if (m.form == kFormPlane) {
         s[3] = dot(m.abc, s[0], s[1], s[2]);
       } else if (m.form > kFormPlane) {
@@ -532,24 +543,15 @@ class Tracer {
   }
 
   // Masks for forward culling from the point given to setup_startp: per
-  // object, per network in each OR row, and for each row the bits all its
-  // networks share (any of them culls the whole row).
+  // network in each OR row, and for each row the bits all its networks
+  // share (any of them culls the whole row).
   void setup_forward_culling() {
-    for (int i = 0; i < n_objects_; ++i) {
-      const Object& m = objects_[i];
-      uint32_t mask = 0;
-      if (m.slab_bounded)
-        for (int k = 0; k < 3; ++k)
-          mask |= uint32_t{m.start[k] >= m.slab[k]} << (2 * k) |
-                  uint32_t{m.start[k] <= -m.slab[k]} << (2 * k + 1);
-      object_fwd_[i] = mask;
-    }
     for (int r = 0; r < n_or_rows_; ++r) {
       OrRow& row = or_rows_[r];
       uint32_t all = ~0u;
       for (int k = 0; row.nets[k] != nullptr; ++k) {
         uint32_t mask = 0;
-        for (ObjectList e = row.nets[k]; *e != nullptr; ++e) mask |= object_fwd_[(*e)->index];
+        for (ObjectList e = row.nets[k]; *e != nullptr; ++e) mask |= (*e)->fwd;
         row.fwd[k] = mask;
         all &= mask;
       }
@@ -975,7 +977,7 @@ class Tracer {
 
   // --- diffuse light ------------------------------------------------------
 
-  void trace_diffuse_ray(const DirVec& dv, R energy) {
+  MINRT_INLINE void trace_diffuse_ray(const DirVec& dv, R energy) {
     if (!judge_intersection_fast<true>(dv)) return;
     const Object& obj = objects_[intersected_object_id_];
     get_nvector(obj, dv.v);
@@ -995,7 +997,7 @@ class Tracer {
 
   // Samples the 60 directions of one group that face along `normal`.
   void trace_diffuse_rays(const DirVec* group, const R* normal, const R* org) {
-    setup_startp(org);
+    setup_startp<true>(org);
     setup_forward_culling();
     // Entries 2n and 2n+1 point in opposite directions.
     for (int i = kDirvecsPerGroup - 2; i >= 0; i -= 2) {
@@ -1203,7 +1205,6 @@ class Tracer {
   R startp_[3] = {};
   R startp_fast_[3] = {};
 
-  uint32_t object_fwd_[limits::kMaxObjects] = {};
   bool toward_light_flip_[3] = {};
 };
 
