@@ -31,7 +31,8 @@ fsqrt sqrt=table-newton,rsqrt_table_bits=11,rsqrt_newton_steps=1
 fsqrt sqrt=table-newton,rsqrt_table_bits=6,rsqrt_newton_steps=2
 fmul mul=truncate
 fadd add=truncate
-fdiv subnormals=flush"
+fdiv subnormals=flush
+fdiv div=recip-mul,subnormals=flush"
 
 echo "| op | \`--fpu\` | max error | rule | result |"
 echo "|---|---|---:|---:|---|"
