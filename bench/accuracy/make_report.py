@@ -34,6 +34,24 @@ MODEL = "float-portable"
 SIZE = 128
 SPEED_SCENE = "contest"
 
+# The rv32imf firmware under FPU models of a course team's unit (firmware-sim
+# --fpu, docs/firmware_sim.md "FPU models"): (name, file tag, --fpu items).
+FPU_VARIANTS = [
+    ("fdiv recip-mul T=10 N=1", "fpu-recip10n1",
+     "div=recip-mul,recip_table_bits=10,recip_newton_steps=1"),
+    ("fdiv recip-mul T=8 N=1", "fpu-recip8n1",
+     "div=recip-mul,recip_table_bits=8,recip_newton_steps=1"),
+    ("fdiv recip-mul T=12 N=0", "fpu-recip12n0",
+     "div=recip-mul,recip_table_bits=12,recip_newton_steps=0"),
+    ("fsqrt table-newton T=11 N=1", "fpu-rsqrt11n1",
+     "sqrt=table-newton,rsqrt_table_bits=11,rsqrt_newton_steps=1"),
+    ("truncating unit", "fpu-truncating",
+     "div=recip-mul,recip_table_bits=10,recip_newton_steps=1,sqrt=table-newton,"
+     "rsqrt_table_bits=11,rsqrt_newton_steps=1,mul=truncate,add=truncate"),
+]
+FPU_ISA = "rv32imf"
+CHECK_OPS = ["fadd", "fsub", "fmul", "fdiv", "fsqrt"]
+
 
 def read_ppm(path):
     """P3 or P6 (maxval 255) as an HxWx3 uint8 array."""
@@ -67,27 +85,30 @@ def render(tool, scene, outdir):
     return scene, r.returncode, r.stderr
 
 
-def firmware_command(sim, elf, scene, outfile):
-    return [sim, "--stats", "--cycle-model", "default", "--uart-in", scene, "--uart-out",
-            outfile, elf, "--", "--size", f"{SIZE}x{SIZE}", "--format", "p6"]
+def firmware_command(sim, elf, scene, outfile, options):
+    return [sim, "--stats", *options, "--uart-in", scene, "--uart-out", outfile, elf, "--",
+            "--size", f"{SIZE}x{SIZE}", "--format", "p6"]
 
 
-def firmware_cache_key(sim, elf, scene):
-    """Hash of everything a firmware run depends on: simulator, ELF, scene, arguments."""
+def firmware_cache_key(sim, elf, scene, options, files):
+    """Hash of everything a firmware run depends on: simulator, ELF, scene, options and
+    the contents of the files they name (a cycle model)."""
     h = hashlib.sha256()
-    for path in (sim, elf, scene):
+    for path in (sim, elf, scene, *files):
         h.update(open(path, "rb").read())
-    h.update(" ".join(firmware_command("", "", "", "")).encode())
+    h.update(" ".join(firmware_command("", "", "", "", options)).encode())
     return h.hexdigest()[:32]
 
 
-def run_firmware(sim, elf, scene, outfile, cache_dir):
-    """(instructions, modelled cycles, from cache?) of one firmware run, output kept.
+def run_firmware(sim, elf, scene, outfile, cache_dir, options=("--cycle-model", "default"),
+                 files=()):
+    """--stats figures of one firmware run, output kept: {"instructions", "cycles",
+    "fp_div", "fp_sqrt" (with a cycle model), "cached"}, or None if it failed.
 
-    The soft-float run takes many minutes, so its --stats text and image are
-    kept in cache_dir under a hash of the simulator, ELF, scene and arguments;
-    a run is reused only when all of them are byte-identical."""
-    key = firmware_cache_key(sim, elf, scene)
+    The soft-float run takes many minutes and the FPU-model runs are many, so the
+    --stats text and image are kept in cache_dir under a hash of the simulator, ELF,
+    scene, options and model files; a run is reused only when all are byte-identical."""
+    key = firmware_cache_key(sim, elf, scene, options, files)
     stats_path = os.path.join(cache_dir, key + ".stats")
     image_path = os.path.join(cache_dir, key + ".ppm")
     cached = os.path.exists(stats_path) and os.path.exists(image_path)
@@ -95,7 +116,7 @@ def run_firmware(sim, elf, scene, outfile, cache_dir):
         stats = open(stats_path).read()
         shutil.copyfile(image_path, outfile)
     else:
-        r = subprocess.run(firmware_command(sim, elf, scene, outfile),
+        r = subprocess.run(firmware_command(sim, elf, scene, outfile, list(options)),
                            capture_output=True, text=True)
         if r.returncode != 0:
             return None
@@ -108,7 +129,50 @@ def run_firmware(sim, elf, scene, outfile, cache_dir):
     cyc = re.search(r"^cycles: (\d+)", stats, re.M)
     if not ins or not cyc:
         return None
-    return int(ins.group(1)), int(cyc.group(1)), cached
+    mix = lambda cls: re.search(rf"^instruction mix:.* {cls}=(\d+)", stats, re.M)  # noqa: E731
+    mips = re.search(r"^host MIPS: ([0-9.]+)", stats, re.M)
+    seconds = int(ins.group(1)) / (float(mips.group(1)) * 1e6) if mips and float(mips.group(1)) else 0
+    return {"instructions": int(ins.group(1)), "cycles": int(cyc.group(1)), "cached": cached,
+            "seconds": seconds,
+            "fp_div": int(mix("fp_div").group(1)) if mix("fp_div") else 0,
+            "fp_sqrt": int(mix("fp_sqrt").group(1)) if mix("fp_sqrt") else 0}
+
+
+def fpu_check(sim, fpu):
+    """firmware-sim --fpu-check: op -> (max error as printed, "meet"/"MISS")."""
+    r = subprocess.run([sim, "--fpu", fpu, "--fpu-check"], capture_output=True, text=True)
+    out = {}
+    for line in r.stdout.splitlines():
+        words = line.split()
+        if words and words[0] in CHECK_OPS and len(words) >= 4:
+            out[words[0]] = (words[-3], words[-1])
+    return out
+
+
+def default_latencies(root):
+    """fp_add, fp_mul, fp_div, fp_sqrt of the built-in cycle model (its source file)."""
+    lat = {}
+    for line in open(os.path.join(root, "firmware_sim", "models", "default.cfg")):
+        m = re.match(r"\s*(fp_add|fp_mul|fp_div|fp_sqrt)\s*=\s*(\d+)", line)
+        if m:
+            lat[m.group(1)] = int(m.group(2))
+    return lat
+
+
+def unit_latencies(fpu, lat):
+    """fp_div and fp_sqrt of the unit an --fpu list describes, assuming one cycle for the
+    table, the default model's fp_mul/fp_add per dependent operation, no pipelining:
+    reciprocal step = 2 mul + 1 sub, inverse-square-root step = 3 mul + 1 sub, then the
+    final multiply. Exact ops keep the default model's latency."""
+    keys = dict(item.split("=", 1) for item in fpu.split(","))
+    div, sqrt = lat["fp_div"], lat["fp_sqrt"]
+    if keys.get("div") == "recip-mul":
+        n = int(keys.get("recip_newton_steps", 1))
+        div = 1 + n * (2 * lat["fp_mul"] + lat["fp_add"]) + lat["fp_mul"]
+    if keys.get("sqrt") == "table-newton":
+        n = int(keys.get("rsqrt_newton_steps", 1))
+        sqrt = 1 + n * (3 * lat["fp_mul"] + lat["fp_add"]) + lat["fp_mul"]
+    return div, sqrt
 
 
 def run_callgrind(tool, variant, scene):
@@ -182,6 +246,31 @@ def main():
     cg_jobs = {tag: pool.submit(run_callgrind, args.tool, tag, speed_scene)
                for _, tag in VARIANTS} if os.path.exists(speed_scene) else {}
     render_jobs = [pool.submit(render, args.tool, s, imgdir) for s in course + hard]
+    # FPU models: contest under the cycle model (with the unit's fp_div/fp_sqrt
+    # latencies) for the counts, every course scene for the error.
+    fpu_jobs = {}  # tag -> {"check": job, "latency": (div, sqrt), scene -> (job, image)}
+    ieee_check = None
+    fpu_elf = os.path.join(args.firmware_dir or "", f"minrt-{FPU_ISA}.elf")
+    lat = default_latencies(args.root)
+    if fw_jobs and FPU_ISA in fw_jobs and os.path.exists(fpu_elf):
+        fpu_dir = os.path.join(args.work, "fpu-models")
+        os.makedirs(fpu_dir, exist_ok=True)
+        ieee_check = pool.submit(fpu_check, args.sim, "div=exact")
+        for _, tag, fpu in FPU_VARIANTS:
+            div, sqrt = unit_latencies(fpu, lat)
+            cfg = os.path.join(fpu_dir, tag + ".cfg")
+            with open(cfg, "w") as f:
+                f.write(f"# the default model with this unit's latencies\nfp_div = {div}\n"
+                        f"fp_sqrt = {sqrt}\n")
+            jobs = {"check": pool.submit(fpu_check, args.sim, fpu), "latency": (div, sqrt)}
+            for scene in course:
+                image = os.path.join(fpu_dir, f"{stem(scene)}.{tag}.ppm")
+                timed = stem(scene) == SPEED_SCENE
+                options = ["--fpu", fpu] + (["--cycle-model", cfg] if timed else [])
+                jobs[stem(scene)] = (pool.submit(run_firmware, args.sim, fpu_elf, scene, image,
+                                                 cache_dir, options, [cfg] if timed else []),
+                                     image)
+            fpu_jobs[tag] = jobs
     failures = []
     warnings = {}  # scene -> distinct warning texts (the same in every variant)
     for job in render_jobs:
@@ -217,6 +306,26 @@ def main():
             same = bool(np.array_equal(read_ppm(out), images[SPEED_SCENE][MODEL]))
         firmware[isa] = (res, same)
     callgrind = {tag: job.result() for tag, job in cg_jobs.items()}
+    # FPU variants: per course scene, (against double/libm, against float/portable).
+    fpu = {}  # tag -> {"check", "latency", "speed", "rows": scene -> comparisons}
+    fpu_runs = []  # every FPU-model run's --stats figures
+    for tag, jobs in fpu_jobs.items():
+        entry = {"check": jobs["check"].result(), "latency": jobs["latency"], "rows": {},
+                 "speed": None}
+        for scene in course:
+            job, image = jobs[stem(scene)]
+            res = job.result()
+            if not res:
+                failures.append(f"{stem(scene)}.sld: firmware under FPU model {tag} failed")
+                continue
+            fpu_runs.append(res)
+            if stem(scene) == SPEED_SCENE:
+                entry["speed"] = res
+            img = read_ppm(image)
+            entry["rows"][stem(scene)] = (compare(img, images[stem(scene)][REF]),
+                                          compare(img, images[stem(scene)][MODEL]))
+        fpu[tag] = entry
+    ieee_check = ieee_check.result() if ieee_check else {}
     pool.shutdown()
 
     def totals(group, tag, which):
@@ -241,6 +350,9 @@ def main():
     w("| float/portable+fma | `PortableFloat` compiled with `-ffp-contract=fast -mfma -O2` "
       "(tools/accuracy/fma_variant.cpp): the compiler fuses a*b+c into one rounding, "
       "as an FPU with `fmadd.s` and a contracting compiler would |\n")
+    w("The rv32imf firmware is also rendered through `firmware-sim` under models of course "
+      "teams' own FPUs (approximate division and square root, truncation): see "
+      "[FPU models in the firmware](#fpu-models-in-the-firmware).\n")
     w("Columns: **max** = largest error of one colour channel (0–255); **px ≠** = pixels "
       "with any channel different; **px > 8** = pixels with a channel off by more than 8; "
       "**PSNR** in dB over all channels (∞ = identical; the minimum over the scenes that "
@@ -330,6 +442,117 @@ def main():
     per_scene_table("Per scene, against float/portable (the firmware's model)", 1,
                     [v for v in VARIANTS if v[1] != MODEL])
 
+
+    # FPU models: the units, then speed and error.
+    fpu_shown = [(n, t, f) for n, t, f in FPU_VARIANTS if t in fpu and fpu[t]["rows"]]
+    ieee_fw = firmware.get(FPU_ISA, (None, None))[0]
+    if fpu_shown:
+        def fpu_totals(tag, which):
+            cs = [fpu[tag]["rows"][stem(s)][which] for s in course if stem(s) in fpu[tag]["rows"]]
+            finite = [c["psnr"] for c in cs if not math.isinf(c["psnr"])]
+            return {"max": max(c["max"] for c in cs), "diff": sum(c["diff"] for c in cs),
+                    "over8": sum(c["over8"] for c in cs),
+                    "scenes": sum(1 for c in cs if c["diff"] > 0),
+                    "minpsnr": min(finite) if finite else math.inf, "count": len(cs)}
+
+        def meets(check):
+            return bool(check) and all(check.get(op, ("", "MISS"))[1] == "meet" for op in CHECK_OPS)
+
+        def check_cell(check, op):
+            err, verdict = check.get(op, ("n/a", "n/a"))
+            return f"{err} {'meet' if verdict == 'meet' else '**' + verdict + '**'}"
+
+        def err_cell(t):
+            return f"{t['max']} / {t['diff']} / {t['over8']} / {fmt_psnr(t['minpsnr'])}"
+
+        w("## FPU models in the firmware\n")
+        w(f"The {FPU_ISA} firmware rendered by `firmware-sim` with a model of a course team's FPU "
+          "in place of the exact IEEE one (`firmware-sim --fpu ITEMS`; the arithmetic is defined "
+          "bit for bit in [firmware_sim.md](firmware_sim.md#fpu-models)). The firmware is "
+          "unchanged: its shims build sin, cos and atan from the modelled add, mul and div, so "
+          "the model's error reaches them too. Every course scene is rendered at "
+          f"{SIZE}x{SIZE}, and {SPEED_SCENE}.sld also under the cycle model for the counts. The "
+          "IEEE row is the same firmware with the exact FPU, whose output is the host's "
+          "float/portable image (the firmware tests check that on every course scene).\n")
+        w("The error columns of the first table are `firmware-sim --fpu ITEMS --fpu-check`: the "
+          "largest error of each operation over random, edge and exhaustive operands, as the "
+          "course's rules measure it (relative, with a floor of 2^-126), against the rules "
+          "2^-23 (fadd, fsub), 2^-22 (fmul), 2^-20 (fdiv, fsqrt).\n")
+        w("Latencies are an assumption, not a measurement: the default cycle model with fp_div "
+          "and fp_sqrt set to what each unit needs if the table takes one cycle and every "
+          f"dependent operation after it the default fp_mul/fp_add ({lat['fp_mul']}/"
+          f"{lat['fp_add']} cycles), without pipelining: 1 + N (2 mul + 1 sub) + 1 mul for the "
+          "divider, 1 + N (3 mul + 1 sub) + 1 mul for the square root. An exact divider or "
+          f"square root keeps the default's {lat['fp_div']} and {lat['fp_sqrt']}.\n")
+        w("| unit | `--fpu` | fadd | fsub | fmul | fdiv | fsqrt | fp_div / fp_sqrt cycles |")
+        w("|---|---|---|---|---|---|---|---:|")
+        w("| IEEE | (none) | " + " | ".join(check_cell(ieee_check, op) for op in CHECK_OPS)
+          + f" | {lat['fp_div']} / {lat['fp_sqrt']} |")
+        for name, tag, items in fpu_shown:
+            div, sqrt = fpu[tag]["latency"]
+            w(f"| {name} | `{items}` | "
+              + " | ".join(check_cell(fpu[tag]["check"], op) for op in CHECK_OPS)
+              + f" | {div} / {sqrt} |")
+        w("")
+        w(f"Speed on {SPEED_SCENE}.sld at {SIZE}x{SIZE}; error over the {len(course)} course "
+          "scenes (each cell: max / px ≠ / px > 8 / min PSNR):\n")
+        w("| unit | RV32 instructions | modelled cycles | fdiv.s / fsqrt.s executed | "
+          "against double/libm | against float/portable |")
+        w("|---|---:|---:|---:|---|---|")
+        if ieee_fw:
+            zero = {"max": 0, "diff": 0, "over8": 0, "minpsnr": math.inf}
+            w(f"| IEEE | {ieee_fw['instructions']:,} | {ieee_fw['cycles']:,} | "
+              f"{ieee_fw['fp_div']:,} / {ieee_fw['fp_sqrt']:,} | "
+              f"{err_cell(totals(course, MODEL, 0))} | {err_cell(zero)} |")
+        for name, tag, _ in fpu_shown:
+            sp = fpu[tag]["speed"]
+            speed = (f"{sp['instructions']:,} | {sp['cycles']:,} | {sp['fp_div']:,} / "
+                     f"{sp['fp_sqrt']:,}") if sp else "failed | failed | failed"
+            w(f"| {name} | {speed} | {err_cell(fpu_totals(tag, 0))} | "
+              f"{err_cell(fpu_totals(tag, 1))} |")
+        w("")
+        # What these numbers say, from this run's numbers.
+        w("Reading the numbers:\n")
+        fl = totals(course, "float-libm", 1)
+        for name, tag, _ in fpu_shown:
+            t, sp = fpu_totals(tag, 1), fpu[tag]["speed"]
+            verdict = ("meets every rule" if meets(fpu[tag]["check"]) else "misses " + ", ".join(
+                op for op in CHECK_OPS if fpu[tag]["check"].get(op, ("", "MISS"))[1] != "meet"))
+            line = (f"- **{name}** ({verdict}): {t['diff']} pixels of the course scenes differ "
+                    f"from float/portable, {t['over8']} by more than 8, on {t['scenes']} scenes")
+            if sp and ieee_fw:
+                line += (f"; {SPEED_SCENE} takes {sp['cycles'] / ieee_fw['cycles'] - 1:+.2%} "
+                         "modelled cycles against the IEEE firmware")
+            w(line + ".")
+        good = [fpu_totals(t, 1)["diff"] for _, t, _ in fpu_shown if meets(fpu[t]["check"])]
+        bad = [fpu_totals(t, 1)["diff"] for _, t, _ in fpu_shown if not meets(fpu[t]["check"])]
+        if good and bad:
+            w("- Meeting the rules " + ("does" if max(good) < min(bad) else "does not always")
+              + f" keep a unit closer to float/portable: units that meet them change {min(good)} "
+              f"to {max(good)} pixels, units that miss them {min(bad)} to {max(bad)}. For scale, "
+              f"float/libm (glibc's float functions on exact IEEE arithmetic) differs from "
+              f"float/portable on {fl['diff']} pixels.")
+        ref_good = [fpu_totals(t, 0)["diff"] for _, t, _ in fpu_shown if meets(fpu[t]["check"])]
+        if ref_good:
+            w(f"- Against the original (double/libm), the units that meet the rules differ on "
+              f"{min(ref_good)} to {max(ref_good)} pixels where the exact float FPU differs on "
+              f"{totals(course, MODEL, 0)['diff']}"
+              + (": within the course's bounds an FPU at most doubles the pixels that single "
+                 "precision already changes." if max(ref_good) < 2 * totals(course, MODEL, 0)["diff"]
+                 else "."))
+        w("")
+        w("Per scene, against float/portable (max / px ≠ / px > 8 / PSNR):\n")
+        w("| scene | " + " | ".join(n for n, _, _ in fpu_shown) + " |")
+        w("|---|" + "---|" * len(fpu_shown))
+        for sc in course:
+            cells = []
+            for _, tag, _ in fpu_shown:
+                c = fpu[tag]["rows"].get(stem(sc))
+                cells.append(f"{c[1]['max']} / {c[1]['diff']} / {c[1]['over8']} / "
+                             f"{fmt_psnr(c[1]['psnr'])}" if c else "failed")
+            w(f"| {stem(sc)} | " + " | ".join(cells) + " |")
+        w("")
+
     w(f"## Speed: {SPEED_SCENE}.sld at {SIZE}x{SIZE}\n")
     w("| variant | RV32 firmware instructions | RV32 modelled cycles (default model) | "
       "x86-64 instructions of accuracy-report (callgrind, host) |")
@@ -346,7 +569,7 @@ def main():
         for isa, label in fws:
             res, same = firmware.get(isa, (None, None))
             if res:
-                w(f"| {name}, {label} | {res[0]:,} | {res[1]:,} | {cgs} |")
+                w(f"| {name}, {label} | {res['instructions']:,} | {res['cycles']:,} | {cgs} |")
             else:
                 w(f"| {name}, {label} | not measured | not measured | {cgs} |")
     w("")
@@ -355,14 +578,14 @@ def main():
             w(f"- firmware `minrt-{isa}.elf` output on {SPEED_SCENE} "
               f"{'**equals**' if same else '**differs from**'} the host's float/portable image"
               + (" (counts reused from the firmware cache: same simulator, ELF, scene and "
-                 "arguments as a previous run)." if res and res[2] else "."))
+                 "arguments as a previous run)." if res and res["cached"] else "."))
     w("- The x86 counts are the whole `accuracy-report --variant V` process (start-up, "
       "reading the scene, rendering, no file written), counted by `valgrind --tool=callgrind`. "
       "They are x86-64 instructions of a `-O3` host build and are not comparable with the "
       "RV32 counts.\n")
 
     # Speed against error plot.
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, axes = plt.subplots(1, 3 if fpu_shown else 2, figsize=(16.5 if fpu_shown else 11, 4.2))
     ax = axes[0]
     for name, tag in VARIANTS:
         cg = callgrind.get(tag)
@@ -379,14 +602,34 @@ def main():
     err = totals(course, MODEL, 0)["diff"]
     for isa, (res, _) in firmware.items():
         if res:
-            ax.scatter([err], [res[1] / 1e6])
-            ax.annotate(f"float/portable {isa}", (err, res[1] / 1e6), fontsize=8,
+            ax.scatter([err], [res["cycles"] / 1e6])
+            ax.annotate(f"float/portable {isa}", (err, res["cycles"] / 1e6), fontsize=8,
                         xytext=(4, 4), textcoords="offset points")
     ax.set_yscale("log")
     ax.set_xlabel("pixels differing from double/libm, 25 course scenes")
     ax.set_ylabel(f"RV32 Mcycles, modelled ({SPEED_SCENE} {SIZE}x{SIZE})")
     ax.set_title("firmware (firmware-sim, default cycle model)")
     ax.grid(alpha=0.3)
+    if fpu_shown:
+        ax = axes[2]
+        points = [("IEEE", 0, ieee_fw["cycles"] if ieee_fw else None, True)]
+        for name, tag, _ in fpu_shown:
+            sp = fpu[tag]["speed"]
+            points.append((name, fpu_totals(tag, 1)["diff"], sp["cycles"] if sp else None,
+                           meets(fpu[tag]["check"])))
+        # Most units cost about the same: a legend instead of labels that would overlap.
+        for (name, x, cyc, ok), marker in zip(points, "osD^vPX*"):
+            if cyc is None:
+                continue
+            ax.scatter([x], [cyc / 1e6], color="tab:green" if ok else "tab:red", marker=marker,
+                       label=name)
+        ax.legend(fontsize=7, loc="upper left", title="green: meets the rules, red: misses",
+                  title_fontsize=7)
+        ax.set_xscale("symlog", linthresh=10)
+        ax.set_xlabel("pixels differing from float/portable, 25 course scenes")
+        ax.set_ylabel(f"RV32 Mcycles, modelled ({SPEED_SCENE} {SIZE}x{SIZE})")
+        ax.set_title(f"FPU models ({FPU_ISA} firmware, unit latencies)")
+        ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(docdir, "speed-vs-error.png"), dpi=80)
     plt.close(fig)
@@ -414,14 +657,19 @@ def main():
       "[sld/hard/README.md](../sld/hard/README.md), the output is deterministic, and "
       "float/portable+fma really differs from float/portable (i.e. the compiler did fuse; "
       "`objdump -d` of `fma_variant.cpp.o` shows `vfmadd`/`vfnmadd` instructions).\n")
+    w("`test/sim/` (ctest `sim: ...` and `sim cli: ...`) checks the FPU models: table entries "
+      "and Newton steps on operands worked out by hand from the definition, IEEE results for "
+      "zeros, infinities and NaNs, subnormals kept and flushed, `--fpu-check` meeting 2^-20 "
+      "with a 10-bit reciprocal table and one Newton step and missing it with 8 bits, and the "
+      "renderer firmware giving complete images under a coarse model.\n")
     w("## Open problems\n")
     w("- The firmware exists only for float/portable; the other variants' RV32 cost is not "
       "measured (only their x86 instruction counts).")
-    w("- The firmware runs here use the simulator's exact IEEE single-precision FPU. "
-      "Approximate FPU models (the "
-      "course's error bounds: mul 2^-22, div 2^-20, sqrt 2^-20 relative, or a fused "
-      "`fmadd.s`) are not covered by this report; once they exist, their images can be compared with these "
-      "tables by rendering through `firmware-sim` and the same comparison code.")
+    w("- The FPU models cover division by reciprocal table and Newton steps, square root by "
+      "inverse-square-root table and Newton steps, truncating fmul/fadd/fsub and flushed "
+      "subnormals. A fused `fmadd.s` stays exact IEEE under every model (the firmware uses "
+      "none), and the FPU-model latencies above are assumptions; a team's measured latencies "
+      "go into its cycle model.")
     w("- float/portable+fma is a host approximation of an FPU with fused multiply-add: which "
       "products get fused depends on GCC's choices for x86-64, not on what a RISC-V compiler "
       "would emit for `fmadd.s`.")
@@ -430,14 +678,21 @@ def main():
 
     w("## Regenerating\n")
     w("```sh\n" + args.command + "\n```\n")
-    reused = [isa for isa, (res, _) in firmware.items() if res and res[2]]
+    reused = [isa for isa, (res, _) in firmware.items() if res and res["cached"]]
     w(f"This run took {elapsed:.0f} s of wall time on the 2-core development machine after the "
       "build (renders and callgrind two at a time"
       + (f"; the firmware counts of {', '.join(reused)} came from the cache" if reused else "")
       + "). Without the cache (`NO_CACHE=1`, or after the simulator or an ELF changes) the "
       "firmware runs under the cycle model add about 1 minute (rv32imf) and 4 to 10 minutes "
       "(rv32im soft float, 23 billion instructions; 557 s when it was measured on a loaded "
-      "machine), overlapped with the renders.\n")
+      "machine), overlapped with the renders.")
+    if fpu_runs:
+        w(f"The FPU-model renders ({len(fpu_runs)} firmware runs, "
+          f"{sum(r['instructions'] for r in fpu_runs) / 1e9:.0f} billion instructions) took "
+          f"{sum(r['seconds'] for r in fpu_runs):.0f} s of simulator time when they were run, two "
+          f"at a time; {sum(1 for r in fpu_runs if r['cached'])} of them came from the cache in "
+          "this run.")
+    w("")
     path = os.path.join(args.root, "docs", "accuracy.md")
     with open(path, "w") as f:
         f.write("\n".join(out))

@@ -2,12 +2,15 @@
 # Regenerates docs/accuracy.md and docs/accuracy/*.png: builds accuracy-report
 # in build-acc/, renders every scene of ../shared/scenes and sld/hard at
 # 128x128 in every math variant, measures contest.sld on the firmware
-# (build/release/firmware, build/release/firmware_sim) and under callgrind.
+# (build/release/firmware, build/release/firmware_sim) and under callgrind,
+# and renders the course scenes on the rv32imf firmware under the FPU models
+# listed in make_report.py (firmware-sim --fpu).
 # Environment: BUILD (default build-acc), MINRT_SHARED_DIR (default ../shared),
 # FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS (default
 # rv32imf,rv32im), NO_CACHE=1 to rerun the firmware even when its counts are
 # cached in $BUILD/accuracy-work/firmware-cache (keyed by a hash of the
-# simulator, ELF, scene and arguments; the soft-float run takes many minutes).
+# simulator, ELF, scene, arguments and cycle/FPU model; the soft-float run
+# takes many minutes, the FPU-model renders several).
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build-acc}
