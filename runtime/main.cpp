@@ -101,7 +101,10 @@ constexpr size_t kFramedScene = 64 * 1024;
 int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
                  minrt::Diagnostic& error) {
   using namespace minrt::send::framed;
-  minrt::fw::SerialInput input(uart, options.idle_polls, /*binary=*/true);
+  const uint32_t idle = options.idle_polls > UINT32_MAX / MINRT_FRAMED_IDLE_FACTOR
+                            ? UINT32_MAX
+                            : options.idle_polls * MINRT_FRAMED_IDLE_FACTOR;
+  minrt::fw::SerialInput input(uart, idle, /*binary=*/true);
   minrt::fw::SerialOutput link(uart, false);
   const minrt::ByteSink out = link.sink();
   uint8_t* payload = arena.alloc_zeroed<uint8_t>(kFramedPayload);

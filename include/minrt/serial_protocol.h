@@ -33,6 +33,14 @@
 /* Empty UART status polls after which the firmware takes the input as ended. */
 #define MINRT_IDLE_POLLS_DEFAULT 1000000
 
+/* The framed protocol ends explicitly (E after the scene, F after the
+ * image), so silence there means a slow or damaged line, or a lost host:
+ * the firmware allows this many times the idle polls before giving up
+ * (saturating; 0 still waits forever). At the default that is about 1e9
+ * polls: over a minute in firmware-sim, longer than host-send's longest
+ * retry interval (30 s). */
+#define MINRT_FRAMED_IDLE_FACTOR 1024
+
 /* Halt status. */
 #define MINRT_STATUS_OK 0
 #define MINRT_STATUS_USAGE 2         /* bad firmware arguments (like `minrt`) */
