@@ -683,9 +683,10 @@ def main():
       "build (renders and callgrind two at a time"
       + (f"; the firmware counts of {', '.join(reused)} came from the cache" if reused else "")
       + "). Without the cache (`NO_CACHE=1`, or after the simulator or an ELF changes) the "
-      "firmware runs under the cycle model add about 1 minute (rv32imf) and 4 to 10 minutes "
-      "(rv32im soft float, 23 billion instructions; 557 s when it was measured on a loaded "
-      "machine), overlapped with the renders.")
+      "firmware runs under the cycle model are redone, overlapped with the renders; they took "
+      + ", ".join(f"{res['seconds']:.0f} s ({isa}, {res['instructions'] / 1e9:.1f} billion "
+                  "instructions)" for isa, (res, _) in firmware.items() if res)
+      + " of simulator time when they ran.")
     if fpu_runs:
         w(f"The FPU-model renders ({len(fpu_runs)} firmware runs, "
           f"{sum(r['instructions'] for r in fpu_runs) / 1e9:.0f} billion instructions) took "
