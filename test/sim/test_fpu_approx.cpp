@@ -76,7 +76,7 @@ TEST_CASE("reciprocal table entries are 1/midpoint rounded to the entry width", 
   }
 }
 
-TEST_CASE("inverse square root table entries cover [1,2) then [2,4)", "[fpu-approx]") {
+TEST_CASE("inverse square root table entries cover 1 to 2 then 2 to 4", "[fpu-approx]") {
   // T=1, E=23: index 0 is [1,2), mid 1.5: 1/sqrt(1.5) = 0.81649658 -> 0x3f5105ec;
   //            index 1 is [2,4), mid 3:   1/sqrt(3)   = 0.57735027 -> 0x3f13cd3a.
   CHECK(fwsim::rsqrt_table_entry(1, 23, 0) == 0x3f5105ecu);

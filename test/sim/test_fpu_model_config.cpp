@@ -61,7 +61,7 @@ TEST_CASE("a model file sets every key", "[fpu-model]") {
         "mul=truncate add=truncate subnormals=flush");
 }
 
-TEST_CASE("--fpu items apply in order on top of a configuration", "[fpu-model]") {
+TEST_CASE("fpu option items apply in order on top of a configuration", "[fpu-model]") {
   FpuModelConfig c = fwsim::parse_fpu_model("div = recip-mul\nrecip_table_bits = 8\n", "f");
   fwsim::apply_fpu_settings(c, "recip_table_bits=12, recip_newton_steps = 0,sqrt=table-newton");
   CHECK(c.div == FpuModelConfig::Div::RecipMul);
@@ -90,7 +90,7 @@ TEST_CASE("bad model files name the file and line", "[fpu-model]") {
   CHECK(file_error("div =\n") == "team.cfg:1: missing value for div");
 }
 
-TEST_CASE("bad --fpu items are named in the error", "[fpu-model]") {
+TEST_CASE("bad fpu option items are named in the error", "[fpu-model]") {
   CHECK(list_error("div=recip-mul,recip_table_bits=99") ==
         "--fpu 'recip_table_bits=99': recip_table_bits must be an integer from 0 to 16, got '99'");
   CHECK(list_error("div=recip-mul,,sqrt=exact") == "--fpu '': expected `key = value`");
