@@ -171,15 +171,24 @@ uint32_t FpuApprox::rsqrt_significand(uint32_t m) const {
   return r;
 }
 
-uint32_t FpuApprox::add(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) const {
+// An IEEE operation as the unit rounds it: exactly, or truncated (toward
+// zero, and an overflow gives infinity: a truncating unit does not
+// saturate), with subnormals flushed when the model says so.
+template <class Op>
+uint32_t FpuApprox::rounded(FpuModelConfig::Rounding mode, uint32_t a, uint32_t b, unsigned rm, uint8_t& flags,
+                            Op op) const {
   a = flush_in(a);
   b = flush_in(b);
-  if (cfg_.add == FpuModelConfig::Rounding::Exact) return flush_out(fpu::add(a, b, rm, flags), flags);
+  if (mode == FpuModelConfig::Rounding::Exact) return flush_out(op(a, b, rm, flags), flags);
   uint8_t f = 0;
-  uint32_t r = fpu::add(a, b, fpu::RTZ, f);
-  if (f & fpu::OF) r = (r & kSign) | kInf;  // no saturation in a truncating unit
+  uint32_t r = op(a, b, fpu::RTZ, f);
+  if (f & fpu::OF) r = (r & kSign) | kInf;
   flags |= f;
   return flush_out(r, flags);
+}
+
+uint32_t FpuApprox::add(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) const {
+  return rounded(cfg_.add, a, b, rm, flags, fpu::add);
 }
 
 uint32_t FpuApprox::sub(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) const {
@@ -187,14 +196,7 @@ uint32_t FpuApprox::sub(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) con
 }
 
 uint32_t FpuApprox::mul(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) const {
-  a = flush_in(a);
-  b = flush_in(b);
-  if (cfg_.mul == FpuModelConfig::Rounding::Exact) return flush_out(fpu::mul(a, b, rm, flags), flags);
-  uint8_t f = 0;
-  uint32_t r = fpu::mul(a, b, fpu::RTZ, f);
-  if (f & fpu::OF) r = (r & kSign) | kInf;
-  flags |= f;
-  return flush_out(r, flags);
+  return rounded(cfg_.mul, a, b, rm, flags, fpu::mul);
 }
 
 uint32_t FpuApprox::div(uint32_t a, uint32_t b, unsigned rm, uint8_t& flags) const {

@@ -53,6 +53,8 @@ class FpuApprox {
   // The unit's own multiplier and subtracter on in-range operands (no
   // specials, no subnormals): round to nearest even, or toward zero.
   uint32_t unit_mul(uint32_t a, uint32_t b) const;
+  template <class Op>
+  uint32_t rounded(FpuModelConfig::Rounding mode, uint32_t a, uint32_t b, unsigned rm, uint8_t& flags, Op op) const;
   uint32_t unit_sub(uint32_t a, uint32_t b) const;
   uint32_t flush_in(uint32_t a) const;
   uint32_t flush_out(uint32_t r, uint8_t& flags) const;
