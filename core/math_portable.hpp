@@ -16,6 +16,10 @@
 //     atan reduction, sqrt from a Newton iteration without the exact
 //     correction; up to 2.6 ULP.  Meets the course rules (relative error
 //     2^-18 sin/cos, 2^-20 atan/sqrt).
+//   PortableFloatT<0> (= PortableFloatMin, "float/portable-min"): the fewest
+//     operations that still meet those rules: sqrt as the bare Newton
+//     estimate, cos degree 6 without compensation, atan degree 9 after one
+//     division, a shorter Cody-Waite pi/2; up to 3.3 ULP (2^-21.8).
 //
 // Everything assumes the build's -ffp-contract=off and IEEE binary32 with
 // round-to-nearest-even; the compensated steps below rely on both.
@@ -124,8 +128,9 @@ constexpr float floor(float x) {
 
 // -------------------------------------------------------------------- sqrt
 
-// Exact must be true for a correctly rounded result.
-template <bool Exact>
+// Level 2: correctly rounded; level 1: one Heron-style correction; level 0:
+// the Newton estimate x r as it is.
+template <int Level>
 constexpr float sqrt(float x) {
   u32 b = bits_of(x);
   if (nan_bits(b)) return x + x;
@@ -144,7 +149,11 @@ constexpr float sqrt(float x) {
   float r = float_of(0x5f3759dfu - (b >> 1));
   for (int i = 0; i < 3; ++i) r = r * (1.5f - half_x * r * r);
   float y = x * r;
-  if constexpr (!Exact) {
+  if constexpr (Level == 0) {
+    // Three Newton steps leave r within a few float roundings of
+    // 1/sqrt(x); x r is then a few ULPs off, well inside 2^-20.
+    return float_of(bits_of(y) - (u32(half_scale) << 23));
+  } else if constexpr (Level == 1) {
     // One Heron-style correction: y + (x - y^2) / (2y), with 1/y ~ r.
     y = y + (x - y * y) * (0.5f * r);
     return float_of(bits_of(y) - (u32(half_scale) << 23));
@@ -219,6 +228,8 @@ inline constexpr float kPio2Pieces[6] = {
     0x1.13198ap-65f};
 // Fast level: the first four pieces, then the float nearest to the rest.
 inline constexpr float kPio2FastTail = 0x1.1a6264p-54f;
+// Minimum level: the first three pieces, then the float nearest to the rest.
+inline constexpr float kPio2MinTail = 0x1.68c234p-39f;
 
 // Cody-Waite for pi/4 < ax < 2^13.  ax - k*p0 is exact (Sterbenz for k <= 2,
 // otherwise the difference fits in 24 bits), and so is the step with p1; the
@@ -325,10 +336,27 @@ constexpr Reduced reduce_payne_hanek(u32 ab) {
   return {out.hi, out.lo, quadrant};
 }
 
+// Level 0: three 11-bit pieces and the float tail of the rest of pi/2 (one
+// step fewer than level 1; docs/shims.md measures it against 2^-18).
+constexpr Reduced reduce_cody_waite_min(float ax) {
+  const float t = ax * kTwoOverPi + kRoundMagic;
+  const u32 k = bits_of(t) - bits_of(kRoundMagic);
+  const float kf = t - kRoundMagic;
+  float r = ax - kf * kPio2Pieces[0];
+  r = r - kf * kPio2Pieces[1];
+  r = r - kf * kPio2Pieces[2];
+  r = r - kf * kPio2MinTail;
+  return {r, 0.0f, k};
+}
+
 template <int Level>
 constexpr Reduced reduce_quadrant(u32 ab) {
   const float ax = float_of(ab);
   if (ab <= kPiOver4Bits) return {ax, 0.0f, 0u};
+  if constexpr (Level == 0) {
+    if (ab < kCodyWaiteLimitBits) return reduce_cody_waite_min(ax);
+    return reduce_payne_hanek(ab);  // its lo is ignored by the level-0 kernels
+  }
   if (ab < kCodyWaiteLimitBits) return reduce_cody_waite<(Level >= 2)>(ax);
   return reduce_payne_hanek(ab);
 }
@@ -343,6 +371,9 @@ inline constexpr float kSin7[3] = {-0x1.555552p-3f, 0x1.110c1ep-7f,
                                    -0x1.9ac446p-13f};
 inline constexpr float kCos8[3] = {0x1.555554p-5f, -0x1.6c12cap-10f,
                                    0x1.9bd444p-16f};
+// Level 0: cos r = 1 + r^2 C(r^2), degree 6 (the whole of cos, -1/2 fitted too).
+inline constexpr float kCosMin6[3] = {-0x1.fffff4p-2f, 0x1.554a38p-5f,
+                                      -0x1.661878p-10f};
 
 // sin(hi + lo), |lo| <= ulp(hi): sin(hi) + lo cos(hi), cos(hi) ~ 1 - z/2.
 template <int Level>
@@ -365,10 +396,21 @@ constexpr float cos_kernel(float hi, float lo) {
   return w + (((1.0f - w) - hz) + (z * z * horner(kCos8, z) - hi * lo));
 }
 
+// Level 0: cos(hi), lo ignored (it is at most half an ULP of hi).
+constexpr float cos_kernel_min(float hi) {
+  const float z = hi * hi;
+  return 1.0f + z * horner(kCosMin6, z);
+}
+
 template <int Level>
 constexpr float sin_from(const Reduced& red, u32 quadrant) {
-  const float v = (quadrant & 1u) != 0 ? cos_kernel(red.hi, red.lo)
-                                       : sin_kernel<Level>(red.hi, red.lo);
+  float v;
+  if constexpr (Level == 0) {
+    v = (quadrant & 1u) != 0 ? cos_kernel_min(red.hi) : sin_kernel<0>(red.hi, red.lo);
+  } else {
+    v = (quadrant & 1u) != 0 ? cos_kernel(red.hi, red.lo)
+                             : sin_kernel<Level>(red.hi, red.lo);
+  }
   return (quadrant & 2u) != 0 ? -v : v;
 }
 
@@ -405,6 +447,8 @@ inline constexpr float kAtan13b[6] = {-0x1.555556p-2f, 0x1.999968p-3f,
 inline constexpr float kAtan11[5] = {-0x1.555554p-2f, 0x1.999730p-3f,
                                      -0x1.242026p-3f, 0x1.b80edep-4f,
                                      -0x1.0840fap-4f};  // |t| <= tan(pi/8)
+inline constexpr float kAtan9[4] = {-0x1.555536p-2f, 0x1.996ba2p-3f,
+                                    -0x1.1f366ap-3f, 0x1.5cfb58p-4f};  // |t| <= tan(pi/8)
 
 // atan(c) as hi + lo for the reduction centres.
 inline constexpr float kAtanHalfHi = 0x1.dac670p-2f, kAtanHalfLo = 0x1.586ed4p-28f;
@@ -412,6 +456,7 @@ inline constexpr float kPiOver4Hi = 0x1.921fb6p-1f, kPiOver4Lo = -0x1.777a5cp-26
 inline constexpr float kAtan3HalfHi = 0x1.f730bep-1f, kAtan3HalfLo = -0x1.afc12cp-26f;
 inline constexpr float kPiOver2Hi = 0x1.921fb6p+0f, kPiOver2Lo = -0x1.777a5cp-25f;
 inline constexpr float kTanPiOver8 = 0x1.a8279ap-2f;
+inline constexpr float kTan3PiOver8 = 0x1.3504f4p+1f;
 inline constexpr u32 kTinyAtanBits = 0x39800000u;  // 2^-12: atan x rounds to x
 
 // Level 2: five intervals, t = (a - c) / (1 + c a) with atan(c) in two
@@ -460,13 +505,33 @@ constexpr float atan_fast(float a) {
   return inverted ? kPiOver2Hi - v : v;
 }
 
+// Level 0: one reduction step with at most one division: a > tan(3pi/8) ->
+// pi/2 + atan(-1/a), a > tan(pi/8) -> pi/4 + atan((a - 1) / (a + 1));
+// degree-9 polynomial on |t| <= tan(pi/8).
+constexpr float atan_min(float a) {
+  if (a <= kTanPiOver8) {
+    const float z = a * a;
+    return a + a * z * horner(kAtan9, z);
+  }
+  float t, base;
+  if (a < kTan3PiOver8) {
+    t = (a - 1.0f) / (a + 1.0f);
+    base = kPiOver4Hi;
+  } else {
+    t = -1.0f / a;  // also right for a = inf
+    base = kPiOver2Hi;
+  }
+  const float z = t * t;
+  return base + (t + t * z * horner(kAtan9, z));
+}
+
 template <int Level>
 constexpr float atan(float x) {
   const u32 b = bits_of(x), ab = b & kAbsMask;
   if (nan_bits(b)) return x + x;
   if (ab < kTinyAtanBits) return x;  // also keeps -0 and subnormals
   const float a = float_of(ab);
-  const float v = Level >= 2 ? atan_accurate(a) : atan_fast(a);
+  const float v = Level >= 2 ? atan_accurate(a) : Level == 1 ? atan_fast(a) : atan_min(a);
   return (b & kSignBit) != 0 ? -v : v;
 }
 
@@ -474,13 +539,15 @@ constexpr float atan(float x) {
 
 template <int Level>
 struct PortableFloatT {
-  static_assert(Level == 1 || Level == 2, "levels: 1 = fast, 2 = accurate");
+  static_assert(Level >= 0 && Level <= 2,
+                "levels: 0 = minimum for the course rules, 1 = fast, 2 = accurate");
   using real = float;
-  static constexpr const char* name =
-      Level == 2 ? "float/portable" : "float/portable-fast";
+  static constexpr const char* name = Level == 2   ? "float/portable"
+                                      : Level == 1 ? "float/portable-fast"
+                                                   : "float/portable-min";
   static constexpr int level = Level;
   static constexpr real sqrt(real x) {
-    return portable_detail::sqrt<(Level >= 2)>(x);
+    return portable_detail::sqrt<Level>(x);
   }
   static constexpr real floor(real x) { return portable_detail::floor(x); }
   static constexpr real sin(real x) { return portable_detail::sin<Level>(x); }
@@ -496,7 +563,9 @@ struct PortableFloatT {
 
 using PortableFloat = PortableFloatT<2>;
 using PortableFloatFast = PortableFloatT<1>;
+using PortableFloatMin = PortableFloatT<0>;
 
+static_assert(MathPolicy<PortableFloatT<0>>);
 static_assert(MathPolicy<PortableFloatT<1>>);
 static_assert(MathPolicy<PortableFloatT<2>>);
 

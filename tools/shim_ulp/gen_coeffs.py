@@ -72,7 +72,20 @@ def atan_q(z):
     return (mp.atan(s) / s - 1) / z
 
 
-for deg in (2, 3):
+def cos_full(z):
+    # level 0 fits the whole of (cos r - 1) / r^2, -1/2 included
+    if z == 0:
+        return mp.mpf(-1) / 2
+    s = mp.sqrt(z)
+    return (mp.cos(s) - 1) / z
+
+
+# Level 0 (float/portable-min) takes the shortest polynomial whose float
+# coefficients stay well under the course's bound (2^-18 sin/cos, 2^-20
+# atan) once float rounding (a few 2^-24) is added: sin degree 5 (2^-17.2)
+# is too coarse, so sin keeps degree 7; cos degree 6 as 1 + z C(z) (kCosMin6);
+# atan degree 9 on |t| <= tan(pi/8) (kAtan9; degree 7 gives only 2^-18.7).
+for deg in (1, 2, 3):
     cs, _ = fit(sin_g, 0, Z, deg)
     report('sin deg %d' % (2 * deg + 3), cs,
            lambda c, r: r + r * r * r * horner(c, r * r), mp.sin, 0, R)
@@ -80,8 +93,12 @@ for deg in (2, 3):
     cs, _ = fit(cos_h, 0, Z, deg)
     report('cos deg %d' % (2 * deg + 4), cs,
            lambda c, r: 1 - r * r / 2 + r ** 4 * horner(c, r * r), mp.cos, 0, R)
+for deg in (2, 3):
+    cs, _ = fit(cos_full, 0, Z, deg)
+    report('cos 1 + z C(z) deg %d (level 0)' % (2 * deg + 2), cs,
+           lambda c, r: 1 + r * r * horner(c, r * r), mp.cos, 0, R)
 T1 = mp.tan(mp.pi / 8) * mp.mpf('1.0001')
-for deg in (4, 5, 6):
+for deg in (2, 3, 4, 5, 6):
     cs, _ = fit(atan_q, 0, T1 * T1, deg)
     report('atan |t|<=tan(pi/8) deg %d' % (2 * deg + 3), cs,
            lambda c, t: t + t ** 3 * horner(c, t * t), mp.atan, 0, T1)
@@ -103,6 +120,8 @@ for nm, v in (('atan(1/2)', mp.atan(0.5)), ('pi/4', mp.pi / 4),
               ('atan(3/2)', mp.atan(1.5)), ('pi/2', mp.pi / 2)):
     hi, lo = split_hi_lo(v)
     print('//   %s: %s, %s' % (nm, f32hex(hi), f32hex(lo)))
+print('// tan(pi/8) = %s, tan(3pi/8) = %s (level 0 atan thresholds)' %
+      (f32hex(mp.tan(mp.pi / 8)), f32hex(mp.tan(3 * mp.pi / 8))))
 
 
 def trunc_bits(v, bits):
@@ -122,6 +141,9 @@ for i in range(5):
 parts.append(mp.mpf(f32(rest)))
 print('//   ' + ', '.join(f32hex(p) for p in parts) +
       '  (residual %s)' % mp.nstr(rest - parts[-1], 5))
+short3 = mp.pi / 2 - sum(parts[:3])
+print('// minimum level: first three pieces, then %s (residual %s)' %
+      (f32hex(short3), mp.nstr(short3 - mp.mpf(f32(short3)), 5)))
 short = mp.pi / 2 - sum(parts[:4])
 print('// fast level: first four pieces, then %s (residual %s)' %
       (f32hex(short), mp.nstr(short - mp.mpf(f32(short)), 5)))

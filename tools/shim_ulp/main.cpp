@@ -1,13 +1,14 @@
 // shim-ulp-table: prints a Markdown table of the accuracy of each math policy
-// (C library float, portable fast, portable accurate) over the named ranges
+// (C library float, portable minimum, fast and accurate) over the named ranges
 // of tools/shim_ulp/ulp_stats.hpp, plus the int <-> float conversion checks.
 //
 //   shim-ulp-table [--refine N] [--exhaustive] [--only sqrt|floor|sin|cos|atan|conv]
-//                  [--no-libm] [--renderer]
+//                  [--no-libm] [--renderer] [--level 0|1|2]
 //
 // --renderer keeps only the ranges the renderer uses (named "renderer ...").
 // --refine N divides the sampling strides (default 16); --exhaustive visits
-// every float of every range (minutes per function).
+// every float of every range (minutes per function); --level keeps one
+// portable level (and drops the libm rows).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
   std::string only;
   bool libm = true;
   bool renderer_only = false;
+  int level = -1;  // all
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--refine") == 0 && i + 1 < argc) {
       refine = std::atoll(argv[++i]);
@@ -94,10 +96,13 @@ int main(int argc, char** argv) {
       libm = false;
     } else if (std::strcmp(argv[i], "--renderer") == 0) {
       renderer_only = true;
+    } else if (std::strcmp(argv[i], "--level") == 0 && i + 1 < argc) {
+      level = std::atoi(argv[++i]);
+      libm = false;
     } else {
       std::fprintf(stderr,
                    "usage: %s [--refine N] [--exhaustive] [--only FN|conv] [--no-libm] "
-                   "[--renderer]\n",
+                   "[--renderer] [--level 0|1|2]\n",
                    argv[0]);
       return 2;
     }
@@ -110,8 +115,9 @@ int main(int argc, char** argv) {
   for (Fn f : {Fn::sqrt, Fn::floor, Fn::sin, Fn::cos, Fn::atan}) {
     if (!only.empty() && only != fn_name(f)) continue;
     if (libm) table_rows<minrt::LibmFloat>(f, refine, renderer_only);
-    table_rows<minrt::PortableFloatT<1>>(f, refine, renderer_only);
-    table_rows<minrt::PortableFloatT<2>>(f, refine, renderer_only);
+    if (level < 0 || level == 0) table_rows<minrt::PortableFloatT<0>>(f, refine, renderer_only);
+    if (level < 0 || level == 1) table_rows<minrt::PortableFloatT<1>>(f, refine, renderer_only);
+    if (level < 0 || level == 2) table_rows<minrt::PortableFloatT<2>>(f, refine, renderer_only);
   }
   if (only.empty() || only == "conv") {
     // Odd strides, so that every low bit pattern occurs.
