@@ -33,6 +33,7 @@ const char* variant_name(Variant v) {
     case ShimSet::kLibm: return LibmFloat::name;
     case ShimSet::kPortable: return PortableFloat::name;
     case ShimSet::kPortableFast: return PortableFloatFast::name;
+    case ShimSet::kPortableMin: return PortableFloatMin::name;
   }
   return nullptr;
 }
@@ -48,6 +49,7 @@ RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const Render
     case ShimSet::kLibm: return run<LibmFloat>(in, out, options, error, warnings);
     case ShimSet::kPortable: return run<PortableFloat>(in, out, options, error, warnings);
     case ShimSet::kPortableFast: return run<PortableFloatFast>(in, out, options, error, warnings);
+    case ShimSet::kPortableMin: return run<PortableFloatMin>(in, out, options, error, warnings);
   }
   return RenderStatus::kBadOptions;
 }

@@ -9,7 +9,7 @@
 namespace minrt::host {
 
 enum class Precision { kDouble, kFloat };
-enum class ShimSet { kLibm, kPortable, kPortableFast };
+enum class ShimSet { kLibm, kPortable, kPortableFast, kPortableMin };
 
 struct Variant {
   Precision precision = Precision::kDouble;
