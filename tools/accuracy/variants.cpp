@@ -42,6 +42,8 @@ const std::vector<Variant>& all_variants() {
       {"float/portable", "float-portable", &render_host<Precision::kFloat, ShimSet::kPortable>},
       {"float/portable-fast", "float-portable-fast",
        &render_host<Precision::kFloat, ShimSet::kPortableFast>},
+      {"float/portable-min", "float-portable-min",
+       &render_host<Precision::kFloat, ShimSet::kPortableMin>},
       {"float/portable+fma", "float-portable-fma", &render_portable_fma},
   };
   return list;
