@@ -1,4 +1,4 @@
-// Instantiates every function of both portable levels, for the riscv32
+// Instantiates every function of every portable level, for the riscv32
 // freestanding compile check (test/shims/freestanding_check.cmake).
 #include "math_portable.hpp"
 
@@ -16,6 +16,7 @@ void use_all(volatile float* f, volatile int* i) {
 }  // namespace
 
 extern "C" void minrt_shims_use_all(volatile float* f, volatile int* i) {
+  use_all<minrt::PortableFloatT<0>>(f, i);
   use_all<minrt::PortableFloatT<1>>(f, i);
   use_all<minrt::PortableFloatT<2>>(f, i);
 }
