@@ -27,6 +27,7 @@ VARIANTS = [  # (name, file tag), reference first
     ("float/libm", "float-libm"),
     ("float/portable", "float-portable"),
     ("float/portable-fast", "float-portable-fast"),
+    ("float/portable-min", "float-portable-min"),
     ("float/portable+fma", "float-portable-fma"),
 ]
 REF = "double-libm"
@@ -347,6 +348,8 @@ def main():
     w("| float/libm | `LibmFloat`: float with glibc's `sqrtf sinf cosf atanf floorf` |")
     w("| float/portable | `PortableFloat`: float shims from add/sub/mul/div only; the firmware's model |")
     w("| float/portable-fast | `PortableFloatFast`: the cheaper shims (within 2.6 ULP) |")
+    w("| float/portable-min | `PortableFloatMin`: the cheapest shims that still meet the course's "
+      "error rules (2^-18 sin/cos, 2^-20 sqrt/atan; docs/shims.md) |")
     w("| float/portable+fma | `PortableFloat` compiled with `-ffp-contract=fast -mfma -O2` "
       "(tools/accuracy/fma_variant.cpp): the compiler fuses a*b+c into one rounding, "
       "as an FPU with `fmadd.s` and a contracting compiler would |\n")
@@ -413,6 +416,17 @@ def main():
          "host instructions. " if callgrind.get("float-portable-fast") and
          callgrind.get("float-portable") else "")
       + "Against the original it is about as far as float/portable.")
+    fmin = totals(course, "float-portable-min", 1)
+    fminr = totals(course, "float-portable-min", 0)
+    w(f"- **float/portable-min** (the minimum the course's error rules allow) moves "
+      f"{fmin['diff']} pixels away from float/portable ({fmin['over8']} by more than 8) on the "
+      f"course scenes ({fminr['diff']} from the original, {fminr['over8']} by more than 8), for "
+      + (f"{1 - callgrind['float-portable-min'] / callgrind['float-portable']:.1%} fewer "
+         "host instructions than float/portable"
+         + (f" and {1 - callgrind['float-portable-min'] / callgrind['float-portable-fast']:.1%} "
+            "fewer than float/portable-fast" if callgrind.get("float-portable-fast") else "")
+         + "." if callgrind.get("float-portable-min") and callgrind.get("float-portable")
+         else "its instruction count see the speed table."))
     w(f"- **Multiply-add contraction changes the picture more than any choice of shims:** "
       f"float/portable+fma differs from float/portable on {fm['diff']} pixels "
       f"({fm['over8']} by more than 8) but is not closer to the original ({fmr['diff']} "
