@@ -1,6 +1,7 @@
 #include "uart.hpp"
 
 #include <poll.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,16 +12,24 @@ namespace fwsim {
 namespace {
 constexpr uint8_t kLcrDlab = 0x80;
 constexpr uint32_t kRegIer = 1, kRegLcr = 3, kRegScr = 7;
+// Empty polls answered at full speed before the host is waited for.
+constexpr uint64_t kSpinPolls = 4096;
 }  // namespace
 
 bool Uart::fill_input() {
   if (in_pos_ < in_buf_.size()) return true;
   if (eof_) return false;
-  // Never block: the firmware decides whether to wait by polling LSR. While
-  // it polls in vain, ask the host only every 64th time (a syscall each).
+  // The firmware decides whether to wait by polling LSR. While it polls in
+  // vain, ask the host only every 64th time (a syscall each), and once it
+  // has waited a while, let that syscall wait up to 100 us for a byte: a
+  // spinning simulator would otherwise take the CPU from the program that
+  // is about to send (host-send on a loaded 2-core machine), and an idle
+  // count would run out before a slow host answers. Data still wakes it at
+  // once; simulated time is not affected.
   if (idle_polls_ % 64 != 0) return false;
   pollfd p{cfg_.in_fd, POLLIN, 0};
-  int r = ::poll(&p, 1, 0);
+  const timespec wait{0, idle_polls_ >= kSpinPolls ? 100000 : 0};
+  int r = ::ppoll(&p, 1, &wait, nullptr);
   if (r < 0 && errno == EINTR) return false;
   if (r == 0) return false;
   in_buf_.resize(4096);

@@ -37,8 +37,10 @@
  * image), so silence there means a slow or damaged line, or a lost host:
  * the firmware allows this many times the idle polls before giving up
  * (saturating; 0 still waits forever). At the default that is about 1e9
- * polls: over a minute in firmware-sim, longer than host-send's longest
- * retry interval (30 s). */
+ * polls: a minute or more on a 100 MHz board, longer than host-send's
+ * longest retry interval (30 s); far longer in firmware-sim, which waits for
+ * its host between polls. A host that goes away closes the line, and that
+ * ends the input at once. */
 #define MINRT_FRAMED_IDLE_FACTOR 1024
 
 /* Halt status. */
