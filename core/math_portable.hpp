@@ -19,7 +19,7 @@
 //   PortableFloatT<0> (= PortableFloatMin, "float/portable-min"): the fewest
 //     operations that still meet those rules: sqrt as the bare Newton
 //     estimate, cos degree 6 without compensation, atan degree 9 after one
-//     division, a shorter Cody-Waite pi/2; up to 3.3 ULP (2^-21.8).
+//     division, a shorter Cody-Waite pi/2; up to 3.4 ULP (2^-21.8).
 //
 // Everything assumes the build's -ffp-contract=off and IEEE binary32 with
 // round-to-nearest-even; the compensated steps below rely on both.
