@@ -236,11 +236,19 @@ inline constexpr float kPio2MinTail = 0x1.68c234p-39f;
 // later steps are exact whenever the remainder is small, and otherwise round
 // at a relative 2^-24 of a remainder that is not small.  With Tail, the
 // later roundings are also captured (two_sum) in lo.
+// The nearest multiple k of pi/2 below 2^13, as an integer and a float.
+struct NearestQuadrant {
+  u32 k;
+  float kf;
+};
+constexpr NearestQuadrant nearest_quadrant(float ax) {
+  const float t = ax * kTwoOverPi + kRoundMagic;
+  return {bits_of(t) - bits_of(kRoundMagic), t - kRoundMagic};
+}
+
 template <bool Tail>
 constexpr Reduced reduce_cody_waite(float ax) {
-  const float t = ax * kTwoOverPi + kRoundMagic;
-  const u32 k = bits_of(t) - bits_of(kRoundMagic);
-  const float kf = t - kRoundMagic;
+  const auto [k, kf] = nearest_quadrant(ax);
   float r = ax - kf * kPio2Pieces[0];
   r = r - kf * kPio2Pieces[1];
   if constexpr (!Tail) {
@@ -339,9 +347,7 @@ constexpr Reduced reduce_payne_hanek(u32 ab) {
 // Level 0: three 11-bit pieces and the float tail of the rest of pi/2 (one
 // step fewer than level 1; docs/shims.md measures it against 2^-18).
 constexpr Reduced reduce_cody_waite_min(float ax) {
-  const float t = ax * kTwoOverPi + kRoundMagic;
-  const u32 k = bits_of(t) - bits_of(kRoundMagic);
-  const float kf = t - kRoundMagic;
+  const auto [k, kf] = nearest_quadrant(ax);
   float r = ax - kf * kPio2Pieces[0];
   r = r - kf * kPio2Pieces[1];
   r = r - kf * kPio2Pieces[2];
