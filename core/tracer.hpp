@@ -510,7 +510,7 @@ class Tracer {
         }
         if (aa != R(0)) c[4] = R(1.0) / aa;
         else c[1] = R(__builtin_nan(""));
-        c[5] = !m.inverted && c[4] > R(0) ? R(0) : R(__builtin_nan(""));
+        c[5] = aa != R(0) && !m.inverted && c[4] > R(0) ? R(0) : R(__builtin_nan(""));
       }
     }
   }
@@ -709,8 +709,10 @@ class Tracer {
     for (int k = 0; k < 3; ++k) toward_light_flip_[k] = light_[k] > R(0);
     for (int r = 0; r < n_or_rows_; ++r) {
       OrRow& row = or_rows_[r];
-      ShadowLimits all{{-nan, -nan, -nan}};
-      bool first = true;
+      // The highest limit of the row's networks per axis, NaN when one of
+      // them has none; a row without networks shadows nothing at all.
+      const R inf = R(__builtin_inf());
+      ShadowLimits all{{-inf, -inf, -inf}};
       for (int n = 0; row.nets[n] != nullptr; ++n) {
         ShadowLimits& lim = row.shadow[n];
         lim = ShadowLimits{{nan, nan, nan}};
@@ -722,13 +724,10 @@ class Tracer {
             if (!(lim.limit[k] <= x)) lim.limit[k] = x;  // the lowest, NaN replaced
           }
         }
-        for (int k = 0; k < 3; ++k) {
-          // NaN (some network unlimited on k) stays NaN.
-          if (first || all.limit[k] < lim.limit[k] || lim.limit[k] != lim.limit[k]) all.limit[k] = lim.limit[k];
-        }
-        first = false;
+        for (int k = 0; k < 3; ++k)
+          if (all.limit[k] < lim.limit[k] || lim.limit[k] != lim.limit[k]) all.limit[k] = lim.limit[k];
       }
-      row.shadow_all = first ? ShadowLimits{{nan, nan, nan}} : all;
+      row.shadow_all = all;
     }
   }
 
