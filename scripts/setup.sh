@@ -4,9 +4,23 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
-packages=(cmake make g++ clang lld llvm catch2 pkg-config libusb-1.0-0-dev
-          qemu-user qemu-system-misc gcc-riscv64-unknown-elf valgrind
-          python3 python3-matplotlib)
+# One package a line, so that changes to the list merge cleanly.
+packages=(
+  cmake make g++ pkg-config
+  clang lld llvm
+  libclang-rt-14-dev        # sanitizers and libFuzzer
+  catch2
+  libusb-1.0-0-dev
+  zlib1g-dev libpng-dev     # PNG output and textures
+  libtiff-dev               # EASTRAY .tif output
+  libsdl2-dev               # the live window
+  xvfb xauth                # window tests without a display
+  gdb-multiarch             # the simulator's GDB stub test
+  help2man man-db           # man pages
+  qemu-user qemu-system-misc gcc-riscv64-unknown-elf
+  valgrind
+  python3 python3-matplotlib
+)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
