@@ -12,9 +12,9 @@ void place_boot_args(Bus& bus, HartState& hart, const std::vector<std::string>& 
   const uint32_t top = kRamBase + bus.ram_size();
   uint32_t need = static_cast<uint32_t>((args.size() + 1) * 4 + 16 + 4);
   for (const auto& a : args) need += static_cast<uint32_t>(a.size() + 1);
-  if (need > FWSIM_BOOT_ARGS_MAX || need > bus.ram_size() / 2)
+  if (need > MINRT_BOOT_ARGS_MAX || need > bus.ram_size() / 2)
     throw std::runtime_error("firmware arguments too long (limit " +
-                             std::to_string(FWSIM_BOOT_ARGS_MAX) + " bytes)");
+                             std::to_string(MINRT_BOOT_ARGS_MAX) + " bytes)");
   uint32_t p = top;
   std::vector<uint32_t> ptrs;
   for (const auto& a : args) {
@@ -32,7 +32,7 @@ void place_boot_args(Bus& bus, HartState& hart, const std::vector<std::string>& 
   hart.x[10] = static_cast<uint32_t>(args.size());
   hart.x[11] = argv;
   hart.x[12] = top;
-  hart.x[13] = FWSIM_BOOT_MAGIC;
+  hart.x[13] = MINRT_BOOT_MAGIC;
   hart.x[2] = argv & ~15u;
 }
 

@@ -3,8 +3,8 @@
 #include <memory>
 #include <new>
 
-#include "math_libm.hpp"
-#include "math_portable.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
 
 namespace minrt::host {
 namespace {

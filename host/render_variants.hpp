@@ -2,9 +2,9 @@
 // time. Each one is a separate instantiation of the same core template.
 #pragma once
 
-#include "byte_io.hpp"
-#include "diagnostic.hpp"
-#include "render.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "render/minrt/render.hpp"
 
 namespace minrt::host {
 

@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "byte_io.hpp"
+#include "core/base/byte_io.hpp"
 
 namespace minrt::host {
 

@@ -1,7 +1,7 @@
 /* Entry point: set up the C++ environment and run main(argc, argv).
  *
- * firmware-sim passes argc/argv in a0/a1 with a3 = MINRT_FW_BOOT_MAGIC and sp
- * already below its argument block (firmware_sim/boot_args.hpp); anything
+ * firmware-sim passes argc/argv in a0/a1 with a3 = MINRT_BOOT_MAGIC and sp
+ * already below its argument block (include/minrt/boot_args.h); anything
  * else (QEMU -M virt: a0 = hart id, a1 = device tree) gets the linker
  * script's stack and main(0, NULL), i.e. the build-time defaults. */
 #include <minrt/memory_map.h>
@@ -28,7 +28,7 @@ _start:
   bne a4, t0, 0f
   mv s4, a5
 0:
-  li t0, MINRT_FW_BOOT_MAGIC
+  li t0, MINRT_BOOT_MAGIC
   beq a3, t0, 1f
   la sp, __stack_top
   li a0, 0

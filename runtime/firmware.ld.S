@@ -9,15 +9,6 @@
 #include <minrt/memory_map.h>
 #include "firmware_layout.h"
 
-#if __has_include("boot_args.hpp")
-#include "boot_args.hpp"
-#if FWSIM_BOOT_ARGS_MAX > MINRT_FW_BOOT_ARGS_RESERVE
-#error "MINRT_FW_BOOT_ARGS_RESERVE is smaller than firmware-sim's argument block"
-#endif
-#if FWSIM_BOOT_MAGIC != MINRT_FW_BOOT_MAGIC
-#error "MINRT_FW_BOOT_MAGIC differs from firmware-sim's FWSIM_BOOT_MAGIC"
-#endif
-#endif
 
 OUTPUT_ARCH(riscv)
 ENTRY(_start)

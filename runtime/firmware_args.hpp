@@ -1,5 +1,5 @@
 // The firmware's command line (passed by firmware-sim, see
-// firmware_sim/boot_args.hpp; empty under QEMU):
+// include/minrt/boot_args.h; empty under QEMU):
 //
 //   --size WxH         image size, 1..4096 each
 //   --format p3|p6     PPM flavour
@@ -14,8 +14,8 @@
 
 #include <stdint.h>
 
-#include "diagnostic.hpp"
-#include "render.hpp"
+#include "core/base/diagnostic.hpp"
+#include "render/minrt/render.hpp"
 
 #ifndef MINRT_FW_DEFAULT_WIDTH
 #define MINRT_FW_DEFAULT_WIDTH 512

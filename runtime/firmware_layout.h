@@ -8,16 +8,14 @@
 #ifndef MINRT_FIRMWARE_LAYOUT_H
 #define MINRT_FIRMWARE_LAYOUT_H
 
+#include <minrt/boot_args.h>
+
 /* Stack bytes below __stack_top. The measured high-water mark for
  * contest.sld at 512x512 is in docs/firmware.md; keep a wide margin. */
 #define MINRT_FW_STACK_SIZE 0x8000
 
-/* Kept free at the top of RAM for the argument block firmware-sim writes
- * (firmware_sim/boot_args.hpp: FWSIM_BOOT_ARGS_MAX). */
-#define MINRT_FW_BOOT_ARGS_RESERVE 0x1000
-
-/* a3 at entry when firmware-sim passed argc/argv (FWSIM_BOOT_MAGIC). */
-#define MINRT_FW_BOOT_MAGIC 0x41524756
+/* Kept free at the top of RAM for the argument block firmware-sim writes. */
+#define MINRT_FW_BOOT_ARGS_RESERVE MINRT_BOOT_ARGS_MAX
 
 /* crt0 fills the stack with this word; the footprint report finds the
  * deepest word that no longer holds it. */

@@ -2,7 +2,7 @@
 
 #include <stdint.h>
 
-#include "diagnostic.hpp"
+#include "core/base/diagnostic.hpp"
 #include "firmware_layout.h"
 
 extern "C" {

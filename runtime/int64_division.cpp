@@ -1,7 +1,7 @@
 // Unsigned 64-bit division for RV32, which has no instruction for it: the
 // compiler calls __udivdi3/__umoddi3 (normally from libgcc or compiler-rt,
 // which the firmware does not link). Needed by the course protocol's exact
-// float formatting (host/send/protocol_course.hpp). Shift and subtract,
+// float formatting (protocol/protocol_course.hpp). Shift and subtract,
 // with a 32-bit fast path.
 #include <stdint.h>
 

@@ -5,28 +5,28 @@
 //
 // --protocol=course and --protocol=framed run the board side of host-send's
 // other two protocols (docs/host-send.md) with the code the stand-in board
-// in test/host_send runs too: host/send/protocol_{course,framed}_board.hpp.
+// in test/host_send runs too: protocol/protocol_{course,framed}_board.hpp.
 // The course protocol's first stage is a boot loader: an uploaded program
 // is loaded and started instead of this renderer.
 #include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
 
-#include "diagnostic.hpp"
+#include "core/base/diagnostic.hpp"
 #include "firmware_args.hpp"
 #include "footprint.hpp"
-#include "math_portable.hpp"
-#include "math_rv32f.hpp"
+#include "core/math/math_portable.hpp"
+#include "core/math/math_rv32f.hpp"
 #include "ns16550.hpp"
 #include "program_loader.hpp"
-#include "protocol_course_board.hpp"
-#include "protocol_framed_board.hpp"
-#include "render.hpp"
+#include "protocol/protocol_course_board.hpp"
+#include "protocol/protocol_framed_board.hpp"
+#include "render/minrt/render.hpp"
 #include "serial_stream.hpp"
 
 namespace {
 
 // PortableFloat as the host's `--shims portable`; with MINRT_FW_HW_SQRT the
-// square root is fsqrt.s (same bits, see core/math_rv32f.hpp) where the ISA
+// square root is fsqrt.s (same bits, see core/math/math_rv32f.hpp) where the ISA
 // has it.
 #if MINRT_FW_HW_SQRT
 using Math = minrt::PortableFloatHwSqrt;
@@ -53,7 +53,7 @@ int status_of(minrt::RenderStatus status) {
   return MINRT_STATUS_SCENE_ERROR;
 }
 
-// Course protocol (host/send/protocol_course_board.hpp). Stage 1, the boot
+// Course protocol (protocol/protocol_course_board.hpp). Stage 1, the boot
 // stage: 0x99, then the program. Length 0 means "no program": this image
 // renders. Otherwise the program is loaded at MINRT_PROGRAM_LOAD_ADDR and
 // started there (program_loader.hpp); a program started that way (this
@@ -91,7 +91,7 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
   return MINRT_STATUS_OK;
 }
 
-// Framed protocol (host/send/protocol_framed_board.hpp): the frame and
+// Framed protocol (protocol/protocol_framed_board.hpp): the frame and
 // scene buffers and a 3*W*H-byte row store come from the arena (without
 // room for the store the rows are sent once but Q cannot be answered); the
 // scene renders as P6 into the RowFramer.

@@ -6,7 +6,7 @@
 
 #include <minrt/memory_map.h>
 
-#include "diagnostic.hpp"
+#include "core/base/diagnostic.hpp"
 #include "ns16550.hpp"
 #include "program_loader.hpp"
 

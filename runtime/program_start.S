@@ -16,7 +16,7 @@ minrt_start_program:
   mv a5, a3
   li a3, 0
   beqz a1, 1f            /* no argv: the program takes its build defaults */
-  li a3, MINRT_FW_BOOT_MAGIC
+  li a3, MINRT_BOOT_MAGIC
 1:
   li a2, 0
   li t0, MINRT_PROGRAM_LOAD_ADDR

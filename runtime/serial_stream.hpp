@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "byte_io.hpp"
+#include "core/base/byte_io.hpp"
 #include "ns16550.hpp"
 
 namespace minrt::fw {

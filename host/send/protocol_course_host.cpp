@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "protocol_course.hpp"
+#include "protocol/protocol_course.hpp"
 
 namespace minrt::send {
 

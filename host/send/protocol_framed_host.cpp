@@ -10,8 +10,8 @@
 
 #include <minrt/serial_protocol.h>
 
-#include "ppm_writer.hpp"
-#include "protocol_framed.hpp"
+#include "core/image/ppm_writer.hpp"
+#include "protocol/protocol_framed.hpp"
 
 namespace minrt::send {
 

@@ -19,7 +19,7 @@
 #define MINRT_PROGRAM_MAX_SIZE 0x00100000 /* 1 MiB of code and data */
 
 /* Registers at the program's entry (runtime/program_start.S):
- *   a0, a1, a3, sp   argc, argv, FWSIM_BOOT_MAGIC and the stack as the boot
+ *   a0, a1, a3, sp   argc, argv, MINRT_BOOT_MAGIC and the stack as the boot
  *                    loader got them from firmware-sim (a3 = 0 without them)
  *   a4               MINRT_PROGRAM_HANDOFF_MAGIC: a5 is valid
  *   a5               MINRT_PROGRAM_LOADED | MINRT_PROGRAM_BIG_ENDIAN if the

@@ -1,9 +1,9 @@
 // One render through the core for the freestanding link check: the byte I/O
 // is a pair of function pointers, so the only external symbols left are
 // those of the math policy and the compiler's memory routines.
-#include "math_libm.hpp"
-#include "math_portable.hpp"
-#include "render.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "render/minrt/render.hpp"
 
 namespace {
 alignas(16) unsigned char g_arena[1 << 20];

@@ -6,7 +6,7 @@ set -euo pipefail
 clangxx=$1 lld=$2 nm=$3 src=$4 out=$5
 mkdir -p "$out"
 common=(-std=c++20 -O2 -ffreestanding -nostdlib -fno-exceptions -fno-rtti -ffp-contract=off
-        -I"$src/core" -I"$src/include")
+        -I"$src" -I"$src/include")
 mem="memcpy memset memmove"
 check() {  # name march mabi policy allowed-symbols...
   local name=$1 march=$2 mabi=$3 policy=$4; shift 4

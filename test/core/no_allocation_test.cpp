@@ -8,9 +8,9 @@
 #include <new>
 #include <string>
 
-#include "math_libm.hpp"
-#include "math_portable.hpp"
-#include "render.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "render/minrt/render.hpp"
 #include "test_support.hpp"
 
 namespace {

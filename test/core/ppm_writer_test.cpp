@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "math_libm.hpp"
-#include "math_portable.hpp"
-#include "ppm_writer.hpp"
-#include "tracer.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "core/image/ppm_writer.hpp"
+#include "render/minrt/tracer.hpp"
 
 namespace {
 

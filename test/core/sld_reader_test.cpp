@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "sld_reader.hpp"
+#include "formats/sld/scene.hpp"
+#include "formats/sld/sld_reader.hpp"
 
 namespace {
 

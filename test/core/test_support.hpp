@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "diagnostic.hpp"
-#include "render.hpp"
+#include "core/base/diagnostic.hpp"
+#include "render/minrt/render.hpp"
 #include "render_variants.hpp"
 
 namespace minrt::test {

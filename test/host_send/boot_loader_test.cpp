@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "protocol_course.hpp"
+#include "protocol/protocol_course.hpp"
 #include "test_support.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "crc32.hpp"
+#include "protocol/crc32.hpp"
 
 using minrt::send::crc32;
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "protocol_course.hpp"
+#include "protocol/protocol_course.hpp"
 #include "protocol_course_host.hpp"
-#include "protocol_framed.hpp"
+#include "protocol/protocol_framed.hpp"
 #include "protocol_framed_host.hpp"
 #include "test_support.hpp"
 

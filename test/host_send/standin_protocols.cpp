@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "protocol_course_board.hpp"
-#include "protocol_framed_board.hpp"
+#include "protocol/protocol_course_board.hpp"
+#include "protocol/protocol_framed_board.hpp"
 
 namespace standin {
 

@@ -1,5 +1,5 @@
 // The stand-in board's course and framed protocols: the board side the
-// firmware runs too (host/send/protocol_{course,framed}_board.hpp) over the
+// firmware runs too (protocol/protocol_{course,framed}_board.hpp) over the
 // stand-in's pty.
 #pragma once
 
@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <functional>
 
-#include "byte_io.hpp"
-#include "diagnostic.hpp"
-#include "render.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "render/minrt/render.hpp"
 
 namespace standin {
 

@@ -1,7 +1,7 @@
 # cmake -P script: compile freestanding_tu.cpp for riscv32 and check the
 # object's undefined symbols and instructions.
 #   CLANGXX, NM, OBJDUMP: tools; SRC: the TU; OBJ: output object;
-#   MARCH, MABI: target; CORE_DIR: core/ (the only include directory);
+#   MARCH, MABI: target; CORE_DIR: the repository root (the only include directory);
 #   ALLOWED_UNDEF: regex every undefined symbol must match ("" = none allowed);
 #   FORBIDDEN_INSNS: regex of mnemonics that must not appear in the code.
 execute_process(

@@ -1,6 +1,6 @@
 // Instantiates every function of every portable level, for the riscv32
 // freestanding compile check (test/shims/freestanding_check.cmake).
-#include "math_portable.hpp"
+#include "core/math/math_portable.hpp"
 
 namespace {
 template <class P>

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "math_portable.hpp"
+#include "core/math/math_portable.hpp"
 #include "ulp_stats.hpp"
 
 using namespace shim_ulp;

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string_view>
 
-#include "math_portable.hpp"
+#include "core/math/math_portable.hpp"
 #include "ulp_stats.hpp"
 
 using minrt::PortableFloatT;

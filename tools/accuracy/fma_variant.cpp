@@ -13,8 +13,8 @@
 #include "variants.hpp"
 
 #define minrt minrt_fma_build
-#include "math_portable.hpp"
-#include "render.hpp"
+#include "core/math/math_portable.hpp"
+#include "render/minrt/render.hpp"
 #undef minrt
 
 namespace minrt_accuracy {

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Regenerates the constants of core/math_portable.hpp (run with Debian's
+"""Regenerates the constants of core/math/math_portable.hpp (run with Debian's
 python3-mpmath: /usr/bin/python3 tools/shim_ulp/gen_coeffs.py).
 
 Polynomials: Chebyshev interpolation (mpmath.chebyfit, near-minimax) of the

@@ -15,8 +15,8 @@
 #include <cstring>
 #include <string>
 
-#include "math_libm.hpp"
-#include "math_portable.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
 #include "ulp_stats.hpp"
 
 namespace {

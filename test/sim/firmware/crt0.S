@@ -1,4 +1,4 @@
-/* Minimal crt0 following firmware_sim/boot_args.hpp: keep sp and take
+/* Minimal crt0 following include/minrt/boot_args.h: keep sp and take
  * argc/argv from a0/a1 when a3 holds the boot magic (firmware-sim), else set
  * sp from the linker script and call main(0, 0) (QEMU -M virt). */
   .section .text.start, "ax"
@@ -8,7 +8,7 @@ _start:
   li t0, 0x6000          /* mstatus.FS = dirty: QEMU starts with the FPU off */
   csrs mstatus, t0
   csrwi fcsr, 0
-  li t0, 0x41524756      /* FWSIM_BOOT_MAGIC */
+  li t0, 0x41524756      /* MINRT_BOOT_MAGIC */
   beq a3, t0, 1f
   la sp, __stack_top
   li a0, 0

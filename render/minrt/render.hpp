@@ -8,14 +8,14 @@
 
 #include <minrt/limits.hpp>
 
-#include "arena.hpp"
-#include "byte_io.hpp"
-#include "diagnostic.hpp"
-#include "math_policy.hpp"
-#include "ppm_writer.hpp"
-#include "scene.hpp"
-#include "sld_reader.hpp"
-#include "tracer.hpp"
+#include "core/base/arena.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "core/math/math_policy.hpp"
+#include "core/image/ppm_writer.hpp"
+#include "formats/sld/scene.hpp"
+#include "formats/sld/sld_reader.hpp"
+#include "render/minrt/tracer.hpp"
 
 namespace minrt {
 

@@ -27,7 +27,7 @@
 
 #include <stdint.h>
 
-#include "math_policy.hpp"
+#include "core/math/math_policy.hpp"
 
 namespace minrt {
 namespace portable_detail {

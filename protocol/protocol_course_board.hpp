@@ -12,9 +12,9 @@
 
 #include <minrt/serial_protocol.h>
 
-#include "byte_io.hpp"
-#include "diagnostic.hpp"
-#include "protocol_course.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "protocol/protocol_course.hpp"
 
 namespace minrt::send::course {
 

@@ -7,9 +7,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "byte_io.hpp"
-#include "diagnostic.hpp"
-#include "protocol_framed.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "protocol/protocol_framed.hpp"
 
 namespace minrt::send::framed {
 

@@ -5,7 +5,7 @@
 // operations include sqrt; sin, cos and atan stay in software.
 #pragma once
 
-#include "math_portable.hpp"
+#include "core/math/math_portable.hpp"
 
 namespace minrt {
 

@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "bigint.hpp"
+#include "core/base/bigint.hpp"
 
 namespace minrt {
 

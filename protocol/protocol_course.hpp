@@ -18,7 +18,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "byte_io.hpp"
+#include "core/base/byte_io.hpp"
 
 namespace minrt::send::course {
 

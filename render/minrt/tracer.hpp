@@ -11,10 +11,10 @@
 
 #include <minrt/limits.hpp>
 
-#include "arena.hpp"
-#include "math_policy.hpp"
-#include "ppm_writer.hpp"
-#include "scene.hpp"
+#include "core/base/arena.hpp"
+#include "core/math/math_policy.hpp"
+#include "core/image/ppm_writer.hpp"
+#include "formats/sld/scene.hpp"
 
 // The innermost solver steps run millions of times per image; keep them in
 // their callers' loops.

@@ -21,8 +21,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "byte_io.hpp"
-#include "crc32.hpp"
+#include "core/base/byte_io.hpp"
+#include "protocol/crc32.hpp"
 
 namespace minrt::send::framed {
 

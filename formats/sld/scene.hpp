@@ -6,7 +6,7 @@
 
 #include <minrt/limits.hpp>
 
-#include "diagnostic.hpp"
+#include "core/base/diagnostic.hpp"
 
 namespace minrt {
 

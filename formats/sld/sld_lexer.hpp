@@ -5,8 +5,8 @@
 
 #include <minrt/limits.hpp>
 
-#include "byte_io.hpp"
-#include "diagnostic.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
 
 namespace minrt {
 

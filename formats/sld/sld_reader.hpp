@@ -8,9 +8,9 @@
 
 #include <minrt/limits.hpp>
 
-#include "number_parse.hpp"
-#include "scene.hpp"
-#include "sld_lexer.hpp"
+#include "core/base/number_parse.hpp"
+#include "formats/sld/scene.hpp"
+#include "formats/sld/sld_lexer.hpp"
 
 namespace minrt {
 

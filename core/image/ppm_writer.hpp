@@ -5,7 +5,7 @@
 
 #include <stdint.h>
 
-#include "byte_io.hpp"
+#include "core/base/byte_io.hpp"
 
 namespace minrt {
 
