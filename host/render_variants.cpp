@@ -5,12 +5,14 @@
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "protocol/course_word_values.hpp"
 
 namespace minrt::host {
 namespace {
 
-template <MathPolicy M>
-RenderStatus run(ByteSource in, ByteSink out, const RenderOptions& options, Diagnostic& error,
+// `make.template operator()<R>()` gives the scene's value source for real type R.
+template <MathPolicy M, class MakeValues>
+RenderStatus run(const MakeValues& make, ByteSink out, const RenderOptions& options, Diagnostic& error,
                  const WarningSink& warnings) {
   // The one allocation: sized from the limits and the width, before reading.
   const int width = valid_size(options.width, options.height) ? options.width : 1;
@@ -22,7 +24,25 @@ RenderStatus run(ByteSource in, ByteSink out, const RenderOptions& options, Diag
     return RenderStatus::kOutOfMemory;
   }
   Arena arena(buffer.get(), bytes);
-  return render_sld<M>(in, out, options, *state, arena, error, warnings);
+  return render_sld_values<M>(make.template operator()<typename M::real>(), out, options, *state, arena, error,
+                              warnings);
+}
+
+template <class MakeValues>
+RenderStatus dispatch(Variant v, const MakeValues& make, ByteSink out, const RenderOptions& options,
+                      Diagnostic& error, const WarningSink& warnings) {
+  if (variant_name(v) == nullptr) {
+    error.text("this precision and shim combination is not built");
+    return RenderStatus::kBadOptions;
+  }
+  if (v.precision == Precision::kDouble) return run<LibmDouble>(make, out, options, error, warnings);
+  switch (v.shims) {
+    case ShimSet::kLibm: return run<LibmFloat>(make, out, options, error, warnings);
+    case ShimSet::kPortable: return run<PortableFloat>(make, out, options, error, warnings);
+    case ShimSet::kPortableFast: return run<PortableFloatFast>(make, out, options, error, warnings);
+    case ShimSet::kPortableMin: return run<PortableFloatMin>(make, out, options, error, warnings);
+  }
+  return RenderStatus::kBadOptions;
 }
 
 }  // namespace
@@ -40,18 +60,16 @@ const char* variant_name(Variant v) {
 
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
                             Diagnostic& error, const WarningSink& warnings) {
-  if (variant_name(v) == nullptr) {
-    error.text("this precision and shim combination is not built");
-    return RenderStatus::kBadOptions;
-  }
-  if (v.precision == Precision::kDouble) return run<LibmDouble>(in, out, options, error, warnings);
-  switch (v.shims) {
-    case ShimSet::kLibm: return run<LibmFloat>(in, out, options, error, warnings);
-    case ShimSet::kPortable: return run<PortableFloat>(in, out, options, error, warnings);
-    case ShimSet::kPortableFast: return run<PortableFloatFast>(in, out, options, error, warnings);
-    case ShimSet::kPortableMin: return run<PortableFloatMin>(in, out, options, error, warnings);
-  }
-  return RenderStatus::kBadOptions;
+  return dispatch(v, [&]<class R>() { return SldTextValues<R>(in); }, out, options, error, warnings);
+}
+
+RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_endian, ByteSink out,
+                                         const RenderOptions& options, Diagnostic& error,
+                                         const WarningSink& warnings) {
+  const auto endian = big_endian ? send::course::Endian::kBig : send::course::Endian::kLittle;
+  return dispatch(
+      v, [&]<class R>() { return send::course::CourseWordValues<R>(words, endian); }, out, options, error,
+      warnings);
 }
 
 }  // namespace minrt::host

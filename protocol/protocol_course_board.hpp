@@ -14,6 +14,7 @@
 
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
+#include "protocol/course_word_values.hpp"
 #include "protocol/protocol_course.hpp"
 
 namespace minrt::send::course {
@@ -71,14 +72,13 @@ inline ProgramResult receive_program(ByteSource in, ByteSink out, Endian endian,
   return ProgramResult::kReceived;
 }
 
-// Stage 2: sends 0xaa and hands `render` the scene words as SLD text
-// (SceneTextSource). `render(ByteSource scene)` returns false with the
-// reason in `error`, which then goes out as the error line.
+// Stage 2: sends 0xaa and hands `render` the line the scene words arrive on
+// (read them with CourseWordValues). `render(ByteSource words)` returns false
+// with the reason in `error`, which then goes out as the error line.
 template <class Render>
-bool serve_scene(ByteSource in, ByteSink out, Endian endian, Render&& render, Diagnostic& error) {
+bool serve_scene(ByteSource in, ByteSink out, Render&& render, Diagnostic& error) {
   out.put(&kSceneRequest, 1);
-  SceneTextSource text(in, endian);
-  if (render(text.source())) return true;
+  if (render(in)) return true;
   write_error_line(out, error);
   return false;
 }

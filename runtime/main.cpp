@@ -80,9 +80,10 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
   minrt::fw::SerialOutput image(uart, options.footprint);
   minrt::RenderStatus status = minrt::RenderStatus::kOk;
   const bool ok = serve_scene(
-      in, out, endian,
-      [&](minrt::ByteSource scene) {
-        status = minrt::render_sld<Math>(scene, image.sink(), options.render, g_state, arena, error);
+      in, out,
+      [&](minrt::ByteSource words) {
+        status = minrt::render_sld_values<Math>(CourseWordValues<Math::real>(words, endian), image.sink(),
+                                                options.render, g_state, arena, error);
         return status == minrt::RenderStatus::kOk;
       },
       error);

@@ -8,16 +8,17 @@
 
 #include <minrt/limits.hpp>
 
-#include "core/base/number_parse.hpp"
 #include "formats/sld/scene.hpp"
-#include "formats/sld/sld_lexer.hpp"
+#include "formats/sld/sld_values.hpp"
 
 namespace minrt {
 
-template <class R>
+// Values: where the numbers come from (sld_values.hpp); SLD text by default.
+template <class R, class Values = SldTextValues<R>>
 class SldReader {
  public:
-  SldReader(ByteSource in, const WarningSink& warnings) : lex_(in), warnings_(warnings) {}
+  SldReader(ByteSource in, const WarningSink& warnings) : values_(in), warnings_(warnings) {}
+  SldReader(const Values& values, const WarningSink& warnings) : values_(values), warnings_(warnings) {}
 
   // Returns false with `error` filled when the input is not a valid scene.
   bool read(Scene<R>& scene, Diagnostic& error) {
@@ -59,7 +60,7 @@ class SldReader {
         return true;
       }
       if (n == limits::kMaxObjects)
-        return fail(last_.pos, Diagnostic{}
+        return fail(values_.pos(), Diagnostic{}
                                    .text("too many objects: the format allows at most ")
                                    .number(limits::kMaxObjects)
                                    .text(" (or a missing -1 after the objects)"));
@@ -68,7 +69,7 @@ class SldReader {
   }
 
   bool read_object(SceneObject<R>& o, int n, int64_t texture) {
-    o.pos = last_.pos;
+    o.pos = values_.pos();
     o.texture = saturate(texture);
     int64_t form = 0, refl = 0, rot = 0;
     if (!integer(form, {"form", "object", n}) || !integer(refl, {"reflection type", "object", n}) ||
@@ -133,19 +134,19 @@ class SldReader {
         if (!integer(v, {"object index", "AND network", n})) return false;
         if (v == -1) break;
         if (n == limits::kMaxAndNetworkDefinitions)
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("too many AND networks: at most ")
                                      .number(limits::kMaxAndNetworkDefinitions)
                                      .text(" may be defined"));
         if (n == limits::kMaxAndNetworks && len == 0)
-          warn(last_.pos, Diagnostic{}
+          warn(values_.pos(), Diagnostic{}
                               .text("AND networks from ")
                               .number(n)
                               .text(" on exceed the original's ")
                               .number(limits::kMaxAndNetworks)
                               .text("; no OR network may use them"));
         if (v < 0 || v >= s.object_count)
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("AND network ")
                                      .number(n)
                                      .text(" refers to object ")
@@ -154,7 +155,7 @@ class SldReader {
                                      .number(s.object_count)
                                      .text(" objects are defined"));
         if (len == limits::kMaxAndNetworkLength)
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("AND network ")
                                      .number(n)
                                      .text(" has more than ")
@@ -181,12 +182,12 @@ class SldReader {
           return false;
         if (v == -1) break;
         if (n == limits::kMaxOrNetworks)
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("too many OR networks: at most ")
                                      .number(limits::kMaxOrNetworks)
                                      .text(" are allowed"));
         if (len == 0 && v != limits::kNoRangePrimitive && (v < 0 || v >= s.object_count))
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("OR network ")
                                      .number(n)
                                      .text(" has range primitive ")
@@ -200,7 +201,7 @@ class SldReader {
           // defined; the original reads the missing ones as empty. Accept such
           // a run past the last defined network; reject any other reference.
           if (previous == s.and_count - 1)
-            warn(last_.pos, Diagnostic{}
+            warn(values_.pos(), Diagnostic{}
                                 .text("OR network ")
                                 .number(n)
                                 .text(" lists undefined AND networks from ")
@@ -211,7 +212,7 @@ class SldReader {
           continue;
         }
         if (len > 0 && v >= limits::kMaxAndNetworks && v < s.and_count)
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("OR network ")
                                      .number(n)
                                      .text(" refers to AND network ")
@@ -222,7 +223,7 @@ class SldReader {
                                      .number(limits::kMaxAndNetworks - 1)
                                      .text(") can be used, as in the original"));
         if (len > 0 && (v < 0 || v >= s.and_count))
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("OR network ")
                                      .number(n)
                                      .text(" refers to AND network ")
@@ -231,7 +232,7 @@ class SldReader {
                                      .number(s.and_count)
                                      .text(" AND networks are defined"));
         if (len == limits::kMaxOrNetworkLength)
-          return fail(last_.pos, Diagnostic{}
+          return fail(values_.pos(), Diagnostic{}
                                      .text("OR network ")
                                      .number(n)
                                      .text(" has more than ")
@@ -248,44 +249,39 @@ class SldReader {
     }
   }
 
-  // --- tokens -------------------------------------------------------------
+  // --- values -------------------------------------------------------------
 
-  bool token(const What& what) {
-    switch (lex_.next(last_)) {
-      case SldLexer::Result::kToken:
-        return true;
-      case SldLexer::Result::kEnd:
-        return fail(lex_.position(), describe(Diagnostic{}.text("unexpected end of input: expected "), what));
-      case SldLexer::Result::kTooLong:
-        return fail(last_.pos, describe(Diagnostic{}.text("token longer than ")
-                                            .number(limits::kMaxTokenLength)
-                                            .text(" bytes where "),
-                                        what)
-                                   .text(" was expected"));
+  // The messages for a value that could not be read; the same whichever
+  // source the value came from.
+  bool bad_value(ValueStatus st, const What& what, const char* expected) {
+    Diagnostic d;
+    switch (st) {
+      case ValueStatus::kEnd:
+        return fail(values_.pos(), describe(d.text("unexpected end of input: expected "), what));
+      case ValueStatus::kTooLong:
+        return fail(values_.pos(), describe(d.text("token longer than ")
+                                                .number(limits::kMaxTokenLength)
+                                                .text(" bytes where "),
+                                            what)
+                                       .text(" was expected"));
+      case ValueStatus::kNonFinite:
+        describe(d.text("non-finite value for "), what).text(": ").quoted(values_.text(), values_.length());
+        return fail(values_.pos(), d);
+      default:
+        describe(d.text(expected), what).text(", got ").quoted(values_.text(), values_.length());
+        if (st == ValueStatus::kOutOfRange) d.text(" (out of range)");
+        return fail(values_.pos(), d);
     }
-    return false;
   }
 
   bool integer(int64_t& out, const What& what) {
-    if (!token(what)) return false;
-    const NumberStatus st = parse_int(last_.text, last_.length, out);
-    if (st == NumberStatus::kOk) return true;
-    Diagnostic d;
-    describe(d.text("expected an integer for "), what).text(", got ").quoted(last_.text, last_.length);
-    if (st == NumberStatus::kOutOfRange) d.text(" (out of range)");
-    return fail(last_.pos, d);
+    const ValueStatus st = values_.next_int(out);
+    return st == ValueStatus::kOk || bad_value(st, what, "expected an integer for ");
   }
 
   bool real(R& out, const What& what) {
-    if (!token(what)) return false;
-    const NumberStatus st = parse_real(last_.text, last_.length, out);
-    if (st == NumberStatus::kOk) return true;
-    Diagnostic d;
-    if (st == NumberStatus::kNonFinite)
-      describe(d.text("non-finite value for "), what).text(": ").quoted(last_.text, last_.length);
-    else
-      describe(d.text("expected a number for "), what).text(", got ").quoted(last_.text, last_.length);
-    return fail(last_.pos, d);
+    const ValueStatus st = values_.next_real(out);
+    return st == ValueStatus::kOk || bad_value(st, what, "expected a number for ");
   }
 
   static Diagnostic& describe(Diagnostic& d, const What& what) {
@@ -312,10 +308,9 @@ class SldReader {
     return static_cast<int32_t>(v);
   }
 
-  SldLexer lex_;
+  Values values_;
   WarningSink warnings_;
   Diagnostic* error_ = nullptr;
-  Token last_;
 };
 
 }  // namespace minrt

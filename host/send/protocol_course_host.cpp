@@ -15,51 +15,6 @@
 
 namespace minrt::send {
 
-bool sld_to_course_words(const std::string& text, bool big_endian, std::string& words, std::string& error) {
-  const course::Endian endian = big_endian ? course::Endian::kBig : course::Endian::kLittle;
-  course::SceneLayout layout;
-  words.clear();
-  size_t i = 0;
-  int token_no = 0;
-  while (i < text.size() && !layout.done()) {
-    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-    if (i >= text.size()) break;
-    size_t j = i;
-    while (j < text.size() && !std::isspace(static_cast<unsigned char>(text[j]))) ++j;
-    const std::string tok = text.substr(i, j - i);
-    ++token_no;
-    i = j;
-    uint32_t bits = 0;
-    char* end = nullptr;
-    errno = 0;
-    if (layout.next() == course::Kind::kInt) {
-      const long v = std::strtol(tok.c_str(), &end, 10);
-      if (end == tok.c_str() || *end != 0 || errno != 0 || v < INT32_MIN || v > INT32_MAX) {
-        error = "token " + std::to_string(token_no) + " '" + tok.substr(0, 40) + "' should be an integer";
-        return false;
-      }
-      bits = static_cast<uint32_t>(static_cast<int32_t>(v));
-      layout.consume(static_cast<int32_t>(v));
-    } else {
-      const float f = std::strtof(tok.c_str(), &end);
-      if (end == tok.c_str() || *end != 0) {
-        error = "token " + std::to_string(token_no) + " '" + tok.substr(0, 40) + "' should be a number";
-        return false;
-      }
-      std::memcpy(&bits, &f, 4);
-      layout.consume(0);
-    }
-    uint8_t w[4];
-    course::put_u32(w, bits, endian);
-    words.append(reinterpret_cast<const char*>(w), 4);
-  }
-  if (!layout.done()) {
-    error = "the scene ends after " + std::to_string(token_no) + " numbers, before its final -1 (truncated)";
-    return false;
-  }
-  return true;
-}
-
 namespace {
 
 // Waits for `want`; other bytes before it are an error (an error line is

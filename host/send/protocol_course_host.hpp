@@ -12,8 +12,9 @@ struct CourseHostOptions {
   int handshake_timeout_ms = 30000;
 };
 
-// The scene as course words; false with a message when a token is not a
-// number of the kind expected there or the scene is incomplete.
+// The scene as course words, read by the core's SLD reader in single
+// precision (course_words.cpp); false with the reader's located message
+// ("LINE:COL: message", as the board reports it) for a scene it refuses.
 bool sld_to_course_words(const std::string& text, bool big_endian, std::string& words, std::string& error);
 
 // Waits for 0x99, sends the program (4-byte length + bytes), waits for 0xaa,

@@ -46,10 +46,12 @@ inline bool valid_size(int width, int height) {
          height <= limits::kMaxImageHeight;
 }
 
-template <MathPolicy M>
-RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& options,
-                        RenderState<M>& state, Arena& arena, Diagnostic& error,
-                        const WarningSink& warnings = {}) {
+// Renders the scene whose numbers `values` gives (sld_values.hpp: SLD text,
+// or the course protocol's words on the board).
+template <MathPolicy M, class Values>
+RenderStatus render_sld_values(const Values& values, ByteSink out, const RenderOptions& options,
+                               RenderState<M>& state, Arena& arena, Diagnostic& error,
+                               const WarningSink& warnings = {}) {
   using R = typename M::real;
   if (!valid_size(options.width, options.height)) {
     error.text("image size must be between 1x1 and ")
@@ -59,7 +61,7 @@ RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& option
     return RenderStatus::kBadOptions;
   }
   Scene<R>& scene = state.scene;
-  SldReader<R> reader(in, warnings);
+  SldReader<R, Values> reader(values, warnings);
   if (!reader.read(scene, error)) return RenderStatus::kSceneError;
   Tracer<M>& tracer = state.tracer;
   const size_t before = arena.used();
@@ -74,6 +76,14 @@ RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& option
   PpmWriter writer(out, options.format);
   tracer.render(writer);
   return RenderStatus::kOk;
+}
+
+// SLD text in.
+template <MathPolicy M>
+RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& options,
+                        RenderState<M>& state, Arena& arena, Diagnostic& error,
+                        const WarningSink& warnings = {}) {
+  return render_sld_values<M>(SldTextValues<typename M::real>(in), out, options, state, arena, error, warnings);
 }
 
 }  // namespace minrt

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "formats/sld/sld_reader.hpp"
+#include "protocol/course_word_values.hpp"
 #include "protocol/protocol_course.hpp"
 #include "protocol_course_host.hpp"
 #include "protocol/protocol_framed.hpp"
@@ -23,44 +26,22 @@ std::string ball() { return hs_test::shared_dir() + "/scenes/ball.sld"; }
 
 void append_fn(void* ctx, const uint8_t* d, size_t n) { static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(d), n); }
 
-// Runs a SceneTextSource over the words and returns the text it produces.
-std::string words_to_text(const std::string& words, course::Endian e) {
+// Reads a scene the board's way, from course words.
+bool read_words(const std::string& words, course::Endian e, minrt::Scene<float>& scene, minrt::Diagnostic& d) {
   minrt::MemorySource mem{reinterpret_cast<const uint8_t*>(words.data()), words.size()};
-  course::SceneTextSource text(mem.source(), e);
-  std::string out;
-  for (int c; (c = text.source().get()) >= 0;) out.push_back(static_cast<char>(c));
-  return out;
+  minrt::SldReader<float, course::CourseWordValues<float>> reader(course::CourseWordValues<float>(mem.source(), e),
+                                                                  minrt::WarningSink{});
+  return reader.read(scene, d);
+}
+
+// Reads a scene the host's way, from text.
+bool read_text(const std::string& text, minrt::Scene<float>& scene, minrt::Diagnostic& d) {
+  minrt::MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  minrt::SldReader<float> reader(mem.source(), minrt::WarningSink{});
+  return reader.read(scene, d);
 }
 
 }  // namespace
-
-TEST_CASE("exact float text reads back as the same float", "[course]") {
-  std::mt19937 rng(7);
-  std::vector<uint32_t> cases = {0x00000000u, 0x80000000u, 0x00000001u, 0x007FFFFFu, 0x00800000u, 0x7F7FFFFFu,
-                                 0x3F800000u, 0xBF800000u, 0x3DCCCCCDu, 0x42C80000u, 0xC2C80000u, 0x4B000001u};
-  for (int i = 0; i < 20000; ++i) {
-    uint32_t b = rng();
-    if (((b >> 23) & 0xFF) == 0xFF) continue;
-    cases.push_back(b);
-  }
-  char text[200];
-  for (uint32_t bits : cases) {
-    const size_t n = course::format_float_exact(bits, text);
-    REQUIRE(n < 190);
-    text[n] = 0;
-    const float back = std::strtof(text, nullptr);
-    uint32_t got;
-    std::memcpy(&got, &back, 4);
-    INFO(text);
-    CHECK(got == bits);
-  }
-  size_t n = course::format_float_exact(0x3F800000u, text);
-  CHECK(std::string(text, n) == "1");
-  n = course::format_float_exact(0xBFC00000u, text);
-  CHECK(std::string(text, n) == "-1.5");
-  n = course::format_float_exact(0x7F800000u, text);
-  CHECK(std::string(text, n) == "inf");
-}
 
 TEST_CASE("the course word layout follows min-rt's token order", "[course]") {
   // screen 5 floats, 1 light, light 3 floats, one rotated object, one plain,
@@ -78,21 +59,51 @@ TEST_CASE("the course word layout follows min-rt's token order", "[course]") {
   std::string big;
   REQUIRE(sld_to_course_words(sld, true, big, err));
   CHECK(course::get_u32(reinterpret_cast<const uint8_t*>(big.data()) + 20, course::Endian::kBig) == 1u);
-  // The board side turns the words back into text the SLD reader takes.
-  const std::string text = words_to_text(words, course::Endian::kLittle);
-  CHECK_THAT(text, Catch::StartsWith("0\n0\n-100\n0\n0\n1\n0.5\n-0.5\n255\n0\n2\n0\n1\n"));
-  CHECK_THAT(text, Catch::EndsWith("-1\n0\n-1\n-1\n99\n0\n-1\n-1\n"));
-  CHECK(words_to_text(big, course::Endian::kBig) == text);
+  // The board's reader takes the same values back from the words.
+  auto from_text = std::make_unique<minrt::Scene<float>>();
+  auto from_words = std::make_unique<minrt::Scene<float>>();
+  minrt::Diagnostic d;
+  REQUIRE(read_text(sld, *from_text, d));
+  REQUIRE(read_words(words, course::Endian::kLittle, *from_words, d));
+  CHECK(from_words->object_count == 2);
+  CHECK(from_words->objects[0].rotation_deg[2] == 30.0f);
+  CHECK(from_words->objects[1].color[0] == 255.0f);
+  CHECK(from_words->or_nets[0][0] == 99);
+  auto from_big = std::make_unique<minrt::Scene<float>>();
+  REQUIRE(read_words(big, course::Endian::kBig, *from_big, d));
+  CHECK(from_big->objects[0].abc[1] == from_text->objects[0].abc[1]);
 }
 
-TEST_CASE("the course converter refuses what it cannot encode", "[course]") {
+TEST_CASE("the course converter refuses what minrt refuses, with minrt's message", "[course]") {
   std::string words, err;
   CHECK_FALSE(sld_to_course_words("0 0 -100 0 0\n1.5 0 0 0\n", false, words, err));
-  CHECK_THAT(err, Catch::Contains("token 6 '1.5' should be an integer"));
+  CHECK(err == "2:1: expected an integer for light count, got '1.5'");
   CHECK_FALSE(sld_to_course_words("0 0 -100 abc 0\n", false, words, err));
-  CHECK_THAT(err, Catch::Contains("should be a number"));
+  CHECK(err == "1:10: expected a number for screen rotation (x axis), got 'abc'");
   CHECK_FALSE(sld_to_course_words("0 0 -100 0 0\n1 0 0 0\n-1\n", false, words, err));
-  CHECK_THAT(err, Catch::Contains("truncated"));
+  CHECK_THAT(err, Catch::StartsWith("4:1: unexpected end of input: expected object index of AND network 0"));
+  // The old tokenizer passed these; the core's lexer does not.
+  CHECK_FALSE(sld_to_course_words(std::string("0 0 -1\0" "00 0 0\n", 15), false, words, err));
+  CHECK_FALSE(sld_to_course_words("0 0 -100 0\f 0\n", false, words, err));
+  CHECK_FALSE(sld_to_course_words("0 0 " + std::string(257, '1') + " 0 0\n", false, words, err));
+  CHECK_THAT(err, Catch::Contains("token longer than 256 bytes"));
+}
+
+TEST_CASE("the course converter reads numbers by the core's rules", "[course]") {
+  // 0b1, 0o17 and 1_0 are OCaml integer spellings the core reads (the old
+  // strtol-based converter refused them).
+  const std::string sld =
+      "0 0 -100 0 0\n0b1 0.5 -0.5 255\n"
+      "0 0o2 0 0  1_0 1 1  0 0 0  1  0.5 0.5  255 0 0\n"
+      "-1\n0 -1\n-1\n99 0 -1\n-1\n";
+  std::string words, err;
+  REQUIRE(sld_to_course_words(sld, false, words, err));
+  auto scene = std::make_unique<minrt::Scene<float>>();
+  minrt::Diagnostic d;
+  REQUIRE(read_words(words, course::Endian::kLittle, *scene, d));
+  CHECK(scene->light_count == 1);
+  CHECK(scene->objects[0].form == 2);
+  CHECK(scene->objects[0].abc[0] == 10.0f);
 }
 
 TEST_CASE("frames survive the parser and damage is rejected", "[framed]") {
@@ -223,20 +234,37 @@ TEST_CASE("course and framed end to end against the stand-in board", "[e2e][cour
   check_course_and_framed(HS_STANDIN, HS_STANDIN, "32x24", ball());  // the stand-in drops the program
 }
 
-// Two bad scenes in course and framed mode through `sim_binary` running
-// `board`: the board's error (status 3), no image.
+// The scene error host-send reports: what follows "the board reported an
+// error: " (raw, framed) or "scene rejected before sending: " (course, whose
+// words are made by the same SLD reader on the host).
+static std::string scene_error(const std::string& err) {
+  for (const char* prefix : {"the board reported an error: ", "scene rejected before sending: "}) {
+    const std::size_t at = err.find(prefix);
+    if (at != std::string::npos) {
+      const std::size_t from = at + std::strlen(prefix);
+      return err.substr(from, err.find('\n', from) - from);
+    }
+  }
+  return "";
+}
+
+// Bad scenes over raw, course and framed through `sim_binary` running
+// `board`: status 3, no image, and the same message over every protocol.
 static void check_scene_errors(const std::string& sim_binary, const std::string& board) {
   hs_test::TempDir dir;
-  const std::string bad = hs_test::shared_dir() + "/bad/nan-value.sld";
-  const std::string bad2 = hs_test::shared_dir() + "/bad/too-many-objects.sld";
-  for (const char* proto : {"course", "framed"}) {
-    for (const auto& scene : {bad, bad2}) {
+  for (const char* name : {"nan-value", "too-many-objects", "non-numeric-token", "truncated-object"}) {
+    const std::string scene = hs_test::shared_dir() + "/bad/" + name + ".sld";
+    std::string first;
+    for (const char* proto : {"raw", "course", "framed"}) {
       const std::string out = dir.file("x.ppm");
       const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", sim_binary, "--sim", board, "--protocol", proto,
                                    "--size", "16x16", scene, "-o", out, "--first-byte-timeout", "20"});
       INFO(proto << " " << scene << "\n" << r.err);
       CHECK(r.status == 3);
-      CHECK_THAT(r.err, Catch::Contains("the board reported an error: "));
+      const std::string message = scene_error(r.err);
+      CHECK_FALSE(message.empty());
+      if (first.empty()) first = message;
+      CHECK(message == first);
       CHECK_FALSE(hs_test::file_exists(out));
     }
   }
@@ -287,4 +315,21 @@ TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", 
 TEST_CASE("course and framed scene errors from the firmware", "[e2e][course][framed][firmware][bad]") {
   HS_NEEDS_FIRMWARE();
   check_scene_errors(HS_FIRMWARE_SIM, HS_FIRMWARE_ELF);
+}
+
+TEST_CASE("a scene of exactly 60 objects renders over raw, course and framed on the firmware",
+          "[e2e][course][framed][firmware]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string scene = hs_test::shared_dir() + "/bad/sixty-objects-fifty-and-nets.sld";
+  const std::string reference = hs_test::reference_image(scene, "16x16", "p6");
+  REQUIRE_FALSE(reference.empty());
+  for (const char* proto : {"raw", "course", "framed"}) {
+    const std::string out = dir.file(std::string(proto) + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--protocol",
+                                 proto, "--size", "16x16", "--format", "p6", scene, "-o", out});
+    INFO(proto << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(hs_test::read_file(out) == reference);
+  }
 }

@@ -181,7 +181,13 @@ int main(int argc, char** argv) {
     };
     bool ok = false;
     if (protocol == "course") {
-      ok = standin::serve_course(link, render, big_endian);
+      standin::CourseRenderFn render_words = [&](minrt::ByteSource words, minrt::ByteSink out,
+                                                 minrt::Diagnostic& err) {
+        err = minrt::Diagnostic{};
+        return minrt::host::render_variant_course_words(variant, words, big_endian, out, options, err,
+                                                        minrt::WarningSink{}) == minrt::RenderStatus::kOk;
+      };
+      ok = standin::serve_course(link, render_words, big_endian);
     } else if (protocol == "framed") {
       options.format = minrt::PpmFormat::kP6;  // rows travel as binary RGB
       ok = standin::serve_framed(link, options, render);

@@ -27,7 +27,7 @@ void sink_fn(void* ctx, const uint8_t* p, size_t n) {
 
 }  // namespace
 
-bool serve_course(Link& link, const RenderFn& render, bool big_endian) {
+bool serve_course(Link& link, const CourseRenderFn& render, bool big_endian) {
   using namespace minrt::send::course;
   const Endian endian = big_endian ? Endian::kBig : Endian::kLittle;
   LinkSource words{&link};
@@ -39,7 +39,7 @@ bool serve_course(Link& link, const RenderFn& render, bool big_endian) {
   uint32_t length = 0;
   if (receive_program(in, out, endian, nullptr, MINRT_PROGRAM_MAX_SIZE, length, error) != ProgramResult::kReceived)
     return false;
-  return serve_scene(in, out, endian, [&](minrt::ByteSource scene) { return render(scene, out, error); }, error);
+  return serve_scene(in, out, [&](minrt::ByteSource words) { return render(words, out, error); }, error);
 }
 
 bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderFn& render) {

@@ -23,7 +23,10 @@ struct Link {
 // Renders the SLD text from `in` to `out`; false with the reason in `error`.
 using RenderFn = std::function<bool(minrt::ByteSource in, minrt::ByteSink out, minrt::Diagnostic& error)>;
 
-bool serve_course(Link& link, const RenderFn& render, bool big_endian);
+// Renders the course protocol's scene words from `words` to `out`.
+using CourseRenderFn = std::function<bool(minrt::ByteSource words, minrt::ByteSink out, minrt::Diagnostic& error)>;
+
+bool serve_course(Link& link, const CourseRenderFn& render, bool big_endian);
 bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderFn& render);
 
 }  // namespace standin
