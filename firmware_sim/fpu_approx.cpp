@@ -1,5 +1,6 @@
 #include "fpu_approx.hpp"
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -21,16 +22,8 @@ bool finite_nonzero(uint32_t a) {
 }
 bool is_subnormal(uint32_t a) { return (a & kInf) == 0 && (a & kFrac) != 0; }
 
-float as_float(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, 4);
-  return f;
-}
-uint32_t bits_of(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, 4);
-  return b;
-}
+float as_float(uint32_t b) { return std::bit_cast<float>(b); }
+uint32_t bits_of(float f) { return std::bit_cast<uint32_t>(f); }
 
 // A finite nonzero magnitude as significand (float bits in [1, 2)) times
 // 2^exp; subnormals are normalised first.

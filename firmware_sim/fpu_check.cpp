@@ -1,5 +1,6 @@
 #include "fpu_check.hpp"
 
+#include <bit>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -13,11 +14,7 @@ namespace {
 
 enum class Kind { Add, Sub, Mul, Div, Sqrt };
 
-double value(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, 4);
-  return f;
-}
+double value(uint32_t b) { return std::bit_cast<float>(b); }
 
 // The course's operand domain: zero, or normal with magnitude below 2^127.
 bool in_domain(uint32_t a) {

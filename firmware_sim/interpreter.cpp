@@ -10,6 +10,7 @@
 // are left to accumulate and merged into fflags when the firmware reads it.
 // Only NaN results need fixing (RISC-V returns the canonical NaN). Other
 // rounding modes and the fused ops go through the bit-exact soft FPU.
+#include <bit>
 #include <cstddef>
 #include <cstring>
 
@@ -23,14 +24,9 @@
 namespace fwsim {
 namespace {
 
-inline float as_float(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, 4);
-  return f;
-}
+inline float as_float(uint32_t b) { return std::bit_cast<float>(b); }
 inline uint32_t host_result(float r) {
-  uint32_t b;
-  std::memcpy(&b, &r, 4);
+  const uint32_t b = std::bit_cast<uint32_t>(r);
   return fpu::is_nan(b) ? fpu::kCanonicalNaN : b;
 }
 

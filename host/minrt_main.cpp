@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "core/base/text_numbers.hpp"
 #include "render_variants.hpp"
 #include "stdio_stream.hpp"
 
@@ -45,21 +46,6 @@ void print_help(std::FILE* f) {
   std::exit(kExitUsage);
 }
 
-bool parse_size(const char* s, int& w, int& h) {
-  char* end = nullptr;
-  errno = 0;
-  long a = std::strtol(s, &end, 10);
-  if (end == s || (*end != 'x' && *end != 'X')) return false;
-  const char* t = end + 1;
-  long b = std::strtol(t, &end, 10);
-  if (end == t || *end != 0 || errno != 0) return false;
-  if (a < 1 || b < 1 || a > minrt::limits::kMaxImageWidth || b > minrt::limits::kMaxImageHeight)
-    return false;
-  w = static_cast<int>(a);
-  h = static_cast<int>(b);
-  return true;
-}
-
 struct WarningContext {
   const char* file;
 };
@@ -92,7 +78,7 @@ int main(int argc, char** argv) {
       return 0;
     } else if (arg == "--size") {
       const char* v = value("--size");
-      if (!parse_size(v, options.width, options.height))
+      if (!minrt::parse_size(v, options.width, options.height))
         usage_error(std::string("bad --size '") + v + "': expected WxH, each 1..4096");
     } else if (arg == "--format") {
       const std::string v = value("--format");

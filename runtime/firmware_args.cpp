@@ -3,6 +3,8 @@
 #include <minrt/limits.hpp>
 #include <minrt/serial_protocol.h>
 
+#include "core/base/text_numbers.hpp"
+
 namespace minrt::fw {
 namespace {
 
@@ -18,30 +20,6 @@ int length(const char* s) {
   int n = 0;
   while (s[n] != 0) ++n;
   return n;
-}
-
-// Decimal digits up to `stop` (or the end); false when empty or above `max`.
-bool parse_decimal(const char*& s, char stop, uint32_t max, uint32_t& value) {
-  const char* start = s;
-  uint32_t v = 0;
-  for (; *s != 0 && *s != stop; ++s) {
-    if (*s < '0' || *s > '9') return false;
-    const uint32_t digit = static_cast<uint32_t>(*s - '0');
-    if (v > (max - digit) / 10) return false;
-    v = v * 10 + digit;
-  }
-  value = v;
-  return s != start;
-}
-
-bool parse_size(const char* s, RenderOptions& options) {
-  uint32_t w = 0;
-  uint32_t h = 0;
-  if (!parse_decimal(s, 'x', limits::kMaxImageWidth, w) || *s++ != 'x') return false;
-  if (!parse_decimal(s, 0, limits::kMaxImageHeight, h) || w == 0 || h == 0) return false;
-  options.width = static_cast<int>(w);
-  options.height = static_cast<int>(h);
-  return true;
 }
 
 Diagnostic& bad_value(Diagnostic& error, const char* option, const char* value) {
@@ -62,7 +40,7 @@ bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic
     }
     if (equal(arg, "--size")) {
       const char* v = argv[++i];
-      if (!parse_size(v, options.render)) {
+      if (!parse_size(v, options.render.width, options.render.height)) {
         bad_value(error, arg, v).text("WxH, each 1..").number(limits::kMaxImageWidth);
         return false;
       }

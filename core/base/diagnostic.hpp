@@ -2,6 +2,8 @@
 // without printf so the core stays freestanding.
 #pragma once
 
+#include "core/base/text_numbers.hpp"
+
 #include <stdint.h>
 
 namespace minrt {
@@ -12,13 +14,6 @@ struct SourcePos {
 };
 
 struct Diagnostic {
-  // p / 10 for a power of ten p >= 10, by table instead of division.
-  static uint64_t tenth(uint64_t p) {
-    uint64_t q = 1;
-    while (q * 10 != p) q *= 10;
-    return q;
-  }
-
   SourcePos pos;
   bool has_pos = false;
   char message[200] = {};
@@ -30,27 +25,8 @@ struct Diagnostic {
     return *this;
   }
   Diagnostic& number(int64_t v) {
-    // Digits by subtracting powers of ten: no 64-bit division, which a
-    // 32-bit target would have to call a runtime routine for.
-    uint64_t u = v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-    char out[24];
-    int n = 0;
-    if (v < 0) out[n++] = '-';
-    bool started = false;
-    for (uint64_t p = 10000000000000000000ull;; ) {
-      char d = '0';
-      while (u >= p) {
-        u -= p;
-        ++d;
-      }
-      if (d != '0' || started || p == 1) {
-        out[n++] = d;
-        started = true;
-      }
-      if (p == 1) break;
-      p = tenth(p);
-    }
-    out[n] = 0;
+    char out[21];
+    out[format_decimal(v, out)] = 0;
     return text(out);
   }
   // Quotes a token, escaping bytes that would garble a terminal and

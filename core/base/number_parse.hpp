@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "core/base/bigint.hpp"
+#include "core/base/bit_cast.hpp"
 
 namespace minrt {
 
@@ -241,7 +242,7 @@ NumberStatus parse_real(const char* s, int n, R& out) {
                             << (IeeeFormat<R>::kPrecision - 1);
   if ((bits & kExpMask) == kExpMask) return NumberStatus::kNonFinite;
   if (negative) bits |= Bits{1} << kSignShift;
-  out = __builtin_bit_cast(R, bits);
+  out = bit_cast<R>(bits);
   return NumberStatus::kOk;
 }
 

@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "core/base/byte_io.hpp"
+#include "core/base/text_numbers.hpp"
 
 namespace minrt {
 
@@ -55,16 +56,9 @@ class PpmWriter {
     if (used_ == sizeof buf_) flush();
     buf_[used_++] = static_cast<uint8_t>(c);
   }
-  void put_int(int v) {
-    char digits[12];
-    int n = 0;
-    unsigned u = v < 0 ? 0u - static_cast<unsigned>(v) : static_cast<unsigned>(v);
-    do {
-      digits[n++] = static_cast<char>('0' + u % 10);
-      u /= 10;
-    } while (u != 0);
-    if (v < 0) put('-');
-    while (n > 0) put(digits[--n]);
+  void put_int(int v) {  // v >= 0: clamped channels and image sizes
+    if (used_ + 10 > sizeof buf_) flush();
+    used_ += format_decimal_u32(static_cast<uint32_t>(v), reinterpret_cast<char*>(buf_ + used_));
   }
 
   ByteSink out_;

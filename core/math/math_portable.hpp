@@ -27,6 +27,7 @@
 
 #include <stdint.h>
 
+#include "core/base/bit_cast.hpp"
 #include "core/math/math_policy.hpp"
 
 namespace minrt {
@@ -43,8 +44,8 @@ inline constexpr u32 kFracMask = 0x007fffffu;
 inline constexpr u32 kHiddenBit = 0x00800000u;
 inline constexpr u32 kQuietNaN = 0x7fc00000u;
 
-constexpr u32 bits_of(float x) { return __builtin_bit_cast(u32, x); }
-constexpr float float_of(u32 b) { return __builtin_bit_cast(float, b); }
+constexpr u32 bits_of(float x) { return bit_cast<u32>(x); }
+constexpr float float_of(u32 b) { return bit_cast<float>(b); }
 constexpr bool nan_bits(u32 b) { return (b & kAbsMask) > kInfBits; }
 // Unbiased exponent field (subnormals and zero give -127, inf/NaN 128).
 constexpr int exponent_of(u32 b) { return int((b >> 23) & 0xffu) - 127; }

@@ -1,5 +1,7 @@
 #include "cli.hpp"
 
+#include "core/base/text_numbers.hpp"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -25,18 +27,6 @@
 namespace minrt::send {
 
 namespace {
-
-bool parse_size(const std::string& s, int& w, int& h) {
-  char* end = nullptr;
-  const long a = std::strtol(s.c_str(), &end, 10);
-  if (end == s.c_str() || (*end != 'x' && *end != 'X')) return false;
-  const char* t = end + 1;
-  const long b = std::strtol(t, &end, 10);
-  if (end == t || *end != 0 || a < 1 || b < 1 || a > 4096 || b > 4096) return false;
-  w = static_cast<int>(a);
-  h = static_cast<int>(b);
-  return true;
-}
 
 bool parse_seconds(const std::string& s, double& v) {
   char* end = nullptr;
@@ -192,7 +182,7 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
       }
     } else if (a == "--size") {
       if (!value(v)) return ParseResult::kError;
-      if (!parse_size(v, o.spec.width, o.spec.height)) {
+      if (!minrt::parse_size(v.c_str(), o.spec.width, o.spec.height)) {
         error = "bad --size '" + v + "': expected WxH, each 1..4096";
         return ParseResult::kError;
       }

@@ -1,6 +1,7 @@
 // Runs a few encoded instructions on a fresh Machine: registers are set
 // directly, the program ends with ebreak.
 #pragma once
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -22,8 +23,4 @@ struct Sim {
   fwsim::StopInfo run(uint64_t limit = 1'000'000) { return m.run(limit); }
 };
 
-inline uint32_t bits_of(float v) {
-  uint32_t b;
-  std::memcpy(&b, &v, 4);
-  return b;
-}
+inline uint32_t bits_of(float v) { return std::bit_cast<uint32_t>(v); }

@@ -1,6 +1,7 @@
 // The soft FPU against the host's IEEE single precision for the four
 // rounding modes the host has (RMM is covered by the QEMU differential test):
 // results (NaNs canonicalised) and all five flags must agree exactly.
+#include <bit>
 #include <catch2/catch.hpp>
 
 #include <cfenv>
@@ -12,16 +13,8 @@
 
 namespace {
 
-uint32_t bits(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, 4);
-  return b;
-}
-float flt(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, 4);
-  return f;
-}
+uint32_t bits(float f) { return std::bit_cast<uint32_t>(f); }
+float flt(uint32_t b) { return std::bit_cast<float>(b); }
 
 uint8_t host_flags() {
   int e = std::fetestexcept(FE_ALL_EXCEPT);

@@ -5,6 +5,7 @@
 // tests assert on exactly what docs/shims.md reports.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -64,16 +65,8 @@ float evaluate(Fn f, float x) {
   return 0.0f;
 }
 
-inline std::uint32_t bits_of(float x) {
-  std::uint32_t b;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
-}
-inline float float_of(std::uint32_t b) {
-  float x;
-  std::memcpy(&x, &b, sizeof x);
-  return x;
-}
+inline std::uint32_t bits_of(float x) { return std::bit_cast<std::uint32_t>(x); }
+inline float float_of(std::uint32_t b) { return std::bit_cast<float>(b); }
 
 // Floats in a monotone integer order: -0 and +0 are adjacent, and the
 // difference of two keys counts the floats between them.
