@@ -12,7 +12,7 @@ namespace {
 
 // `make.template operator()<R>()` gives the scene's value source for real type R.
 template <MathPolicy M, class MakeValues>
-RenderStatus run(const MakeValues& make, ByteSink out, const RenderOptions& options, Diagnostic& error,
+RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions& options, Diagnostic& error,
                  const WarningSink& warnings) {
   // The one allocation: sized from the limits and the width, before reading.
   const int width = valid_size(options.width, options.height) ? options.width : 1;
@@ -24,12 +24,12 @@ RenderStatus run(const MakeValues& make, ByteSink out, const RenderOptions& opti
     return RenderStatus::kOutOfMemory;
   }
   Arena arena(buffer.get(), bytes);
-  return render_sld_values<M>(make.template operator()<typename M::real>(), out, options, *state, arena, error,
-                              warnings);
+  return render_sld_rows<M>(make.template operator()<typename M::real>(), out, options, *state, arena, error,
+                            warnings);
 }
 
 template <class MakeValues>
-RenderStatus dispatch(Variant v, const MakeValues& make, ByteSink out, const RenderOptions& options,
+RenderStatus dispatch(Variant v, const MakeValues& make, const RowSink& out, const RenderOptions& options,
                       Diagnostic& error, const WarningSink& warnings) {
   if (variant_name(v) == nullptr) {
     error.text("this precision and shim combination is not built");
@@ -60,6 +60,12 @@ const char* variant_name(Variant v) {
 
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
                             Diagnostic& error, const WarningSink& warnings) {
+  PpmWriter ppm(out, options.format);
+  return render_variant_rows(v, in, ppm.sink(), options, error, warnings);
+}
+
+RenderStatus render_variant_rows(Variant v, ByteSource in, const RowSink& out, const RenderOptions& options,
+                                 Diagnostic& error, const WarningSink& warnings) {
   return dispatch(v, [&]<class R>() { return SldTextValues<R>(in); }, out, options, error, warnings);
 }
 
@@ -67,8 +73,9 @@ RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_e
                                          const RenderOptions& options, Diagnostic& error,
                                          const WarningSink& warnings) {
   const auto endian = big_endian ? send::course::Endian::kBig : send::course::Endian::kLittle;
+  PpmWriter ppm(out, options.format);
   return dispatch(
-      v, [&]<class R>() { return send::course::CourseWordValues<R>(words, endian); }, out, options, error,
+      v, [&]<class R>() { return send::course::CourseWordValues<R>(words, endian); }, ppm.sink(), options, error,
       warnings);
 }
 

@@ -23,6 +23,10 @@ const char* variant_name(Variant v);
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
                             Diagnostic& error, const WarningSink& warnings);
 
+// The same into a row sink.
+RenderStatus render_variant_rows(Variant v, ByteSource in, const RowSink& out, const RenderOptions& options,
+                                 Diagnostic& error, const WarningSink& warnings);
+
 // The same from the course protocol's scene words (what the board does).
 RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_endian, ByteSink out,
                                          const RenderOptions& options, Diagnostic& error,

@@ -196,14 +196,31 @@ class SceneCollector {
   bool broken_ = false;
 };
 
-// Board side, step 2: a ByteSink for the renderer's P6 output that sends
-// the H frame, then one D frame per finished row, keeping the pixels in
-// `store` (3*width*height bytes) to answer Q requests.
+// Board side, step 2: a row sink (begin, row, end; core/image/row_sink.hpp)
+// that sends the H frame, then one D frame per finished row, keeping the
+// pixels in `store` (3*width*height bytes) to answer Q requests.
 class RowFramer {
  public:
   RowFramer(ByteSink link, uint8_t* store, size_t capacity) : link_(link), store_(store), cap_(capacity) {}
 
-  ByteSink sink() { return ByteSink{&write_fn, this}; }
+  void begin(int width, int height) {
+    width_ = width;
+    height_ = height;
+    row_bytes_ = static_cast<size_t>(width) * 3;
+    fits_ = row_bytes_ * static_cast<size_t>(height) <= cap_ && row_bytes_ <= 0xFFFF;
+    send_header();
+  }
+  void row(int /*y*/, const uint8_t* rgb) {
+    if (fits_) {
+      uint8_t* dst = store_ + static_cast<size_t>(rows_) * row_bytes_;
+      for (size_t i = 0; i < row_bytes_; ++i) dst[i] = rgb[i];
+      send_row(static_cast<uint16_t>(rows_));
+    } else if (row_bytes_ <= 0xFFFF) {
+      write_frame(link_, kRow, static_cast<uint16_t>(rows_), rgb, static_cast<uint16_t>(row_bytes_));
+    }
+    ++rows_;
+  }
+  void end() {}
   // False if the image did not fit `store` (rows were still sent once).
   bool stored() const { return fits_; }
   int width() const { return width_; }
@@ -237,53 +254,13 @@ class RowFramer {
   }
 
  private:
-  static void write_fn(void* ctx, const uint8_t* data, size_t size) {
-    auto* self = static_cast<RowFramer*>(ctx);
-    for (size_t i = 0; i < size; ++i) self->byte(data[i]);
-  }
-  // The header "P6\nW H 255\n": four fields, then one whitespace byte.
-  void byte(uint8_t c) {
-    if (field_ < 4) {
-      const bool space = c == ' ' || c == '\n' || c == '\r' || c == '\t';
-      if (!space) {
-        if (field_ == 1 && c >= '0' && c <= '9') width_ = width_ * 10 + (c - '0');
-        if (field_ == 2 && c >= '0' && c <= '9') height_ = height_ * 10 + (c - '0');
-        in_field_ = true;
-        return;
-      }
-      if (!in_field_) return;
-      in_field_ = false;
-      if (++field_ == 4) {
-        row_bytes_ = static_cast<size_t>(width_) * 3;
-        fits_ = row_bytes_ * static_cast<size_t>(height_) <= cap_ && row_bytes_ <= 0xFFFF;
-        send_header();
-      }
-      return;
-    }
-    if (fits_) {
-      store_[static_cast<size_t>(rows_) * row_bytes_ + fill_] = c;
-    } else if (fill_ < sizeof spill_) {
-      spill_[fill_] = c;
-    }
-    if (++fill_ == row_bytes_) {
-      if (fits_) send_row(static_cast<uint16_t>(rows_));
-      else if (row_bytes_ <= sizeof spill_) write_frame(link_, kRow, static_cast<uint16_t>(rows_), spill_, static_cast<uint16_t>(row_bytes_));
-      ++rows_;
-      fill_ = 0;
-    }
-  }
-
   ByteSink link_;
   uint8_t* store_;
   size_t cap_;
-  int field_ = 0;
-  bool in_field_ = false;
   int width_ = 0, height_ = 0;
   size_t row_bytes_ = 0;
-  size_t fill_ = 0;
   int rows_ = 0;
   bool fits_ = false;
-  uint8_t spill_[3 * 4096] = {};
 };
 
 }  // namespace minrt::send::framed

@@ -67,16 +67,17 @@ inline void answer_requests(ByteSource in, ByteSink out, FrameParser& parser, Ro
   }
 }
 
-// The conversation: receive the scene, render it as P6 into `framer` (H,
-// one D frame per row), answer requests. `render(ByteSource scene, ByteSink
-// rows)` returns false with the reason in `error`, which goes out as X.
+// The conversation: receive the scene, render it into `framer` (H, one D
+// frame per row), answer requests. `render(ByteSource scene, RowFramer&
+// rows)` renders with the framer as its row sink and returns false with the
+// reason in `error`, which goes out as X.
 template <class Render>
 BoardResult serve_board(ByteSource in, ByteSink out, FrameParser& parser, SceneCollector& collector,
                         RowFramer& framer, Render&& render, Diagnostic& error) {
   const BoardResult got = receive_scene(in, out, parser, collector, error);
   if (got != BoardResult::kDone) return got;
   MemorySource scene{collector.data(), collector.size()};
-  if (!render(scene.source(), framer.sink())) {
+  if (!render(scene.source(), framer)) {
     write_error_frame(out, error);
     return BoardResult::kRenderFailed;
   }

@@ -95,7 +95,7 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
 // Framed protocol (protocol/protocol_framed_board.hpp): the frame and
 // scene buffers and a 3*W*H-byte row store come from the arena (without
 // room for the store the rows are sent once but Q cannot be answered); the
-// scene renders as P6 into the RowFramer.
+// scene renders into the RowFramer, a row sink.
 constexpr size_t kFramedPayload = 4096;
 constexpr size_t kFramedScene = 64 * 1024;
 
@@ -116,18 +116,17 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
     return MINRT_STATUS_OUT_OF_MEMORY;
   }
   minrt::RenderOptions render = options.render;
-  render.format = minrt::PpmFormat::kP6;  // rows travel as binary RGB
   const size_t store_size = static_cast<size_t>(render.width) * static_cast<size_t>(render.height) * 3;
   uint8_t* store = arena.alloc_zeroed<uint8_t>(store_size);
   FrameParser parser(payload, kFramedPayload);
   SceneCollector collector(scene, kFramedScene);
-  // Static: its one-row spill buffer is too big for the stack.
-  static RowFramer framer(out, store, store == nullptr ? 0 : store_size);
+  RowFramer framer(out, store, store == nullptr ? 0 : store_size);
   minrt::RenderStatus status = minrt::RenderStatus::kOk;
   const BoardResult result = serve_board(
       input.source(), out, parser, collector, framer,
-      [&](minrt::ByteSource src, minrt::ByteSink rows) {
-        status = minrt::render_sld<Math>(src, rows, render, g_state, arena, error);
+      [&](minrt::ByteSource src, RowFramer& rows) {
+        status = minrt::render_sld_rows<Math>(minrt::SldTextValues<Math::real>(src), minrt::row_sink_of(rows), render,
+                                              g_state, arena, error);
         return status == minrt::RenderStatus::kOk;
       },
       error);

@@ -1,12 +1,14 @@
 // Writes the image as the original prints it: "P3\nW H 255\n" then one
-// "R G B\n" line per pixel, or the same header with P6 and raw bytes.
-// Buffers a little and flushes after every row so rows stream as they finish.
+// "R G B\n" line per pixel, or the same header with P6 and raw bytes. A row
+// sink (row_sink.hpp): buffers a little and flushes after every row, so rows
+// stream as they finish.
 #pragma once
 
 #include <stdint.h>
 
 #include "core/base/byte_io.hpp"
 #include "core/base/text_numbers.hpp"
+#include "core/image/row_sink.hpp"
 
 namespace minrt {
 
@@ -15,6 +17,18 @@ enum class PpmFormat { kP3, kP6 };
 class PpmWriter {
  public:
   PpmWriter(ByteSink out, PpmFormat format) : out_(out), format_(format) {}
+
+  RowSink sink() { return row_sink_of(*this); }
+
+  void begin(int width, int height) {
+    width_ = width;
+    header(width, height);
+  }
+  void row(int /*y*/, const uint8_t* rgb) {
+    for (int x = 0; x < width_; ++x, rgb += 3) pixel(rgb[0], rgb[1], rgb[2]);
+    flush();
+  }
+  void end() { flush(); }
 
   void header(int width, int height) {
     put('P');
@@ -44,8 +58,6 @@ class PpmWriter {
     put('\n');
   }
 
-  void end_row() { flush(); }
-
   void flush() {
     if (used_ != 0) out_.put(buf_, used_);
     used_ = 0;
@@ -63,6 +75,7 @@ class PpmWriter {
 
   ByteSink out_;
   PpmFormat format_;
+  int width_ = 0;
   uint8_t buf_[1024];
   size_t used_ = 0;
 };

@@ -53,12 +53,9 @@ std::string framed_upload(const std::string& scene) {
 std::string framed_image(const ImageSpec& spec, const std::vector<std::vector<uint8_t>>& rows) {
   std::string out;
   PpmWriter w(ByteSink{&append_fn, &out}, spec.kind == PpmKind::kP3 ? PpmFormat::kP3 : PpmFormat::kP6);
-  w.header(spec.width, spec.height);
-  for (const auto& row : rows) {
-    for (size_t i = 0; i + 2 < row.size(); i += 3) w.pixel(row[i], row[i + 1], row[i + 2]);
-    w.end_row();
-  }
-  w.flush();
+  w.begin(spec.width, spec.height);
+  for (size_t y = 0; y < rows.size(); ++y) w.row(static_cast<int>(y), rows[y].data());
+  w.end();
   return out;
 }
 

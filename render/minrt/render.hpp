@@ -1,5 +1,6 @@
-// The core's one entry point: SLD bytes in, PPM bytes out, everything taken
-// from a fixed RenderState and one arena the platform provides. Nothing is
+// The min-rt renderer's entry points: SLD values in (text, or course words),
+// finished rows out to a RowSink (or PPM bytes), everything taken from a
+// fixed RenderState and one arena the platform provides. Nothing is
 // written unless the whole scene was read and checked, so a bad input never
 // leaves half an image.
 #pragma once
@@ -47,9 +48,9 @@ inline bool valid_size(int width, int height) {
 }
 
 // Renders the scene whose numbers `values` gives (sld_values.hpp: SLD text,
-// or the course protocol's words on the board).
+// or the course protocol's words on the board) into a row sink.
 template <MathPolicy M, class Values>
-RenderStatus render_sld_values(const Values& values, ByteSink out, const RenderOptions& options,
+RenderStatus render_sld_rows(const Values& values, const RowSink& out, const RenderOptions& options,
                                RenderState<M>& state, Arena& arena, Diagnostic& error,
                                const WarningSink& warnings = {}) {
   using R = typename M::real;
@@ -73,12 +74,20 @@ RenderStatus render_sld_values(const Values& values, ByteSink out, const RenderO
         .text(" available");
     return RenderStatus::kOutOfMemory;
   }
-  PpmWriter writer(out, options.format);
-  tracer.render(writer);
+  tracer.render(out);
   return RenderStatus::kOk;
 }
 
-// SLD text in.
+// The same as a PPM image (options.format) on a byte sink.
+template <MathPolicy M, class Values>
+RenderStatus render_sld_values(const Values& values, ByteSink out, const RenderOptions& options,
+                               RenderState<M>& state, Arena& arena, Diagnostic& error,
+                               const WarningSink& warnings = {}) {
+  PpmWriter writer(out, options.format);
+  return render_sld_rows<M>(values, writer.sink(), options, state, arena, error, warnings);
+}
+
+// SLD text in, PPM out: the original program.
 template <MathPolicy M>
 RenderStatus render_sld(ByteSource in, ByteSink out, const RenderOptions& options,
                         RenderState<M>& state, Arena& arena, Diagnostic& error,

@@ -13,7 +13,7 @@
 
 #include "core/base/arena.hpp"
 #include "core/math/math_policy.hpp"
-#include "core/image/ppm_writer.hpp"
+#include "core/image/row_sink.hpp"
 #include "formats/sld/scene.hpp"
 
 // The innermost solver steps run millions of times per image; keep them in
@@ -61,9 +61,11 @@ class Tracer {
     return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * 6) + pixel_line_bytes(width);
   }
 
-  // The three rows of per-pixel state the diffuse pass works on.
+  // The three rows of per-pixel state the diffuse pass works on, and the
+  // finished row handed to the sink.
   static constexpr size_t pixel_line_bytes(int width) {
-    return Arena::footprint<Pixel>(3 * static_cast<size_t>(width));
+    return Arena::footprint<Pixel>(3 * static_cast<size_t>(width)) +
+           Arena::footprint<uint8_t>(3 * static_cast<size_t>(width));
   }
 
   // Prepares everything the render needs. Returns false when the arena is
@@ -82,7 +84,8 @@ class Tracer {
     const int stride = consts_total(scene);
     R* consts = arena.alloc_zeroed<R>(size_t{kDirvecCount} * stride);
     Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<size_t>(width));
-    if (consts == nullptr || pixels == nullptr) return false;
+    row_ = arena.alloc_zeroed<uint8_t>(3 * static_cast<size_t>(width));
+    if (consts == nullptr || pixels == nullptr || row_ == nullptr) return false;
     for (int g = 0; g < kDirvecGroups; ++g)
       for (int i = 0; i < kDirvecsPerGroup; ++i)
         dirvecs_[g][i].c = consts + (g * kDirvecsPerGroup + i) * stride;
@@ -99,9 +102,9 @@ class Tracer {
     return true;
   }
 
-  // Renders and writes the whole image, header first, a row at a time.
-  void render(PpmWriter& out) {
-    out.header(width_, height_);
+  // Renders the whole image, handing each row to `out` as it is finished.
+  void render(const RowSink& out) {
+    out.begin(width_, height_);
     Pixel* prev = lines_[0];
     Pixel* cur = lines_[1];
     Pixel* next = lines_[2];
@@ -109,15 +112,15 @@ class Tracer {
     int group_id = 2;
     for (int y = 0; y < height_; ++y) {
       if (y < height_ - 1) pretrace_line(next, y + 1, group_id);
-      scan_pixels(y, prev, cur, next, out);
-      out.end_row();
+      scan_pixels(y, prev, cur, next);
+      out.row(y, row_);
       Pixel* old_prev = prev;
       prev = cur;
       cur = next;
       next = old_prev;
       group_id = add_mod5(group_id, 2);
     }
-    out.flush();
+    out.end();
   }
 
   int reflection_count() const { return n_reflections_; }
@@ -1077,14 +1080,17 @@ class Tracer {
     }
   }
 
-  void scan_pixels(int y, Pixel* prev, Pixel* cur, Pixel* next, PpmWriter& out) {
-    for (int x = 0; x < width_; ++x) {
+  void scan_pixels(int y, Pixel* prev, Pixel* cur, Pixel* next) {
+    uint8_t* rgb = row_;
+    for (int x = 0; x < width_; ++x, rgb += 3) {
       copy3(rgb_, cur[x].rgb);
       if (y + 1 < height_ && y > 0 && x + 1 < width_ && x > 0)
         try_exploit_neighbors(x, prev, cur, next);
       else
         do_without_neighbors(cur[x], 0);
-      out.pixel(pixel_channel<M>(rgb_[0]), pixel_channel<M>(rgb_[1]), pixel_channel<M>(rgb_[2]));
+      rgb[0] = static_cast<uint8_t>(pixel_channel<M>(rgb_[0]));
+      rgb[1] = static_cast<uint8_t>(pixel_channel<M>(rgb_[1]));
+      rgb[2] = static_cast<uint8_t>(pixel_channel<M>(rgb_[2]));
     }
   }
 
@@ -1191,6 +1197,7 @@ class Tracer {
   Reflection reflections_[kMaxReflections];
   int n_reflections_ = 0;
   Pixel* lines_[3] = {};
+  uint8_t* row_ = nullptr;  // the finished row, 3 bytes a pixel
 
   R solver_dist_ = 0;
   int intsec_rectside_ = 0;

@@ -28,31 +28,32 @@ struct Recorder {
 TEST_CASE("ppm: P3 header and pixels are printed like the original", "[ppm]") {
   Recorder rec;
   minrt::PpmWriter w(rec.sink(), minrt::PpmFormat::kP3);
-  w.header(512, 384);
-  w.pixel(0, 128, 255);
-  w.pixel(7, 10, 100);
-  w.end_row();
-  CHECK(rec.bytes == "P3\n512 384 255\n0 128 255\n7 10 100\n");
+  const uint8_t row[6] = {0, 128, 255, 7, 10, 100};
+  const minrt::RowSink sink = w.sink();
+  sink.begin(2, 384);
+  sink.row(0, row);
+  CHECK(rec.bytes == "P3\n2 384 255\n0 128 255\n7 10 100\n");
+  CHECK(rec.writes.size() == 1);  // the header waits for the first row: one write
 }
 
 TEST_CASE("ppm: P6 writes raw bytes after the same header", "[ppm]") {
   Recorder rec;
   minrt::PpmWriter w(rec.sink(), minrt::PpmFormat::kP6);
-  w.header(2, 1);
-  w.pixel(0, 128, 255);
-  w.pixel(10, 13, 32);
-  w.end_row();
+  const uint8_t row[6] = {0, 128, 255, 10, 13, 32};
+  w.begin(2, 1);
+  w.row(0, row);
+  w.end();
   CHECK(rec.bytes == std::string("P6\n2 1 255\n\x00\x80\xff\x0a\x0d\x20", 17));
 }
 
 TEST_CASE("ppm: each finished row reaches the sink at once", "[ppm]") {
   Recorder rec;
   minrt::PpmWriter w(rec.sink(), minrt::PpmFormat::kP3);
-  w.header(3, 2);
+  w.begin(3, 2);
   for (int y = 0; y < 2; ++y) {
     const size_t before = rec.bytes.size();
-    for (int x = 0; x < 3; ++x) w.pixel(x, y, 255);
-    w.end_row();
+    const uint8_t row[9] = {0, uint8_t(y), 255, 1, uint8_t(y), 255, 2, uint8_t(y), 255};
+    w.row(y, row);
     CHECK(rec.bytes.size() > before);
     CHECK(rec.bytes.back() == '\n');
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "formats/sld/sld_reader.hpp"
+#include "core/image/row_sink.hpp"
 #include "protocol/course_word_values.hpp"
 #include "protocol/protocol_course.hpp"
 #include "protocol_course_host.hpp"
@@ -143,13 +144,16 @@ TEST_CASE("framed overhead is under 1% at 512x512 P6", "[framed]") {
   SUCCEED("overhead " << 100.0 * overhead / payload << "%");
 }
 
-TEST_CASE("RowFramer turns P6 output into H and D frames and re-sends rows", "[framed]") {
+TEST_CASE("RowFramer turns finished rows into H and D frames and re-sends rows", "[framed]") {
   std::string wire;
   std::vector<uint8_t> store(4 * 3 * 3);
   framed::RowFramer framer(minrt::ByteSink{&append_fn, &wire}, store.data(), store.size());
-  std::string ppm = "P6\n4 3 255\n";
-  for (int i = 0; i < 36; ++i) ppm.push_back(static_cast<char>(i));
-  framer.sink().put(reinterpret_cast<const uint8_t*>(ppm.data()), ppm.size());
+  const minrt::RowSink rows = minrt::row_sink_of(framer);
+  uint8_t pixels[36];
+  for (int i = 0; i < 36; ++i) pixels[i] = static_cast<uint8_t>(i);
+  rows.begin(4, 3);
+  for (int y = 0; y < 3; ++y) rows.row(y, pixels + 12 * y);
+  rows.end();
   framer.send_end();
   CHECK(framer.stored());
   CHECK(framer.rows_sent() == 3);

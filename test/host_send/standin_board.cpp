@@ -189,8 +189,13 @@ int main(int argc, char** argv) {
       };
       ok = standin::serve_course(link, render_words, big_endian);
     } else if (protocol == "framed") {
-      options.format = minrt::PpmFormat::kP6;  // rows travel as binary RGB
-      ok = standin::serve_framed(link, options, render);
+      standin::RowRenderFn render_rows = [&](minrt::ByteSource src, const minrt::RowSink& rows,
+                                             minrt::Diagnostic& err) {
+        err = minrt::Diagnostic{};
+        return minrt::host::render_variant_rows(variant, src, rows, options, err, minrt::WarningSink{}) ==
+               minrt::RenderStatus::kOk;
+      };
+      ok = standin::serve_framed(link, options, render_rows);
     }
     st = ok ? minrt::RenderStatus::kOk : minrt::RenderStatus::kSceneError;
   }

@@ -42,7 +42,7 @@ bool serve_course(Link& link, const CourseRenderFn& render, bool big_endian) {
   return serve_scene(in, out, [&](minrt::ByteSource words) { return render(words, out, error); }, error);
 }
 
-bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderFn& render) {
+bool serve_framed(Link& link, const minrt::RenderOptions& options, const RowRenderFn& render) {
   using namespace minrt::send::framed;
   LinkSource bytes{&link};
   const minrt::ByteSource in{&LinkSource::read_fn, &bytes};
@@ -55,7 +55,7 @@ bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderF
   RowFramer framer(out, store.data(), store.size());
   minrt::Diagnostic error;
   return serve_board(in, out, parser, collector, framer,
-                     [&](minrt::ByteSource src, minrt::ByteSink rows) { return render(src, rows, error); },
+                     [&](minrt::ByteSource src, RowFramer& rows) { return render(src, minrt::row_sink_of(rows), error); },
                      error) == BoardResult::kDone;
 }
 

@@ -27,6 +27,9 @@ using RenderFn = std::function<bool(minrt::ByteSource in, minrt::ByteSink out, m
 using CourseRenderFn = std::function<bool(minrt::ByteSource words, minrt::ByteSink out, minrt::Diagnostic& error)>;
 
 bool serve_course(Link& link, const CourseRenderFn& render, bool big_endian);
-bool serve_framed(Link& link, const minrt::RenderOptions& options, const RenderFn& render);
+// Renders the SLD text from `in` into the row sink `rows`.
+using RowRenderFn = std::function<bool(minrt::ByteSource in, const minrt::RowSink& rows, minrt::Diagnostic& error)>;
+
+bool serve_framed(Link& link, const minrt::RenderOptions& options, const RowRenderFn& render);
 
 }  // namespace standin
