@@ -4,7 +4,7 @@
 
 #include <stdint.h>
 
-#include <minrt/limits.hpp>
+#include "formats/sld/sld_limits.hpp"
 
 #include "core/base/diagnostic.hpp"
 

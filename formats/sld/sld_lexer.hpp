@@ -3,7 +3,7 @@
 // Tracks the line and column of each token for error messages.
 #pragma once
 
-#include <minrt/limits.hpp>
+#include "formats/sld/sld_limits.hpp"
 
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"

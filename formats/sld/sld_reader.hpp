@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include <minrt/limits.hpp>
+#include "formats/sld/sld_limits.hpp"
 
 #include "formats/sld/scene.hpp"
 #include "formats/sld/sld_values.hpp"

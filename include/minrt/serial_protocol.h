@@ -43,6 +43,16 @@
  * ends the input at once. */
 #define MINRT_FRAMED_IDLE_FACTOR 1024
 
+/* The scene formats, by the tag a protocol uses to say which one it carries.
+ * Raw and course carry SLD (course by definition; raw by default); the
+ * other formats will travel with their tag in front of the scene. Values
+ * are fixed: boards and hosts of different versions must agree. */
+#define MINRT_SCENE_FORMAT_SLD 0
+#define MINRT_SCENE_FORMAT_CS418 1
+#define MINRT_SCENE_FORMAT_JAWORSKI 2
+#define MINRT_SCENE_FORMAT_MINIRT 3
+#define MINRT_SCENE_FORMAT_EASTRAY 4
+
 /* Halt status. */
 #define MINRT_STATUS_OK 0
 #define MINRT_STATUS_USAGE 2         /* bad firmware arguments (like `minrt`) */

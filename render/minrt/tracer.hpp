@@ -9,7 +9,7 @@
 
 #include <stdint.h>
 
-#include <minrt/limits.hpp>
+#include "formats/sld/sld_limits.hpp"
 
 #include "core/base/arena.hpp"
 #include "core/math/math_policy.hpp"
