@@ -1,0 +1,196 @@
+// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// AND/OR networks: inside/outside tests, shadows (with their per-axis
+// culling limits) and the nearest intersection.
+#pragma once
+
+#include "render/minrt/tracer_class.hpp"
+
+namespace minrt {
+
+template <MathPolicy M>
+MINRT_INLINE auto Tracer<M>::is_outside(const Object& m, R q0, R q1, R q2) -> bool {
+  const R p0 = q0 - m.center[0];
+  const R p1 = q1 - m.center[1];
+  const R p2 = q2 - m.center[2];
+  if (m.form == kFormBox) {
+    const bool inside = fabs(p0) < m.abc[0] && fabs(p1) < m.abc[1] && fabs(p2) < m.abc[2];
+    return inside ? m.inverted : !m.inverted;
+  }
+  if (m.form == kFormPlane) return m.inverted == (dot(m.abc, p0, p1, p2) < R(0));
+  return m.inverted == (quadric_constant(m, quadratic(m, p0, p1, p2)) < R(0));
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::build_networks(const Scene<R>& scene) -> void {
+  for (int n = 0; n < scene.and_count; ++n) {
+    int k = 0;
+    for (; scene.and_nets[n][k] != -1; ++k) net_objects_[n][k] = &objects_[scene.and_nets[n][k]];
+    net_objects_[n][k] = nullptr;
+  }
+  n_or_rows_ = scene.or_count;
+  for (int r = 0; r < scene.or_count; ++r) {
+    const int16_t* in = scene.or_nets[r];
+    OrRow& row = or_rows_[r];
+    row.range = in[0] == limits::kNoRangePrimitive ? nullptr : &objects_[in[0]];
+    int k = 1;
+    for (; in[k] != -1; ++k) row.nets[k - 1] = net_objects_[in[k]];
+    row.nets[k - 1] = nullptr;
+  }
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::all_inside(ObjectList and_net, R q0, R q1, R q2) -> bool {
+  for (; *and_net != nullptr; ++and_net)
+    if (is_outside(**and_net, q0, q1, q2)) return false;
+  return true;
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::shadow_and_group(ObjectList and_net) -> bool {
+  for (ObjectList e = and_net; *e != nullptr; ++e) {
+    const Object& obj = **e;
+    const int t0 = solver_fast(obj, light_dirvec_, intersection_point_);
+    const R t0p = solver_dist_;
+    if (t0 != 0 && t0p < R(-0.2)) {
+      const R t = t0p + R(0.01);
+      const R q0 = light_[0] * t + intersection_point_[0];
+      const R q1 = light_[1] * t + intersection_point_[1];
+      const R q2 = light_[2] * t + intersection_point_[2];
+      if (all_inside(and_net, q0, q1, q2)) return true;
+    } else if (!obj.inverted) {
+      // No hit on an object whose inside counts: the AND set lies within
+      // it, so nothing else of the set can be hit either.
+      return false;
+    }
+  }
+  return false;
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::in_shadow() -> bool {
+  // The start with each axis signed so that moving towards the light never
+  // decreases it (see setup_shadow_culling).
+  const R* p = intersection_point_;
+  const R x0 = toward_light_flip_[0] ? -p[0] : p[0];
+  const R x1 = toward_light_flip_[1] ? -p[1] : p[1];
+  const R x2 = toward_light_flip_[2] ? -p[2] : p[2];
+  for (int r = 0; r < n_or_rows_; ++r) {
+    const OrRow& row = or_rows_[r];
+    if (row.shadow_all.culls(x0, x1, x2)) continue;
+    if (row.range != nullptr &&
+        !(solver_fast(*row.range, light_dirvec_, intersection_point_) != 0 &&
+          solver_dist_ < R(-0.1)))
+      continue;
+    for (int k = 0; row.nets[k] != nullptr; ++k)
+      if (!row.shadow[k].culls(x0, x1, x2) && shadow_and_group(row.nets[k])) return true;
+  }
+  return false;
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::setup_shadow_culling() -> void {
+  const R nan = R(__builtin_nan(""));
+  for (int k = 0; k < 3; ++k) toward_light_flip_[k] = light_[k] > R(0);
+  for (int r = 0; r < n_or_rows_; ++r) {
+    OrRow& row = or_rows_[r];
+    // The highest limit of the row's networks per axis, NaN when one of
+    // them has none; a row without networks shadows nothing at all.
+    const R inf = R(__builtin_inf());
+    ShadowLimits all{{-inf, -inf, -inf}};
+    for (int n = 0; row.nets[n] != nullptr; ++n) {
+      ShadowLimits& lim = row.shadow[n];
+      lim = ShadowLimits{{nan, nan, nan}};
+      for (ObjectList e = row.nets[n]; *e != nullptr; ++e) {
+        const Object& m = **e;
+        if (!m.slab_bounded) continue;
+        for (int k = 0; k < 3; ++k) {
+          const R x = shadow_limit(m.center[k], m.slab[k], toward_light_flip_[k]);
+          if (!(lim.limit[k] <= x)) lim.limit[k] = x;  // the lowest, NaN replaced
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+        if (all.limit[k] < lim.limit[k] || lim.limit[k] != lim.limit[k]) all.limit[k] = lim.limit[k];
+    }
+    row.shadow_all = all;
+  }
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::shadow_limit(R center, R slab, bool flipped) -> R {
+  const R c = flipped ? -center : center;
+  R x = c + slab;
+  for (int tries = 0; tries < 64; ++tries) {
+    const R diff = flipped ? (-x) - center : x - center;
+    if (flipped ? diff <= -slab : diff >= slab) return x;
+    x = x + (fabs(x) + fabs(c) + fabs(slab)) * R(1.0e-6);
+  }
+  return R(__builtin_nan(""));
+}
+
+template <MathPolicy M>
+MINRT_INLINE auto Tracer<M>::record_hit(ObjectList and_net, const Object& m, int t0, const R* v, const R* start) -> void {
+  const R t0p = solver_dist_;
+  if (R(0) < t0p && t0p < tmin_) {
+    const R t = t0p + R(0.01);
+    const R q0 = v[0] * t + start[0];
+    const R q1 = v[1] * t + start[1];
+    const R q2 = v[2] * t + start[2];
+    if (all_inside(and_net, q0, q1, q2)) {
+      tmin_ = t;
+      intersection_point_[0] = q0;
+      intersection_point_[1] = q1;
+      intersection_point_[2] = q2;
+      intersected_object_id_ = m.index;
+      intsec_rectside_ = t0;
+    }
+  }
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
+  tmin_ = R(1000000000.0);
+  for (int r = 0; r < n_or_rows_; ++r) {
+    const OrRow& row = or_rows_[r];
+    if (row.range != nullptr && !(solver(*row.range, dir, startp_) != 0 && solver_dist_ < tmin_))
+      continue;
+    for (const ObjectList* a = row.nets; *a != nullptr; ++a) {
+      for (ObjectList e = *a; *e != nullptr; ++e) {
+        const Object& m = **e;
+        const int t0 = solver(m, dir, startp_);
+        if (t0 != 0)
+          record_hit(*a, m, t0, dir, startp_);
+        else if (!m.inverted)
+          break;
+      }
+    }
+  }
+  return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
+}
+
+template <MathPolicy M>
+template <bool kCull>
+inline auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
+  tmin_ = R(1000000000.0);
+  const uint32_t code = dv.code;
+  for (int r = 0; r < n_or_rows_; ++r) {
+    const OrRow& row = or_rows_[r];
+    if (kCull && (row.fwd_all & code) != 0) continue;
+    if (row.range != nullptr && !(solver_fast2(*row.range, dv) != 0 && solver_dist_ < tmin_))
+      continue;
+    for (int k = 0; row.nets[k] != nullptr; ++k) {
+      if (kCull && (row.fwd[k] & code) != 0) continue;
+      const ObjectList net = row.nets[k];
+      for (ObjectList e = net; *e != nullptr; ++e) {
+        const Object& m = **e;
+        const int t0 = solver_fast2<true>(m, dv);
+        if (t0 != 0)
+          record_hit(net, m, t0, dv.v, startp_fast_);
+        else if (!m.inverted)
+          break;
+      }
+    }
+  }
+  return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
+}
+
+}  // namespace minrt

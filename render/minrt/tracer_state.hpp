@@ -1,0 +1,133 @@
+// The min-rt tracer's state: its constants, the types of its tables and
+// every variable the original kept as a global, in one struct. The tracer
+// (tracer_class.hpp) derives from it; the functions of every seam work on
+// this one state.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/math/math_policy.hpp"
+#include "formats/sld/sld_limits.hpp"
+
+namespace minrt {
+
+template <MathPolicy M>
+struct TracerState {
+  using R = typename M::real;
+
+  static constexpr int kDirvecGroups = 5;
+  static constexpr int kDirvecsPerGroup = 120;
+  static constexpr int kMaxReflections = 3;  // see setup_reflections
+  static constexpr int kMaxDepth = 5;        // reflection levels 0..4
+  // Direction tables: the diffuse groups, then the light, then the mirrors.
+  static constexpr int kLightDirvec = kDirvecGroups * kDirvecsPerGroup;
+  static constexpr int kDirvecCount = kLightDirvec + 1 + kMaxReflections;
+
+  // Per-direction tables: for each object, the constants its fast solver
+  // needs for rays along `v` (6 for boxes, 4 for planes, 6 otherwise).
+  struct DirVec {
+    R v[3];
+    R* c;
+    uint32_t code;  // direction_code(v)
+  };
+  // Fields the intersection loops touch come first, to share cache lines.
+  struct Object {
+    int32_t form, rotated;
+    bool inverted;
+    int consts_offset;  // in bytes, to save a shift in the ray loops
+    int index;
+    R abc[3];
+    R rot[3];  // after preprocessing: the yz, zx, xy cross-term coefficients
+    R start[4];  // per ray-start table: start - center, and the constant term
+    R center[3];
+    int32_t texture, reflection;
+    R diffuse, hilight;
+    R color[3];
+    // Half-widths of a box around the points is_outside counts as inside;
+    // only for non-inverted boxes and axis-aligned ellipsoids.
+    R slab[3];
+    bool slab_bounded;
+    uint32_t fwd;  // forward-culling mask from the current start point
+  };
+  struct Reflection {
+    int surface_id;
+    DirVec dvec;
+    R bright;
+  };
+  // What the direct trace leaves in a pixel for the diffuse pass. Pixel rows
+  // are reused every three lines without clearing, as in the original, whose
+  // stale entries can decide later pixels.
+  struct Pixel {
+    R rgb[3];
+    R points[kMaxDepth][3];
+    int32_t surface_ids[kMaxDepth];
+    bool calc_diffuse[kMaxDepth];
+    R energy[kMaxDepth][3];
+    R received[kMaxDepth][3];  // diffuse light from this pixel's 60 rays
+    int32_t group_id;
+    R normals[kMaxDepth][3];
+  };
+
+  // AND networks as null-terminated lists of objects, OR rows as their range
+  // primitive (null for none) and null-terminated lists of AND networks:
+  // resolved once so the ray loops follow pointers instead of indices.
+  using ObjectList = const Object* const*;
+  // Shadow culling. A shadow point is light * t + p with t < -0.19; along
+  // an axis where light_k <= 0 it is >= p_k, rounding included, so once
+  // p_k >= limit with fl(limit - center_k) >= slab_k no shadow point is
+  // inside that member and its network cannot shadow (mirrored where
+  // light_k > 0: the flipped axes). A row is skipped when one axis limit
+  // covers all its networks.
+  struct ShadowLimits {
+    R limit[3];  // NaN: no limit on that axis
+    bool culls(R x0, R x1, R x2) const { return x0 >= limit[0] || x1 >= limit[1] || x2 >= limit[2]; }
+  };
+
+  struct OrRow {
+    const Object* range;
+    ObjectList nets[limits::kMaxOrNetworkLength + 1];
+    uint32_t fwd[limits::kMaxOrNetworkLength];  // see setup_forward_culling
+    uint32_t fwd_all;
+    ShadowLimits shadow[limits::kMaxOrNetworkLength];  // see setup_shadow_culling
+    ShadowLimits shadow_all;
+  };
+
+  // --- state (the original's globals) -------------------------------------
+
+  int width_ = 0, height_ = 0;
+  int center_[2] = {};
+  R scan_pitch_ = 0;
+  R screenx_[3] = {}, screeny_[3] = {}, screenz_[3] = {};
+  R viewpoint_[3] = {};
+  R light_[3] = {};
+  R beam_ = 0;
+
+  int n_objects_ = 0;
+  Object objects_[limits::kMaxObjects];
+  const Object* net_objects_[limits::kMaxAndNetworkDefinitions][limits::kMaxAndNetworkLength + 1];
+  OrRow or_rows_[limits::kMaxOrNetworks];
+  int n_or_rows_ = 0;
+
+  DirVec dirvecs_[kDirvecGroups][kDirvecsPerGroup];
+  DirVec light_dirvec_{};
+  Reflection reflections_[kMaxReflections];
+  int n_reflections_ = 0;
+  Pixel* lines_[3] = {};
+  uint8_t* row_ = nullptr;  // the finished row, 3 bytes a pixel
+
+  R solver_dist_ = 0;
+  int intsec_rectside_ = 0;
+  R tmin_ = 0;
+  R intersection_point_[3] = {};
+  int intersected_object_id_ = 0;
+  R nvector_[3] = {};
+  R texture_color_[3] = {};
+  R diffuse_ray_[3] = {};
+  R rgb_[3] = {};
+  R startp_[3] = {};
+  R startp_fast_[3] = {};
+
+  bool toward_light_flip_[3] = {};
+};
+
+}  // namespace minrt
