@@ -1,5 +1,10 @@
 #include "elf_loader.hpp"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <elf.h>
 
 #include <cstdio>
@@ -55,8 +60,17 @@ void read_symbols(const std::vector<uint8_t>& f, const Elf32_Ehdr& eh, const std
 }  // namespace
 
 LoadedElf load_elf(const std::string& path, Bus& bus) {
+  // Only a regular file no larger than the RAM it is loaded into: checked
+  // before reading, so /dev/zero or a directory cannot make us read forever.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) fail(path, std::string("cannot open file: ") + std::strerror(errno));
+  if (!S_ISREG(st.st_mode))
+    fail(path, S_ISDIR(st.st_mode) ? std::string("cannot read: ") + std::strerror(EISDIR) : "not a regular file");
+  if (static_cast<uint64_t>(st.st_size) > bus.ram_size())
+    fail(path, "file of " + std::to_string(st.st_size) + " bytes is larger than the " +
+                   std::to_string(bus.ram_size()) + "-byte RAM it would load into");
   std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open file");
+  if (!in) fail(path, std::string("cannot open file: ") + std::strerror(errno));
   std::vector<uint8_t> f((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto eh = read_at<Elf32_Ehdr>(f, 0, path);
   if (std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) fail(path, "not an ELF file");

@@ -1,5 +1,6 @@
 // firmware-sim: wires the command line to a Machine, runs it, reports.
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -112,6 +113,15 @@ int run(const std::vector<std::string>& argv) {
   }
   if (timed) model = std::make_unique<CycleModel>(model_cfg);
 
+  // The ELF argument must name a readable regular file (status 2 like any
+  // bad argument); what it contains is the loader's business (status 3).
+  {
+    struct stat st {};
+    if (::stat(opt.elf.c_str(), &st) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) die(kExitUsage, opt.elf + ": " + std::strerror(EISDIR));
+    if (!S_ISREG(st.st_mode)) die(kExitUsage, opt.elf + ": not a regular file");
+    if (::access(opt.elf.c_str(), R_OK) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
+  }
   Machine m(opt.ram_size);
   LoadedElf elf;
   try {

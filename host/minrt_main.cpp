@@ -1,5 +1,7 @@
 // minrt: the host renderer, a drop-in for the original min-rt. Reads an SLD
 // scene (stdin or a file), writes the PPM image (stdout or -o FILE).
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -118,9 +120,15 @@ int main(int argc, char** argv) {
   const char* display_name = scene_path != nullptr ? scene_path : "<stdin>";
   if (scene_path != nullptr) {
     in = std::fopen(scene_path, "rb");
+    struct stat st {};
+    if (in != nullptr && ::fstat(fileno(in), &st) == 0 && S_ISDIR(st.st_mode)) {
+      std::fclose(in);
+      in = nullptr;
+      errno = EISDIR;
+    }
     if (in == nullptr) {
-      std::fprintf(stderr, "minrt: cannot open %s: %s\n", scene_path, std::strerror(errno));
-      return kExitIoError;
+      std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", scene_path, std::strerror(errno));
+      return kExitUsage;
     }
   }
 
@@ -155,6 +163,11 @@ int main(int argc, char** argv) {
       std::remove(temp_path.c_str());
     }
   };
+  if (source.read_errno != 0) {
+    discard();
+    std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", display_name, std::strerror(source.read_errno));
+    return kExitUsage;
+  }
   if (st != minrt::RenderStatus::kOk) {
     discard();
     if (error.has_pos)

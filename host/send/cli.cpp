@@ -1,6 +1,9 @@
 #include "cli.hpp"
 
 #include "core/base/text_numbers.hpp"
+#include "file_input.hpp"
+
+#include <minrt/serial_protocol.h>
 
 #include <unistd.h>
 
@@ -46,13 +49,6 @@ bool is_elf(const std::string& path) {
 bool ends_with(const std::string& s, const char* tail) {
   const std::string t = tail;
   return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
-}
-
-bool read_file(const std::string& path, std::string& out) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return false;
-  out.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-  return !f.bad();
 }
 
 std::string default_output(const std::string& scene) {
@@ -259,11 +255,20 @@ int run(const Options& o) {
   install_signal_handlers();
   if (o.list) return list_ports_command();
 
-  std::string scene;
-  if (!read_file(o.scene, scene)) return fail(kExitUsage, "cannot read " + o.scene + ": " + std::strerror(errno));
+  std::string scene, why;
+  if (!minrt::host::read_whole_file(o.scene, scene, why)) return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
+  // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
+  // (0x04) as the end of the scene: a scene with that byte inside would be
+  // cut short there. The core's reader (the words encoder reads with it)
+  // refuses such a scene with minrt's message, so nothing is sent.
+  if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
+    std::string words;
+    if (!sld_to_course_words(scene, false, words, why))
+      return fail(kExitFirmware, "scene rejected before sending: " + why);
+  }
   std::string program;
-  if (!o.program.empty() && !read_file(o.program, program))
-    return fail(kExitUsage, "cannot read " + o.program + ": " + std::strerror(errno));
+  if (!o.program.empty() && !minrt::host::read_whole_file(o.program, program, why))
+    return fail(kExitUsage, "cannot read " + o.program + ": " + why);
   Image reference;
   if (!o.verify_ref.empty()) {
     std::string err;

@@ -1,5 +1,7 @@
 #include "verify.hpp"
 
+#include "file_input.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -83,12 +85,11 @@ bool parse_ppm(const std::string& bytes, Image& image, std::string& error) {
 }
 
 bool load_ppm(const std::string& path, Image& image, std::string& error) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) {
-    error = "cannot read " + path;
+  std::string bytes, why;
+  if (!minrt::host::read_whole_file(path, bytes, why)) {
+    error = "cannot read " + path + ": " + why;
     return false;
   }
-  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   if (!parse_ppm(bytes, image, error)) {
     error = path + ": " + error;
     return false;

@@ -71,8 +71,13 @@ TEST_CASE("minrt: usage errors are one line and exit 2", "[cli]") {
     CHECK(count_lines(r.err) == 1);
   }
   const auto missing = run("/nonexistent/scene.sld");
-  CHECK(missing.status == 1);
-  CHECK(missing.err.find("cannot open /nonexistent/scene.sld") != std::string::npos);
+  CHECK(missing.status == 2);
+  CHECK(missing.err == "minrt: error: cannot read /nonexistent/scene.sld: No such file or directory\n");
+  // A directory is a read error with the system's reason, not an empty scene.
+  const auto dir = run("/tmp");
+  CHECK(dir.status == 2);
+  CHECK(dir.out.empty());
+  CHECK(dir.err == "minrt: error: cannot read /tmp: Is a directory\n");
 }
 
 TEST_CASE("minrt: a bad scene gives FILE:LINE:COL: error and no image", "[cli]") {

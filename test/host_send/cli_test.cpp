@@ -43,6 +43,23 @@ TEST_CASE("usage errors are one line with status 2", "[cli]") {
   }
 }
 
+TEST_CASE("a directory as the scene, --program or --verify is a one-line read error with the reason", "[cli]") {
+  const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"--sim", "/tmp"},
+           {"--sim", "--protocol", "course", "--program", "/tmp", scene},
+           {"--sim", "--verify", "/tmp", scene},
+       }) {
+    std::vector<std::string> argv{HS_HOST_SEND};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto r = run(argv);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_THAT(r.err, Catch::Contains("cannot read /tmp: Is a directory"));
+  }
+}
+
 TEST_CASE("link errors give status 1", "[cli]") {
   const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
   hs_test::TempDir dir;

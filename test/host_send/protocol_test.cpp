@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <random>
 #include <string>
@@ -319,6 +320,35 @@ TEST_CASE("course mode against the firmware at 115200 921600 and 3000000 baud", 
 TEST_CASE("course and framed scene errors from the firmware", "[e2e][course][framed][firmware][bad]") {
   HS_NEEDS_FIRMWARE();
   check_scene_errors(HS_FIRMWARE_SIM, HS_FIRMWARE_ELF);
+}
+
+TEST_CASE("a 0x04 inside the scene is refused before sending over raw, with minrt's message", "[e2e][bad]") {
+  // The board takes 0x04 as the end of a raw scene: here it would read the
+  // final -1 and render, where minrt reads the token "-1\x04" + "1" and
+  // refuses the file.
+  hs_test::TempDir dir;
+  const std::string scene = dir.file("eot.sld");
+  {
+    std::ofstream f(scene, std::ios::binary);
+    f << "0 0 -100 0 0\n1 0.5 -0.5 255\n0 1 0 0  1 1 1  0 0 0  1  0.5 0.5  255 0 0\n"
+         "-1\n0 -1\n-1\n99 0 -1\n-1\x04" "1\n";
+  }
+  const auto minrt = hs_test::run({HS_MINRT, "--precision", "float", "--shims", "portable", scene, "-o",
+                                   dir.file("minrt.ppm")});
+  REQUIRE(minrt.status == 2);
+  // "FILE:LINE:COL: error: MESSAGE" -> "LINE:COL: MESSAGE"
+  const std::string located = minrt.err.substr(scene.size() + 1);
+  const std::string expected =
+      located.substr(0, located.find(": error: ")) + ": " + located.substr(located.find(": error: ") + 9);
+  for (const char* proto : {"raw", "course", "framed"}) {
+    const std::string out = dir.file(std::string(proto) + ".ppm");
+    const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_STANDIN, "--sim", HS_STANDIN, "--protocol", proto,
+                                 "--size", "16x16", scene, "-o", out});
+    INFO(proto << "\n" << r.err);
+    CHECK(r.status == 3);
+    CHECK_FALSE(hs_test::file_exists(out));
+    CHECK(scene_error(r.err) + "\n" == expected);
+  }
 }
 
 TEST_CASE("a scene of exactly 60 objects renders over raw, course and framed on the firmware",

@@ -115,8 +115,22 @@ TEST_CASE("bad usage is a one-line error with status 2", "[cli][usage]") {
   CHECK(no_input.status == 2);
   CHECK(no_input.err == "firmware-sim: error: /nonexistent/in.txt: No such file or directory\n");
   Result missing = sim("/nonexistent/fw.elf");
-  CHECK(missing.status == 3);
-  CHECK(missing.err == "firmware-sim: error: /nonexistent/fw.elf: cannot open file\n");
+  CHECK(missing.status == 2);
+  CHECK(missing.err == "firmware-sim: error: /nonexistent/fw.elf: No such file or directory\n");
+  // A directory or a device as the ELF: refused before anything is read
+  // (/dev/zero used to be read without end).
+  Result dir = sim("/tmp");
+  CHECK(dir.status == 2);
+  CHECK(dir.err == "firmware-sim: error: /tmp: Is a directory\n");
+  Result dev = sim("/dev/zero");
+  CHECK(dev.status == 2);
+  CHECK(dev.err == "firmware-sim: error: /dev/zero: not a regular file\n");
+  // A file larger than the RAM it would load into: refused before reading.
+  const std::string big = temp_path("big.elf");
+  spit(big, slurp(kElf) + std::string(5u << 20, '\0'));
+  Result large = sim("--ram-size 4M " + big);
+  CHECK(large.status == 3);
+  CHECK_THAT(large.err, Catch::Contains("larger than the 4194304-byte RAM"));
   CHECK(sim(std::string(FWSIM_SOURCE_DIR) + "/firmware_sim/models/default.cfg").status == 3);
   // A truncated copy of a valid ELF: clean error, no crash.
   const std::string cut = temp_path("cut.elf");
