@@ -1,6 +1,7 @@
 #include "sim_launcher.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -87,6 +88,7 @@ bool SimLauncher::spawn(std::vector<std::string> args, int startup_timeout_ms, s
     error = std::string("pipe: ") + std::strerror(errno);
     return false;
   }
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     error = std::string("fork: ") + std::strerror(errno);
@@ -95,6 +97,13 @@ bool SimLauncher::spawn(std::vector<std::string> args, int startup_timeout_ms, s
     return false;
   }
   if (pid == 0) {
+    // The simulator must not outlive host-send, even a SIGKILLed one: the
+    // kernel signals it when its parent dies, and the check after prctl
+    // covers a parent that died before it. Its own process group keeps a
+    // terminal's Ctrl-C for host-send, which stops it in order.
+    ::setpgid(0, 0);
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
     ::dup2(pipefd[1], 2);
     ::dup2(pipefd[1], 1);
     const int devnull = ::open("/dev/null", O_RDONLY);
