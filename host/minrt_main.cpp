@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/base/text_numbers.hpp"
+#include "output_file.hpp"
 #include "render_variants.hpp"
 #include "stdio_stream.hpp"
 
@@ -33,7 +34,9 @@ void print_help(std::FILE* f) {
       "                           math routines: the C library (default) or the\n"
       "                           add/sub/mul/div-only shims of the firmware (float only);\n"
       "                           -fast is cheaper, -min just meets the course's error rules\n"
-      "  -o, --output FILE        write the image to FILE (complete or not at all)\n"
+      "  -o, --output FILE        write the image to FILE (complete or not at all; a\n"
+      "                           FIFO, device or symbolic link is refused; - is stdout)\n"
+      "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
       "  -h, --help               this text\n"
       "  --version                version\n"
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
   const char* scene_path = nullptr;
   const char* output_path = nullptr;
   bool quiet = false;
+  bool write_through = false;
 
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -101,6 +105,8 @@ int main(int argc, char** argv) {
       else usage_error("bad --shims '" + v + "': expected libm, portable, portable-fast or portable-min");
     } else if (arg == "-o" || arg == "--output") {
       output_path = value("--output");
+    } else if (arg == "--write-through") {
+      write_through = true;
     } else if (arg == "-q" || arg == "--quiet") {
       quiet = true;
     } else if (arg == "-") {
@@ -132,17 +138,18 @@ int main(int argc, char** argv) {
     }
   }
 
-  // With -o the image goes to a temporary file renamed into place only once
-  // it is complete.
-  std::string temp_path;
+  // With -o the image goes to a unique temporary file renamed into place
+  // only once it is complete (output_file.hpp).
+  minrt::host::AtomicOutput output;
   std::FILE* out = stdout;
   if (output_path != nullptr) {
-    temp_path = std::string(output_path) + ".partial";
-    out = std::fopen(temp_path.c_str(), "wb");
-    if (out == nullptr) {
-      std::fprintf(stderr, "minrt: cannot write %s: %s\n", temp_path.c_str(), std::strerror(errno));
-      return kExitIoError;
+    std::string why;
+    if (!output.open(output_path, write_through, why)) {
+      if (in != stdin) std::fclose(in);
+      std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
+      return kExitUsage;
     }
+    out = output.file();
   }
 
   minrt::host::FileSource source{in};
@@ -157,12 +164,7 @@ int main(int argc, char** argv) {
   if (in != stdin) std::fclose(in);
   const bool write_failed = sink.failed || std::fflush(out) != 0;
 
-  auto discard = [&] {
-    if (output_path != nullptr) {
-      std::fclose(out);
-      std::remove(temp_path.c_str());
-    }
-  };
+  auto discard = [&] { output.discard(); };
   if (source.read_errno != 0) {
     discard();
     std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", display_name, std::strerror(source.read_errno));
@@ -183,9 +185,9 @@ int main(int argc, char** argv) {
     return kExitIoError;
   }
   if (output_path != nullptr) {
-    if (std::fclose(out) != 0 || std::rename(temp_path.c_str(), output_path) != 0) {
-      std::remove(temp_path.c_str());
-      std::fprintf(stderr, "minrt: cannot write %s: %s\n", output_path, std::strerror(errno));
+    std::string why;
+    if (!output.commit(why)) {
+      std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
       return kExitIoError;
     }
   }

@@ -2,6 +2,7 @@
 
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
+#include "output_file.hpp"
 
 #include <minrt/serial_protocol.h>
 
@@ -96,7 +97,9 @@ void print_help() {
       "  --endian little|big      course protocol: byte order of the scene words\n"
       "output and checks:\n"
       "  -o, --output FILE        image file (default SCENE's name with .ppm; - = stdout);\n"
-      "                           written only when complete and valid\n"
+      "                           written only when complete and valid; a FIFO, device\n"
+      "                           or symbolic link is refused\n"
+      "  --write-through          write into a FIFO, device or link given to -o\n"
       "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
       "                           maximum channel error, PSNR\n"
       "  --expect-sha256 HEX      refuse the image unless its bytes have this SHA-256\n"
@@ -202,6 +205,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
       }
     } else if (a == "-o" || a == "--output") {
       if (!value(o.output)) return ParseResult::kError;
+    } else if (a == "--write-through") {
+      o.write_through = true;
     } else if (a == "--verify") {
       if (!value(o.verify_ref)) return ParseResult::kError;
     } else if (a == "--expect-sha256") {
@@ -257,6 +262,8 @@ int run(const Options& o) {
 
   std::string scene, why;
   if (!minrt::host::read_whole_file(o.scene, scene, why)) return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
+  // The output is checked before the transfer, not after minutes of it.
+  if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
@@ -353,7 +360,7 @@ int run(const Options& o) {
     return fail(kExitLink, "image sha256 " + digest + " differs from the expected " + o.expect_sha256 +
                                "; not written");
   std::string err;
-  if (!write_file_atomically(o.output, r.image, err)) return fail(kExitLink, err);
+  if (!write_file_atomically(o.output, r.image, o.write_through, err)) return fail(kExitLink, err);
 
   if (!o.quiet) {
     const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;

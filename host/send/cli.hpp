@@ -22,6 +22,7 @@ struct Options {
   ImageSpec spec{512, 512, PpmKind::kP3};
   std::string scene;
   std::string output;        // -o; default SCENE's stem + ".ppm"
+  bool write_through = false;  // --write-through: into a FIFO, device or link given to -o
   double first_byte_timeout = 120;
   double idle_timeout = 30;
   std::string verify_ref;

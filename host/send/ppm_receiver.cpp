@@ -1,5 +1,7 @@
 #include "ppm_receiver.hpp"
 
+#include "output_file.hpp"
+
 #include <cstdio>
 
 #include <minrt/serial_protocol.h>
@@ -226,40 +228,16 @@ bool write_fd(int fd, const std::string& bytes) {
 }
 }  // namespace
 
-bool write_file_atomically(const std::string& path, const std::string& bytes, std::string& error) {
-  if (path == "-") {
-    if (!write_fd(1, bytes)) {
-      error = std::string("cannot write the image to standard output: ") + std::strerror(errno);
-      return false;
-    }
-    return true;
-  }
-  std::string temp = path + ".partial.XXXXXX";
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) {
-    error = "cannot create a temporary file next to " + path + ": " + std::strerror(errno);
+bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
+                           std::string& error) {
+  host::AtomicOutput out;
+  if (!out.open(path, write_through, error)) return false;
+  if (std::fwrite(bytes.data(), 1, bytes.size(), out.file()) != bytes.size()) {
+    error = "cannot write " + path + ": " + std::strerror(errno);
+    out.discard();
     return false;
   }
-  ::fchmod(fd, 0644);
-  bool ok = write_fd(fd, bytes);
-  int err = errno;
-  if (ok && ::fsync(fd) != 0 && errno != EINVAL) {
-    ok = false;
-    err = errno;
-  }
-  if (::close(fd) != 0 && ok) {
-    ok = false;
-    err = errno;
-  }
-  if (ok && std::rename(temp.c_str(), path.c_str()) != 0) {
-    ok = false;
-    err = errno;
-  }
-  if (!ok) {
-    ::unlink(temp.c_str());
-    error = "cannot write " + path + ": " + std::strerror(err);
-  }
-  return ok;
+  return out.commit(error);
 }
 
 }  // namespace minrt::send

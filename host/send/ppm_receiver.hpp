@@ -80,6 +80,7 @@ namespace minrt::send {
 // Writes `bytes` to a temporary file next to `path` and renames it into
 // place, so `path` is either the complete image or untouched. "-" writes to
 // standard output. False with a message on failure (the temporary is removed).
-bool write_file_atomically(const std::string& path, const std::string& bytes, std::string& error);
+bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
+                           std::string& error);
 
 }  // namespace minrt::send

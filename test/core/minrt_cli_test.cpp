@@ -6,7 +6,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -101,8 +103,58 @@ TEST_CASE("minrt: a bad scene gives FILE:LINE:COL: error and no image", "[cli]")
   const auto o = run("--size 16x16 -o " + target + " " + bad);
   CHECK(o.status == 2);
   CHECK_FALSE(exists(target));
-  CHECK_FALSE(exists(target + ".partial"));
-  rmdir(dir);
+  CHECK(rmdir(dir) == 0);  // no temporary file left either
+}
+
+TEST_CASE("minrt: -o replaces only a regular file or a new name, and leaves no temporary behind", "[cli]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  const std::string ball = minrt::test::shared_dir() + "/scenes/ball.sld";
+  const std::string contest = minrt::test::shared_dir() + "/scenes/contest.sld";
+  char dir[] = "/tmp/minrt-out-XXXXXX";
+  REQUIRE(mkdtemp(dir) != nullptr);
+  const std::string d = dir;
+  // A FIFO and a symbolic link are refused and stay what they are.
+  REQUIRE(mkfifo((d + "/fifo").c_str(), 0600) == 0);
+  REQUIRE(symlink((d + "/elsewhere").c_str(), (d + "/link").c_str()) == 0);
+  for (const char* name : {"/fifo", "/link"}) {
+    const auto r = run("--size 8x8 -o " + d + name + " " + ball);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("refusing to replace " + d + name) != std::string::npos);
+  }
+  struct stat st {};
+  REQUIRE(lstat((d + "/fifo").c_str(), &st) == 0);
+  CHECK(S_ISFIFO(st.st_mode));
+  REQUIRE(lstat((d + "/link").c_str(), &st) == 0);
+  CHECK(S_ISLNK(st.st_mode));
+  // Two runs writing one target at once: both finish, and the file is one
+  // whole image (the temporary names are unique).
+  const std::string target = d + "/image.ppm";
+  const std::string expected = run("--size 64x64 " + ball).out;
+  const std::string cmd = std::string(MINRT_BIN) + " --size 64x64 -o " + target + " " + ball;
+  CHECK(std::system((cmd + " & " + cmd + " & wait").c_str()) == 0);
+  CHECK(minrt::test::read_file(target) == expected);
+  // SIGTERM during a long render removes the temporary file; the target
+  // keeps its old content.
+  const pid_t pid = fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    execl(MINRT_BIN, MINRT_BIN, "--size", "2048x2048", "-q", "-o", target.c_str(), contest.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  usleep(300000);
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  CHECK(WIFSIGNALED(status));
+  CHECK(minrt::test::read_file(target) == expected);
+  std::remove(target.c_str());
+  std::remove((d + "/fifo").c_str());
+  std::remove((d + "/link").c_str());
+  CHECK(rmdir(dir) == 0);  // nothing else was left in the folder
 }
 
 TEST_CASE("minrt: file argument, stdin and -o give the reference bytes", "[cli]") {

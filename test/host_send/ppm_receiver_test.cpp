@@ -1,5 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include "test_support.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <string>
 
 #include "ppm_receiver.hpp"
@@ -150,8 +155,29 @@ TEST_CASE("expected image size", "[ppm]") {
 
 TEST_CASE("write_file_atomically leaves no partial file", "[ppm]") {
   std::string err;
-  CHECK_FALSE(minrt::send::write_file_atomically("/nonexistent-dir/x.ppm", "P6", err));
+  CHECK_FALSE(minrt::send::write_file_atomically("/nonexistent-dir/x.ppm", "P6", false, err));
   CHECK_THAT(err, Catch::Contains("/nonexistent-dir/x.ppm"));
+}
+
+TEST_CASE("host-send -o refuses a FIFO or a symbolic link before the transfer", "[cli]") {
+  hs_test::TempDir dir;
+  const std::string fifo = dir.file("fifo"), link = dir.file("link");
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  REQUIRE(::symlink(dir.file("elsewhere").c_str(), link.c_str()) == 0);
+  const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
+  for (const std::string& target : {fifo, link}) {
+    // Checked before the board is even started.
+    const auto r = hs_test::run({HS_HOST_SEND, "--sim-binary", HS_STANDIN, "--sim", HS_STANDIN, scene,
+                                 "-o", target});
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("refusing to replace " + target));
+  }
+  struct stat st {};
+  REQUIRE(::lstat(fifo.c_str(), &st) == 0);
+  CHECK(S_ISFIFO(st.st_mode));
+  REQUIRE(::lstat(link.c_str(), &st) == 0);
+  CHECK(S_ISLNK(st.st_mode));
 }
 
 #include "progress.hpp"

@@ -1,0 +1,42 @@
+// Writing an output file so that nothing is half-written or replaced by
+// mistake: the bytes go to a unique temporary file in the target's folder,
+// which is synced and renamed over the target only when complete, and only
+// onto a regular file or a new name. A FIFO, device or symbolic link is
+// refused unless the caller asks to write through it; "-" is standard
+// output. SIGINT, SIGTERM and SIGHUP remove the temporary file.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+namespace minrt::host {
+
+// Checks now, before any long work, that `path` can be written as above:
+// false with the reason when the folder is missing or not writable, the
+// target is a directory, or a special file without `write_through`.
+bool check_output_target(const std::string& path, bool write_through, std::string& error);
+
+class AtomicOutput {
+ public:
+  AtomicOutput() = default;
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+  ~AtomicOutput() { discard(); }
+
+  // Opens the temporary file (or the target itself when writing through,
+  // or standard output for "-"). False with the reason.
+  bool open(const std::string& path, bool write_through, std::string& error);
+  std::FILE* file() const { return file_; }
+  // Flushes, syncs and renames into place. False with the reason (the
+  // temporary file is then removed).
+  bool commit(std::string& error);
+  // Removes the temporary file; the target is left as it was.
+  void discard();
+
+ private:
+  std::string path_, temp_;
+  std::FILE* file_ = nullptr;
+  bool direct_ = false;  // writing to the target itself (stdout or write-through)
+};
+
+}  // namespace minrt::host
