@@ -8,6 +8,21 @@
 
 using hs_test::run;
 
+namespace {
+
+// host-send with `args`: a usage error, one line on stderr, status 2.
+hs_test::RunResult usage_error(const std::vector<std::string>& args) {
+  std::vector<std::string> argv{HS_HOST_SEND};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const auto r = run(argv);
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  return r;
+}
+
+}  // namespace
+
 TEST_CASE("host-send --help and --version", "[cli]") {
   auto r = run({HS_HOST_SEND, "--help"});
   CHECK(r.status == 0);
@@ -33,13 +48,7 @@ TEST_CASE("usage errors are one line with status 2", "[cli]") {
            {scene, scene},
            {"/nonexistent.sld"},
        }) {
-    std::vector<std::string> argv{HS_HOST_SEND};
-    argv.insert(argv.end(), args.begin(), args.end());
-    const auto r = run(argv);
-    INFO(r.err);
-    CHECK(r.status == 2);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK_THAT(r.err, Catch::StartsWith("host-send: "));
+    CHECK_THAT(usage_error(args).err, Catch::StartsWith("host-send: "));
   }
 }
 
@@ -50,13 +59,7 @@ TEST_CASE("a directory as the scene, --program or --verify is a one-line read er
            {"--sim", "--protocol", "course", "--program", "/tmp", scene},
            {"--sim", "--verify", "/tmp", scene},
        }) {
-    std::vector<std::string> argv{HS_HOST_SEND};
-    argv.insert(argv.end(), args.begin(), args.end());
-    const auto r = run(argv);
-    INFO(r.err);
-    CHECK(r.status == 2);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK_THAT(r.err, Catch::Contains("cannot read /tmp: Is a directory"));
+    CHECK_THAT(usage_error(args).err, Catch::Contains("cannot read /tmp: Is a directory"));
   }
 }
 
