@@ -5,15 +5,26 @@
 #   scripts/render.sh ../shared/scenes/contest.sld -o contest.ppm --size 128x128
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-if [[ $# -lt 1 || $1 == -h || $1 == --help ]]; then
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then
   sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'
+  exit 0
+fi
+if [[ $# -lt 1 ]]; then
+  sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 fi
-# Set-up and build output go to a log; shown only when they fail.
+# Set-up and build: their steps and the build's percentage are shown as they
+# happen; the full output goes to a log, printed only when they fail.
 log=$(mktemp)
-if ! "$root/scripts/setup.sh" >"$log" 2>&1; then
+set +e
+"$root/scripts/setup.sh" 2>&1 | tee "$log" |
+  grep --line-buffered -E '^setup:|^\[ *[0-9]+%\] (Built target|Linking)' >&2
+setup_status=${PIPESTATUS[0]}
+set -e
+if [[ $setup_status -ne 0 ]]; then
   cat "$log" >&2
   echo "render: set-up or build failed (log above)" >&2
+  rm -f "$log"
   exit 1
 fi
 rm -f "$log"

@@ -26,7 +26,7 @@ for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}" >&2
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}" >&2
   if [[ $(id -u) -ne 0 ]]; then
     echo "setup: need root to install packages (run with sudo)" >&2
     exit 1
@@ -34,8 +34,14 @@ if ((${#missing[@]})); then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  echo "setup: packages installed" >&2
+else
+  echo "setup: all ${#packages[@]} Debian packages present" >&2
 fi
 
 cd "$root"
+echo "setup: configuring build/release (cmake --preset host-release)" >&2
 cmake --preset host-release >/dev/null
+echo "setup: building with $(nproc) jobs (a first build takes a few minutes; progress below)" >&2
 cmake --build --preset host-release -j "$(nproc)"
+echo "setup: build complete" >&2
