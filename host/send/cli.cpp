@@ -6,6 +6,8 @@
 
 #include <minrt/serial_protocol.h>
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -50,6 +52,14 @@ bool is_elf(const std::string& path) {
 bool ends_with(const std::string& s, const char* tail) {
   const std::string t = tail;
   return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
+// Unix98 pseudo-terminal slaves have majors 136..143 (Linux devices.txt).
+bool is_pseudo_terminal(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return false;
+  const unsigned m = major(st.st_rdev);
+  return m >= 136 && m <= 143;
 }
 
 std::string default_output(const std::string& scene) {
@@ -318,7 +328,9 @@ int run(const Options& o) {
   if (o.port_settings.flow == Flow::kXonXoff && (o.spec.kind == PpmKind::kP6 || o.protocol != Protocol::kRaw))
     std::fprintf(stderr, "host-send: warning: XON/XOFF flow control corrupts binary data (P6, course, framed)\n");
 
-  const bool paced = !use_sim || o.baud_given;
+  // A share of the 8N1 limit means something only on a real serial line: a
+  // pseudo-terminal (the simulator's, or any other) has no baud rate.
+  const bool paced = !use_sim && !is_pseudo_terminal(port.fd());
   Progress progress(o.progress_forced || ::isatty(2) != 0, expected_image_bytes(o.spec), o.spec.height,
                     paced ? o.port_settings.baud : 0);
   Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
@@ -365,8 +377,9 @@ int run(const Options& o) {
   if (!o.quiet) {
     const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;
     char line[320];
-    int n = std::snprintf(line, sizeof line, "host-send: %s: %llu bytes in %.3f s, %.1f kB/s", o.output.c_str(),
-                          static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0);
+    int n = std::snprintf(line, sizeof line, "host-send: %s: %llu bytes in %.3f s, %.1f kB/s%s", o.output.c_str(),
+                          static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0,
+                          use_sim ? " from the simulated board (firmware-sim)" : "");
     if (paced && n > 0)
       n += std::snprintf(line + n, sizeof line - n, ", %.1f%% of the 8N1 limit at %u baud", rate * 1000.0 / o.port_settings.baud,
                          static_cast<unsigned>(o.port_settings.baud));
