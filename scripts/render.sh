@@ -30,7 +30,7 @@ fi
 rm -f "$log"
 bin=$root/build/release
 if [[ -x $bin/host/send/host-send ]]; then
-  exec "$bin/host/send/host-send" "$@"
+  exec "$bin/host/send/host-send" --sim "$@"
 fi
 echo "render: host-send is not built; rendering with the host build instead" >&2
 exec "$bin/host/minrt" "$@"

@@ -83,10 +83,11 @@ int fail(int status, const std::string& msg) {
 
 void print_help() {
   std::fputs(
-      "usage: host-send [--port DEV | --sim [ELF]] [OPTIONS] SCENE.sld [-o OUT.ppm]\n"
+      "usage: host-send (--port DEV | --sim [ELF]) [OPTIONS] SCENE.sld [-o OUT.ppm]\n"
       "       host-send --list\n"
       "Sends an SLD scene to the min-rt firmware over a serial line and receives the\n"
-      "rendered PPM image. Without --port it starts firmware-sim on a pseudo-terminal.\n"
+      "rendered PPM image: from a board (--port) or from firmware-sim started on a\n"
+      "pseudo-terminal (--sim); one of the two is required.\n"
       "\n"
       "link:\n"
       "  --port DEV               serial device, or usb:VID:PID[:SERIAL] (see --list)\n"
@@ -161,6 +162,7 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
         o.sim_elf = argv[++i];
     } else if (a == "--sim-binary") {
       if (!value(o.sim_binary)) return ParseResult::kError;
+      o.sim = true;  // naming a simulator asks for one
     } else if (a == "--baud") {
       if (!value(v)) return ParseResult::kError;
       char* end = nullptr;
@@ -256,6 +258,12 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
   }
   if (o.scene.empty()) {
     error = "no scene file given";
+    return ParseResult::kError;
+  }
+  // Never render on the simulator without being asked: a student with a
+  // board must not believe the board rendered the image.
+  if (o.port.empty() && !o.sim) {
+    error = "no board given: --port DEVICE for a board (host-send --list shows them), or --sim for firmware-sim";
     return ParseResult::kError;
   }
   if (o.protocol != Protocol::kCourse && (!o.program.empty())) {

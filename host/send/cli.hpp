@@ -13,7 +13,7 @@ enum class Protocol { kRaw, kCourse, kFramed };
 
 struct Options {
   std::string port;          // --port DEV or usb:VID:PID[:SERIAL]
-  bool sim = false;          // --sim (default when no --port)
+  bool sim = false;          // --sim: firmware-sim on a pty (one of --port and --sim is required)
   std::string sim_elf;       // --sim ELF
   std::string sim_binary;    // --sim-binary
   bool baud_given = false;

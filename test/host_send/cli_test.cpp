@@ -52,6 +52,14 @@ TEST_CASE("usage errors are one line with status 2", "[cli]") {
   }
 }
 
+TEST_CASE("without --port or --sim host-send stops with a hint instead of simulating", "[cli]") {
+  const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
+  const auto r = usage_error({scene});
+  CHECK(r.err ==
+        "host-send: no board given: --port DEVICE for a board (host-send --list shows them), or --sim for "
+        "firmware-sim (see host-send --help)\n");
+}
+
 TEST_CASE("a directory as the scene, --program or --verify is a one-line read error with the reason", "[cli]") {
   const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
   for (const auto& args : std::vector<std::vector<std::string>>{
