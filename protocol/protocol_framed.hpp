@@ -22,7 +22,7 @@
 #include <stdint.h>
 
 #include "core/base/byte_io.hpp"
-#include "protocol/crc32.hpp"
+#include "core/base/crc32.hpp"
 
 namespace minrt::send::framed {
 

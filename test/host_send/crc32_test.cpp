@@ -2,9 +2,9 @@
 
 #include <cstring>
 
-#include "protocol/crc32.hpp"
+#include "core/base/crc32.hpp"
 
-using minrt::send::crc32;
+using minrt::crc32;
 
 namespace {
 uint32_t crc_of(const char* s) { return crc32(reinterpret_cast<const uint8_t*>(s), std::strlen(s)); }
@@ -24,10 +24,10 @@ TEST_CASE("CRC-32 in pieces equals CRC-32 at once", "[crc32]") {
   const auto* p = reinterpret_cast<const uint8_t*>(s);
   const size_t n = std::strlen(s);
   for (size_t cut = 0; cut <= n; ++cut) {
-    uint32_t st = minrt::send::crc32_begin();
-    st = minrt::send::crc32_update(st, p, cut);
-    st = minrt::send::crc32_update(st, p + cut, n - cut);
-    CHECK(minrt::send::crc32_end(st) == 0x414FA339u);
+    uint32_t st = minrt::crc32_begin();
+    st = minrt::crc32_update(st, p, cut);
+    st = minrt::crc32_update(st, p + cut, n - cut);
+    CHECK(minrt::crc32_end(st) == 0x414FA339u);
   }
 }
 

@@ -1,5 +1,5 @@
 // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320, init and final XOR
-// 0xFFFFFFFF), as used by the framed protocol. Freestanding: no heap, no
+// 0xFFFFFFFF), as used by the framed protocol and PNG. Freestanding: no heap, no
 // exceptions, no library headers beyond <stdint.h>/<stddef.h>, so the
 // firmware can include it as is.
 #pragma once
@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-namespace minrt::send {
+namespace minrt {
 
 namespace crc32_detail {
 struct Table {
@@ -39,4 +39,4 @@ constexpr uint32_t crc32(const uint8_t* data, size_t size) {
   return crc32_end(crc32_update(crc32_begin(), data, size));
 }
 
-}  // namespace minrt::send
+}  // namespace minrt
