@@ -10,7 +10,7 @@ namespace minrt {
 
 class Arena {
  public:
-  Arena(void* base, size_t size) : base_(static_cast<uint8_t*>(base)), size_(size) {}
+  Arena(void* base, size_t size) : base_(static_cast<uint8_t*>(base)), size_(size), top_(size) {}
 
   // Zero-filled storage for n objects of T, or nullptr when it does not fit.
   template <class T>
@@ -18,12 +18,27 @@ class Arena {
     const size_t align = alignof(T);
     size_t start = (used_ + align - 1) & ~(align - 1);
     const size_t bytes = n * sizeof(T);
-    if (start > size_ || bytes > size_ - start) return nullptr;
+    if (start > top_ || bytes > top_ - start) return nullptr;
     uint8_t* p = base_ + start;
     for (size_t i = 0; i < bytes; ++i) p[i] = 0;
     used_ = start + bytes;
     return reinterpret_cast<T*>(p);
   }
+
+  // Scratch storage taken from the top end, for what a reader collects
+  // before it knows the counts: it is released as a whole once the final
+  // arrays (allocated from the bottom) have been filled from it.
+  template <class T>
+  T* alloc_top(size_t n) {
+    const size_t bytes = n * sizeof(T);
+    if (bytes > top_ - used_) return nullptr;
+    size_t start = (top_ - bytes) & ~(alignof(T) - 1);
+    if (start < used_) return nullptr;
+    top_ = start;
+    return reinterpret_cast<T*>(base_ + start);
+  }
+  size_t top_mark() const { return top_; }
+  void release_top(size_t mark) { top_ = mark; }
 
   size_t used() const { return used_; }
   size_t capacity() const { return size_; }
@@ -38,6 +53,7 @@ class Arena {
   uint8_t* base_;
   size_t size_;
   size_t used_ = 0;
+  size_t top_;  // start of the top-end scratch; size_ when there is none
 };
 
 }  // namespace minrt

@@ -32,4 +32,27 @@ RowSink row_sink_of(T& target) {
   };
 }
 
+// The same for the general tracer's rows: 8-bit RGBA, 4 bytes a pixel (CS418
+// needs alpha; writers without it drop the fourth byte).
+struct RgbaRowSink {
+  void* ctx;
+  void (*begin_fn)(void* ctx, int width, int height);
+  void (*row_fn)(void* ctx, int y, const uint8_t* rgba);
+  void (*end_fn)(void* ctx);
+
+  void begin(int width, int height) const { begin_fn(ctx, width, height); }
+  void row(int y, const uint8_t* rgba) const { row_fn(ctx, y, rgba); }
+  void end() const { end_fn(ctx); }
+};
+
+template <class T>
+RgbaRowSink rgba_row_sink_of(T& target) {
+  return RgbaRowSink{
+      &target,
+      [](void* c, int w, int h) { static_cast<T*>(c)->begin(w, h); },
+      [](void* c, int y, const uint8_t* rgba) { static_cast<T*>(c)->row(y, rgba); },
+      [](void* c) { static_cast<T*>(c)->end(); },
+  };
+}
+
 }  // namespace minrt

@@ -12,11 +12,17 @@ double floor(double);
 double sin(double);
 double cos(double);
 double atan(double);
+double atan2(double, double);
+double exp(double);
+double log(double);
 float sqrtf(float);
 float floorf(float);
 float sinf(float);
 float cosf(float);
 float atanf(float);
+float atan2f(float, float);
+float expf(float);
+float logf(float);
 }
 
 namespace minrt {
@@ -29,6 +35,9 @@ struct LibmDouble {
   static real sin(real x) { return ::sin(x); }
   static real cos(real x) { return ::cos(x); }
   static real atan(real x) { return ::atan(x); }
+  static real atan2(real y, real x) { return ::atan2(y, x); }
+  static real exp(real x) { return ::exp(x); }
+  static real log(real x) { return ::log(x); }
   static real from_int(int32_t i) { return static_cast<real>(i); }
   static int32_t to_int(real x) { return static_cast<int32_t>(x); }
 };
@@ -41,6 +50,9 @@ struct LibmFloat {
   static real sin(real x) { return ::sinf(x); }
   static real cos(real x) { return ::cosf(x); }
   static real atan(real x) { return ::atanf(x); }
+  static real atan2(real y, real x) { return ::atan2f(y, x); }
+  static real exp(real x) { return ::expf(x); }
+  static real log(real x) { return ::logf(x); }
   static real from_int(int32_t i) { return static_cast<real>(i); }
   static int32_t to_int(real x) { return static_cast<int32_t>(x); }
 };

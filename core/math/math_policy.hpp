@@ -36,4 +36,13 @@ concept MathPolicy = requires(typename M::real x, int32_t i) {
   { M::name } -> SameAs<const char* const&>;
 };
 
+// What the general tracer (CS418 and the later formats) needs on top:
+// exposure (exp), Gaussian samples (log), sphere texture coordinates (atan2).
+template <class M>
+concept SceneMathPolicy = MathPolicy<M> && requires(typename M::real x) {
+  { M::exp(x) } -> SameAs<typename M::real>;
+  { M::log(x) } -> SameAs<typename M::real>;
+  { M::atan2(x, x) } -> SameAs<typename M::real>;
+};
+
 }  // namespace minrt

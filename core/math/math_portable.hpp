@@ -543,6 +543,12 @@ constexpr float atan(float x) {
 }
 
 }  // namespace portable_detail
+}  // namespace minrt
+
+// exp, log, atan2: the general tracer's extra shims, built on the above.
+#include "core/math/portable_exp_log.hpp"
+
+namespace minrt {
 
 template <int Level>
 struct PortableFloatT {
@@ -560,6 +566,10 @@ struct PortableFloatT {
   static constexpr real sin(real x) { return portable_detail::sin<Level>(x); }
   static constexpr real cos(real x) { return portable_detail::cos<Level>(x); }
   static constexpr real atan(real x) { return portable_detail::atan<Level>(x); }
+  // Used by the general tracer only (portable_exp_log.hpp); min-rt needs none.
+  static constexpr real exp(real x) { return portable_detail::exp(x); }
+  static constexpr real log(real x) { return portable_detail::log(x); }
+  static constexpr real atan2(real y, real x) { return portable_detail::atan2<Level>(y, x); }
   static constexpr real from_int(int32_t i) {
     return portable_detail::from_int(i);
   }
@@ -575,5 +585,6 @@ using PortableFloatMin = PortableFloatT<0>;
 static_assert(MathPolicy<PortableFloatT<0>>);
 static_assert(MathPolicy<PortableFloatT<1>>);
 static_assert(MathPolicy<PortableFloatT<2>>);
+static_assert(SceneMathPolicy<PortableFloatT<2>>);
 
 }  // namespace minrt
