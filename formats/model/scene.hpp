@@ -1,0 +1,121 @@
+// The general scene model: what every front end but SLD produces (CS418 now;
+// Jaworski, miniRT and EASTRAY build on it) and what render/general draws.
+// Plain arrays in the arena, sized after parsing (scene_builder.hpp), so the
+// same structure serves the host and the board. Objects keep their file
+// order in `order`: CS418 lets the later object win a tie in distance.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/math/vec3.hpp"
+
+namespace minrt::model {
+
+inline constexpr int32_t kNoTexture = -1;
+
+// Surface response. Colours are linear and unclamped (negative allowed).
+template <class R>
+struct Material {
+  Vec3<R> color{R(1), R(1), R(1)};
+  Vec3<R> shininess{};     // reflected fraction, per channel
+  Vec3<R> transparency{};  // refracted fraction of the non-reflected part
+  R ior = R(1.458);
+  R roughness = R(0);      // sigma of the Gaussian normal perturbation
+  int32_t texture = kNoTexture;
+};
+
+template <class R>
+struct Sphere {
+  Vec3<R> center;
+  R radius;
+  uint32_t material;
+  uint32_t order;
+};
+
+// Ax + By + Cz + D = 0: `normal` is (A, B, C) as given, `point` the point of
+// the plane nearest the origin.
+template <class R>
+struct Plane {
+  Vec3<R> normal;
+  Vec3<R> point;
+  uint32_t material;
+  uint32_t order;
+};
+
+template <class R>
+struct Vertex {
+  Vec3<R> position;
+  R u, v;  // texture coordinates
+};
+
+// Precomputed for the barycentric test: n = (p1-p0)x(p2-p0), e1 and e2 such
+// that b1 = e1.(p-p0), b2 = e2.(p-p0). p1 and p2 are kept for bounding.
+template <class R>
+struct Triangle {
+  Vec3<R> p0, normal, e1, e2, p1, p2;
+  R u[3], v[3];
+  uint32_t material;
+  uint32_t order;
+};
+
+enum class LightKind : uint8_t { kSun, kBulb };
+
+template <class R>
+struct Light {
+  LightKind kind;
+  Vec3<R> vector;  // sun: direction toward the light (not normalised); bulb: position
+  Vec3<R> color;
+};
+
+enum class Projection : uint8_t { kFlat, kFisheye, kPanorama };
+
+template <class R>
+struct Camera {
+  Vec3<R> eye{};
+  Vec3<R> forward{R(0), R(0), R(-1)};  // not normalised: its length zooms
+  Vec3<R> right{R(1), R(0), R(0)};
+  Vec3<R> up{R(0), R(1), R(0)};
+  Projection projection = Projection::kFlat;
+  bool depth_of_field = false;
+  R focus = R(0);
+  R lens = R(0);
+};
+
+// A decoded texture: sRGB bytes, 3 per texel, rows top first.
+struct Texture {
+  int32_t width = 0;
+  int32_t height = 0;
+  const uint8_t* rgb = nullptr;
+};
+
+// How the tracer turns linear light into bytes and what it does at the depth
+// limit: per format (SPEC.md 5.1). Only CS418's rules exist so far.
+enum class Finish : uint8_t { kCs418 };
+
+template <class R>
+struct Scene {
+  int32_t width = 0;
+  int32_t height = 0;
+  int32_t bounces = 4;
+  int32_t gi_depth = 0;
+  int32_t samples = 1;  // aa
+  bool exposure = false;
+  R exposure_value = R(0);
+  Finish finish = Finish::kCs418;
+  Camera<R> camera;
+
+  const Material<R>* materials = nullptr;
+  uint32_t material_count = 0;
+  const Sphere<R>* spheres = nullptr;
+  uint32_t sphere_count = 0;
+  const Plane<R>* planes = nullptr;
+  uint32_t plane_count = 0;
+  const Triangle<R>* triangles = nullptr;
+  uint32_t triangle_count = 0;
+  const Light<R>* lights = nullptr;
+  uint32_t light_count = 0;
+  const Texture* textures = nullptr;
+  uint32_t texture_count = 0;
+};
+
+}  // namespace minrt::model
