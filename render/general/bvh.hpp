@@ -1,0 +1,277 @@
+// A bounding-volume hierarchy over the scene's bounded objects (spheres and
+// triangles), built once in the arena with binned SAH and traversed with a
+// fixed stack: no recursion, no heap. Planes are unbounded and are tested by
+// the tracer on every ray.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/arena.hpp"
+#include "formats/model/scene.hpp"
+#include "render/general/intersect.hpp"
+
+namespace minrt::general {
+
+inline constexpr int kBvhMaxDepth = 60;     // the traversal stack holds one entry per level
+inline constexpr int kBvhStack = kBvhMaxDepth + 4;
+inline constexpr int kBvhLeafSize = 4;
+inline constexpr int kBvhBins = 12;
+inline constexpr uint32_t kTriangleBit = 0x80000000u;  // in a primitive reference
+
+template <class R>
+struct Bounds {
+  Vec3<R> lo, hi;
+
+  void grow(const Vec3<R>& p) {
+    lo = {p.x < lo.x ? p.x : lo.x, p.y < lo.y ? p.y : lo.y, p.z < lo.z ? p.z : lo.z};
+    hi = {p.x > hi.x ? p.x : hi.x, p.y > hi.y ? p.y : hi.y, p.z > hi.z ? p.z : hi.z};
+  }
+  void grow(const Bounds& b) {
+    grow(b.lo);
+    grow(b.hi);
+  }
+  R area() const {
+    const Vec3<R> e = hi - lo;
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+  }
+  static Bounds empty() {
+    constexpr R kBig = static_cast<R>(3.0e38f);
+    return {{kBig, kBig, kBig}, {-kBig, -kBig, -kBig}};
+  }
+};
+
+// An inner node's children are nodes[index] and nodes[index + 1]; a leaf
+// holds refs[index .. index + count).
+template <class R>
+struct BvhNode {
+  Bounds<R> box;
+  uint32_t index;
+  uint16_t count;  // 0 for an inner node
+  uint16_t axis;   // split axis of an inner node (near child first)
+};
+
+template <class R>
+struct Bvh {
+  const BvhNode<R>* nodes = nullptr;
+  const uint32_t* refs = nullptr;  // sphere index, or triangle index | kTriangleBit
+  uint32_t node_count = 0;
+};
+
+namespace bvh_detail {
+
+template <class R>
+R abs_of(R v) {
+  return v < R(0) ? -v : v;
+}
+
+// Boxes are widened by a few parts in a million of their magnitude so that
+// rounding in the box or in the slab test never culls a grazing hit that the
+// exact intersection routine would find.
+template <class R>
+Bounds<R> padded(Bounds<R> b) {
+  for (int a = 0; a < 3; ++a) {
+    R* lo = a == 0 ? &b.lo.x : a == 1 ? &b.lo.y : &b.lo.z;
+    R* hi = a == 0 ? &b.hi.x : a == 1 ? &b.hi.y : &b.hi.z;
+    const R mag = (abs_of(*lo) > abs_of(*hi) ? abs_of(*lo) : abs_of(*hi)) + (*hi - *lo);
+    const R pad = mag * R(4e-6) + R(1e-12);
+    *lo = *lo - pad;
+    *hi = *hi + pad;
+  }
+  return b;
+}
+
+template <class R>
+Bounds<R> bounds_of(const model::Scene<R>& s, uint32_t ref) {
+  Bounds<R> b = Bounds<R>::empty();
+  if ((ref & kTriangleBit) != 0) {
+    const model::Triangle<R>& t = s.triangles[ref & ~kTriangleBit];
+    b.grow(t.p0);
+    b.grow(t.p1);
+    b.grow(t.p2);
+  } else {
+    const model::Sphere<R>& sp = s.spheres[ref];
+    const R r = sp.radius < R(0) ? -sp.radius : sp.radius;
+    b.lo = sp.center - Vec3<R>{r, r, r};
+    b.hi = sp.center + Vec3<R>{r, r, r};
+  }
+  return padded(b);
+}
+
+}  // namespace bvh_detail
+
+// Arena bytes the BVH of n primitives may take (for sizing before the build).
+template <class R>
+constexpr size_t bvh_footprint(uint32_t n) {
+  return Arena::footprint<BvhNode<R>>(2 * static_cast<size_t>(n) + 1) + Arena::footprint<uint32_t>(n) +
+         Arena::footprint<Bounds<R>>(n) + Arena::footprint<Vec3<R>>(n);
+}
+
+// Builds over every sphere and triangle. False when the arena is too small
+// (or, for a pathological scene, the tree would be deeper than the stack).
+template <class M>
+bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<typename M::real>& out) {
+  using R = typename M::real;
+  const uint32_t n = scene.sphere_count + scene.triangle_count;
+  out = Bvh<R>{};
+  if (n == 0) return true;
+  auto* nodes = arena.alloc_zeroed<BvhNode<R>>(2 * static_cast<size_t>(n));
+  auto* refs = arena.alloc_zeroed<uint32_t>(n);
+  const size_t mark = arena.top_mark();
+  auto* boxes = arena.alloc_top<Bounds<R>>(n);
+  auto* centers = arena.alloc_top<Vec3<R>>(n);
+  if (nodes == nullptr || refs == nullptr || boxes == nullptr || centers == nullptr) {
+    arena.release_top(mark);
+    return false;
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    refs[i] = i < scene.sphere_count ? i : (i - scene.sphere_count) | kTriangleBit;
+    boxes[i] = bvh_detail::bounds_of(scene, refs[i]);
+    centers[i] = (boxes[i].lo + boxes[i].hi) * R(0.5);
+  }
+  // Work items: node to fill, its range of refs, its depth.
+  struct Item {
+    uint32_t node, begin, end;
+    int depth;
+  };
+  Item stack[kBvhStack];
+  int top = 0;
+  stack[top++] = Item{0, 0, n, 0};
+  uint32_t used = 1;
+  while (top > 0) {
+    const Item it = stack[--top];
+    BvhNode<R>& node = nodes[it.node];
+    Bounds<R> box = Bounds<R>::empty();
+    Bounds<R> cbox = Bounds<R>::empty();
+    for (uint32_t i = it.begin; i < it.end; ++i) {
+      box.grow(boxes[i]);
+      cbox.grow(centers[i]);
+    }
+    node.box = box;
+    const uint32_t count = it.end - it.begin;
+    auto make_leaf = [&] {
+      node.index = it.begin;
+      node.count = static_cast<uint16_t>(count);
+    };
+    const bool may_leaf = count <= 0xffffu;
+    if (may_leaf && (count <= static_cast<uint32_t>(kBvhLeafSize) || it.depth >= kBvhMaxDepth)) {
+      make_leaf();
+      continue;
+    }
+    // Binned SAH along the widest centroid axis.
+    const Vec3<R> ext = cbox.hi - cbox.lo;
+    const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    const R lo = cbox.lo[axis];
+    const R width = ext[axis];
+    int best_split = -1;
+    R best = R(0);
+    auto bin_of = [&](uint32_t i) {
+      const R f = (centers[i][axis] - lo) * (R(kBvhBins) / width);
+      int b = 0;
+      while (b + 1 < kBvhBins && f >= R(b + 1)) ++b;  // no float-to-int conversion needed
+      return b;
+    };
+    if (width > R(0)) {
+      Bounds<R> bin_box[kBvhBins];
+      uint32_t bin_count[kBvhBins] = {};
+      for (auto& b : bin_box) b = Bounds<R>::empty();
+      for (uint32_t i = it.begin; i < it.end; ++i) {
+        const int b = bin_of(i);
+        bin_box[b].grow(boxes[i]);
+        ++bin_count[b];
+      }
+      R right_area[kBvhBins];
+      uint32_t right_count[kBvhBins];
+      Bounds<R> acc = Bounds<R>::empty();
+      uint32_t cnt = 0;
+      for (int b = kBvhBins - 1; b > 0; --b) {
+        if (bin_count[b] > 0) acc.grow(bin_box[b]);
+        cnt += bin_count[b];
+        right_area[b] = cnt > 0 ? acc.area() : R(0);
+        right_count[b] = cnt;
+      }
+      acc = Bounds<R>::empty();
+      cnt = 0;
+      for (int b = 1; b < kBvhBins; ++b) {
+        if (bin_count[b - 1] > 0) acc.grow(bin_box[b - 1]);
+        cnt += bin_count[b - 1];
+        if (cnt == 0 || right_count[b] == 0) continue;
+        const R cost = acc.area() * M::from_int(static_cast<int32_t>(cnt)) +
+                       right_area[b] * M::from_int(static_cast<int32_t>(right_count[b]));
+        if (best_split < 0 || cost < best) {
+          best = cost;
+          best_split = b;
+        }
+      }
+    }
+    const R leaf_cost = box.area() * M::from_int(static_cast<int32_t>(count));
+    uint32_t mid;
+    if (best_split < 0) {
+      if (may_leaf && count <= 16u) {
+        make_leaf();
+        continue;
+      }
+      mid = it.begin + count / 2;  // all centres equal: split the list in two
+    } else {
+      if (may_leaf && count <= 16u && best >= leaf_cost) {
+        make_leaf();  // splitting would cost more than testing them all
+        continue;
+      }
+      uint32_t i = it.begin, j = it.end;
+      while (i < j) {
+        if (bin_of(i) < best_split) {
+          ++i;
+        } else {
+          --j;
+          const uint32_t r = refs[i]; refs[i] = refs[j]; refs[j] = r;
+          const Bounds<R> bx = boxes[i]; boxes[i] = boxes[j]; boxes[j] = bx;
+          const Vec3<R> c = centers[i]; centers[i] = centers[j]; centers[j] = c;
+        }
+      }
+      mid = i;
+    }
+    if (top + 2 > kBvhStack) {
+      arena.release_top(mark);
+      return false;
+    }
+    const uint32_t left = used;
+    used += 2;
+    node.index = left;
+    node.count = 0;
+    node.axis = static_cast<uint16_t>(axis);
+    stack[top++] = Item{left + 1, mid, it.end, it.depth + 1};
+    stack[top++] = Item{left, it.begin, mid, it.depth + 1};
+  }
+  arena.release_top(mark);
+  out.nodes = nodes;
+  out.refs = refs;
+  out.node_count = used;
+  return true;
+}
+
+// Slab test against a box: entry distance, or false when the ray misses it
+// or enters beyond `limit`.
+template <class R>
+bool hit_box(const Bounds<R>& b, const Vec3<R>& origin, const Vec3<R>& inv, R limit) {
+  R t0 = (b.lo.x - origin.x) * inv.x, t1 = (b.hi.x - origin.x) * inv.x;
+  R tmin = t0 < t1 ? t0 : t1, tmax = t0 < t1 ? t1 : t0;
+  t0 = (b.lo.y - origin.y) * inv.y;
+  t1 = (b.hi.y - origin.y) * inv.y;
+  tmin = (t0 < t1 ? t0 : t1) > tmin ? (t0 < t1 ? t0 : t1) : tmin;
+  tmax = (t0 < t1 ? t1 : t0) < tmax ? (t0 < t1 ? t1 : t0) : tmax;
+  t0 = (b.lo.z - origin.z) * inv.z;
+  t1 = (b.hi.z - origin.z) * inv.z;
+  tmin = (t0 < t1 ? t0 : t1) > tmin ? (t0 < t1 ? t0 : t1) : tmin;
+  tmax = (t0 < t1 ? t1 : t0) < tmax ? (t0 < t1 ? t1 : t0) : tmax;
+  return tmax >= tmin && tmax >= R(0) && tmin <= limit;
+}
+
+// 1/d per axis, with zero components replaced by a tiny value of the same
+// sign so the slab test never multiplies zero by infinity.
+template <class R>
+Vec3<R> inverse_dir(const Vec3<R>& d) {
+  constexpr R kTiny = static_cast<R>(1e-30f);
+  auto inv = [](R v) { return R(1) / (v == R(0) ? kTiny : v); };
+  return {inv(d.x), inv(d.y), inv(d.z)};
+}
+
+}  // namespace minrt::general

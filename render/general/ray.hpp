@@ -1,0 +1,33 @@
+// A ray and the nearest hit found so far, for the general tracer.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/math/vec3.hpp"
+
+namespace minrt::general {
+
+template <class R>
+struct Ray {
+  Vec3<R> origin;
+  Vec3<R> dir;  // unit length
+};
+
+// What a hit is on: an index into the scene's array of that kind.
+enum class HitKind : uint8_t { kNone, kSphere, kPlane, kTriangle };
+
+template <class R>
+struct Hit {
+  R t;
+  HitKind kind = HitKind::kNone;
+  uint32_t index = 0;
+  uint32_t order = 0;  // file order: on equal t the later object wins
+  R b1 = R(0), b2 = R(0);  // triangle barycentrics
+
+  // CS418's tie rule (SPEC.md 1.3): equal distance, later object.
+  bool closer(R t2, uint32_t order2) const {
+    return kind == HitKind::kNone || t2 < t || (t2 == t && order2 > order);
+  }
+};
+
+}  // namespace minrt::general

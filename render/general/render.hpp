@@ -1,0 +1,122 @@
+// Renders a general scene: set-up (BVH, feature selection) once, then rows.
+// Rows are independent (every random number is a function of the pixel), so
+// the host may render them in any order or in parallel threads and get the
+// same bytes; the board renders them in order and streams each one.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/arena.hpp"
+#include "core/base/counter_rng.hpp"
+#include "core/image/row_sink.hpp"
+#include "core/image/srgb.hpp"
+#include "formats/model/scene.hpp"
+#include "render/general/bvh.hpp"
+#include "render/general/camera.hpp"
+#include "render/general/features.hpp"
+#include "render/general/tracer.hpp"
+
+namespace minrt::general {
+
+// The compiled paths: features outside a path's set make the scene use the
+// next larger one (features.hpp).
+inline constexpr uint32_t kPathBasic = 0;  // spheres and suns
+inline constexpr uint32_t kPathDirect = kPlanes | kTriangles | kBulbs | kExposure | kLenses;
+inline constexpr uint32_t kPathFull = kAllFeatures;
+
+template <class M>
+class Renderer {
+  using R = typename M::real;
+
+ public:
+  // Builds the BVH in the arena and picks the path. False when the arena is
+  // too small.
+  bool setup(const model::Scene<R>& scene, Arena& arena, uint32_t seed, bool force_full = false) {
+    scene_ = &scene;
+    seed_ = seed;
+    if (!build_bvh<M>(scene, arena, bvh_)) return false;
+    features_ = features_of(scene);
+    if (force_full) path_ = kPathFull;
+    else if ((features_ & ~kPathBasic) == 0) path_ = kPathBasic;
+    else if ((features_ & ~kPathDirect) == 0) path_ = kPathDirect;
+    else path_ = kPathFull;
+    return true;
+  }
+
+  uint32_t features() const { return features_; }
+  uint32_t path() const { return path_; }
+  const Bvh<R>& bvh() const { return bvh_; }
+
+  // One row of RGBA bytes (4 * width). Safe to call from several threads.
+  void render_row(int y, uint8_t* rgba) const {
+    switch (path_) {
+      case kPathBasic: row<kPathBasic>(y, rgba); break;
+      case kPathDirect: row<kPathDirect>(y, rgba); break;
+      default: row<kPathFull>(y, rgba); break;
+    }
+  }
+
+  // Every row in order into the sink; `row_buffer` holds 4 * width bytes.
+  void render(RgbaRowSink sink, uint8_t* row_buffer) const {
+    sink.begin(scene_->width, scene_->height);
+    for (int y = 0; y < scene_->height; ++y) {
+      render_row(y, row_buffer);
+      sink.row(y, row_buffer);
+    }
+    sink.end();
+  }
+
+ private:
+  template <uint32_t F>
+  void row(int y, uint8_t* out) const {
+    const model::Scene<R>& s = *scene_;
+    const Tracer<M, F> tracer(s, bvh_);
+    const CameraRays<M> camera(s);
+    const R half = R(0.5);
+    for (int x = 0; x < s.width; ++x) {
+      CounterRng rng(seed_, static_cast<uint32_t>(y) * static_cast<uint32_t>(s.width) + static_cast<uint32_t>(x));
+      Vec3<R> sum{};
+      int32_t hits = 0;
+      for (int32_t k = 0; k < s.samples; ++k) {
+        R px = M::from_int(x), py = M::from_int(y);
+        if constexpr ((F & kLensOrAa) != 0) {
+          if (s.samples > 1) {
+            // Jitter centred on the unjittered ray (SPEC.md 1.3).
+            px = px + (rng.uniform<M>() - half);
+            py = py + (rng.uniform<M>() - half);
+          }
+        }
+        Ray<R> ray;
+        if (!camera.primary(px, py, rng, ray)) continue;
+        const Sample<R> smp = tracer.trace(ray, 0, 0, R(0), rng);
+        if (!smp.hit) continue;
+        sum += smp.color;
+        ++hits;
+      }
+      uint8_t* px_out = out + 4 * x;
+      if (hits == 0) {
+        px_out[0] = px_out[1] = px_out[2] = px_out[3] = 0;
+        continue;
+      }
+      Vec3<R> c = hits == 1 ? sum : sum / M::from_int(hits);
+      if constexpr ((F & kExposure) != 0) {
+        if (s.exposure) {
+          c = Vec3<R>{R(1) - M::exp(-s.exposure_value * c.x), R(1) - M::exp(-s.exposure_value * c.y),
+                      R(1) - M::exp(-s.exposure_value * c.z)};
+        }
+      }
+      px_out[0] = srgb_encode<R>(c.x);
+      px_out[1] = srgb_encode<R>(c.y);
+      px_out[2] = srgb_encode<R>(c.z);
+      px_out[3] = static_cast<uint8_t>(static_cast<uint32_t>(255 * hits) / static_cast<uint32_t>(s.samples));
+    }
+  }
+
+  const model::Scene<R>* scene_ = nullptr;
+  Bvh<R> bvh_{};
+  uint32_t seed_ = 0;
+  uint32_t features_ = 0;
+  uint32_t path_ = kPathFull;
+};
+
+}  // namespace minrt::general

@@ -1,0 +1,275 @@
+// The general tracer: nearest hit through the BVH and the plane list, direct
+// light with shadows, reflection, refraction, roughness and global
+// illumination, as SPEC.md 1.3 gives them for CS418. Templated on the math
+// policy (like the min-rt tracer) and on the features the scene uses
+// (features.hpp): code for an unused feature is not compiled into the path.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/counter_rng.hpp"
+#include "core/image/srgb.hpp"
+#include "formats/model/scene.hpp"
+#include "render/general/bvh.hpp"
+#include "render/general/features.hpp"
+#include "render/general/intersect.hpp"
+#include "render/general/sampling.hpp"
+
+namespace minrt::general {
+
+// Secondary rays ignore hits at or below this distance (SPEC.md 1.3: any
+// value from 1e-10 to 1e-3 gives the reference images).
+inline constexpr double kSecondaryEpsilon = 1e-4;
+
+template <class R>
+struct Sample {
+  Vec3<R> color;
+  bool hit;
+};
+
+template <class M, uint32_t F>
+class Tracer {
+  using R = typename M::real;
+
+ public:
+  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh) : s_(scene), bvh_(bvh) {}
+
+  // Colour along a ray; `hit` false when it meets nothing.
+  Sample<R> trace(const Ray<R>& ray, int depth, int gi_level, R eps, CounterRng& rng) const {
+    Hit<R> h{};
+    nearest(ray, eps, h);
+    if (h.kind == HitKind::kNone) return {{}, false};
+    return {shade(ray, h, depth, gi_level, rng), true};
+  }
+
+ private:
+  // ------------------------------------------------------------ visibility
+  void nearest(const Ray<R>& ray, R eps, Hit<R>& h) const {
+    if constexpr ((F & kPlanes) != 0) {
+      for (uint32_t i = 0; i < s_.plane_count; ++i) {
+        const R t = hit_plane<M>(s_.planes[i], ray, eps);
+        if (t > eps && h.closer(t, s_.planes[i].order)) {
+          h.t = t;
+          h.kind = HitKind::kPlane;
+          h.index = i;
+          h.order = s_.planes[i].order;
+        }
+      }
+    }
+    if (bvh_.node_count == 0) return;
+    const Vec3<R> inv = inverse_dir(ray.dir);
+    const bool neg[3] = {ray.dir.x < R(0), ray.dir.y < R(0), ray.dir.z < R(0)};
+    uint32_t stack[kBvhStack];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const BvhNode<R>& node = bvh_.nodes[stack[--top]];
+      const R limit = h.kind == HitKind::kNone ? R(3.0e38f) : h.t;
+      if (!hit_box(node.box, ray.origin, inv, limit)) continue;
+      if (node.count == 0) {
+        // Near child last on the stack, so it is visited first.
+        const uint32_t far_child = node.index + (neg[node.axis] ? 0u : 1u);
+        stack[top++] = far_child;
+        stack[top++] = node.index + (neg[node.axis] ? 1u : 0u);
+        continue;
+      }
+      for (uint32_t k = 0; k < node.count; ++k) {
+        const uint32_t ref = bvh_.refs[node.index + k];
+        if constexpr ((F & kTriangles) != 0) {
+          if ((ref & kTriangleBit) != 0) {
+            const uint32_t i = ref & ~kTriangleBit;
+            R b1, b2;
+            const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
+            if (t > eps && h.closer(t, s_.triangles[i].order)) {
+              h.t = t;
+              h.kind = HitKind::kTriangle;
+              h.index = i;
+              h.order = s_.triangles[i].order;
+              h.b1 = b1;
+              h.b2 = b2;
+            }
+            continue;
+          }
+        }
+        const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+        if (t > eps && h.closer(t, s_.spheres[ref].order)) {
+          h.t = t;
+          h.kind = HitKind::kSphere;
+          h.index = ref;
+          h.order = s_.spheres[ref].order;
+        }
+      }
+    }
+  }
+
+  // Is anything between eps and `limit` along the ray? (Shadow rays.)
+  bool occluded(const Ray<R>& ray, R eps, R limit) const {
+    if constexpr ((F & kPlanes) != 0) {
+      for (uint32_t i = 0; i < s_.plane_count; ++i) {
+        const R t = hit_plane<M>(s_.planes[i], ray, eps);
+        if (t > eps && t < limit) return true;
+      }
+    }
+    if (bvh_.node_count == 0) return false;
+    const Vec3<R> inv = inverse_dir(ray.dir);
+    uint32_t stack[kBvhStack];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const BvhNode<R>& node = bvh_.nodes[stack[--top]];
+      if (!hit_box(node.box, ray.origin, inv, limit)) continue;
+      if (node.count == 0) {
+        stack[top++] = node.index + 1;
+        stack[top++] = node.index;
+        continue;
+      }
+      for (uint32_t k = 0; k < node.count; ++k) {
+        const uint32_t ref = bvh_.refs[node.index + k];
+        R t;
+        if constexpr ((F & kTriangles) != 0) {
+          if ((ref & kTriangleBit) != 0) {
+            R b1, b2;
+            t = hit_triangle<M>(s_.triangles[ref & ~kTriangleBit], ray, eps, b1, b2);
+            if (t > eps && t < limit) return true;
+            continue;
+          }
+        }
+        t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+        if (t > eps && t < limit) return true;
+      }
+    }
+    return false;
+  }
+
+  // --------------------------------------------------------------- shading
+  Vec3<R> shade(const Ray<R>& ray, const Hit<R>& h, int depth, int gi_level, CounterRng& rng) const {
+    const Vec3<R> p = ray.origin + ray.dir * h.t;
+    Vec3<R> n;
+    uint32_t mat_index;
+    switch (h.kind) {
+      case HitKind::kSphere: {
+        const model::Sphere<R>& sp = s_.spheres[h.index];
+        n = (p - sp.center) / sp.radius;
+        mat_index = sp.material;
+        break;
+      }
+      case HitKind::kPlane:
+        n = normalize<M>(s_.planes[h.index].normal);
+        mat_index = s_.planes[h.index].material;
+        break;
+      default:
+        n = normalize<M>(s_.triangles[h.index].normal);
+        mat_index = s_.triangles[h.index].material;
+        break;
+    }
+    const model::Material<R>& mat = s_.materials[mat_index];
+    const bool entering = dot(ray.dir, n) < R(0);
+    if (!entering) n = -n;
+    if constexpr ((F & kRoughness) != 0) {
+      if (mat.roughness > R(0)) n = normalize<M>(n + gaussian3<M>(rng) * mat.roughness);
+    }
+    Vec3<R> color = mat.color;
+    if constexpr ((F & kTextures) != 0) {
+      if (mat.texture != model::kNoTexture && h.kind != HitKind::kPlane) color = texel(h, p, mat.texture);
+    }
+
+    const R eps = static_cast<R>(kSecondaryEpsilon);
+    Vec3<R> diffuse{};
+    for (uint32_t i = 0; i < s_.light_count; ++i) {
+      const model::Light<R>& light = s_.lights[i];
+      Vec3<R> dir, energy;
+      R limit = R(3.0e38f);
+      if constexpr ((F & kBulbs) != 0) {
+        if (light.kind == model::LightKind::kBulb) {
+          const Vec3<R> v = light.vector - p;
+          const R dist2 = dot(v, v);
+          const R dist = M::sqrt(dist2);
+          dir = v / dist;
+          energy = light.color / dist2;
+          limit = dist;
+        } else {
+          dir = normalize<M>(light.vector);
+          energy = light.color;
+        }
+      } else {
+        dir = normalize<M>(light.vector);
+        energy = light.color;
+      }
+      const R lambert = dot(n, dir);
+      if (!(lambert > R(0))) continue;
+      if (occluded(Ray<R>{p, dir}, eps, limit)) continue;
+      diffuse += color * energy * lambert;
+    }
+    if constexpr ((F & kGi) != 0) {
+      if (gi_level < s_.gi_depth) {
+        const Vec3<R> d = normalize<M>(n + in_unit_ball<M>(rng));
+        const Sample<R> g = trace(Ray<R>{p, d}, depth, gi_level + 1, eps, rng);
+        if (g.hit) diffuse += color * g.color;
+      }
+    }
+    if constexpr ((F & kSecondary) == 0) {
+      return diffuse;
+    } else {
+      // At the depth limit the surface is purely diffuse (SPEC.md 1.3).
+      if (depth >= s_.bounces) return diffuse;
+      const Vec3<R> s = mat.shininess;
+      const Vec3<R> t = mat.transparency;
+      const Vec3<R> one{R(1), R(1), R(1)};
+      const R ni = dot(n, ray.dir);
+      const Vec3<R> reflect_dir = ray.dir - n * (R(2) * ni);
+      Vec3<R> reflected{}, refracted{};
+      if (s.x != R(0) || s.y != R(0) || s.z != R(0)) {
+        const Sample<R> r = trace(Ray<R>{p, reflect_dir}, depth + 1, gi_level, eps, rng);
+        if (r.hit) reflected = r.color;
+      }
+      const Vec3<R> rest = one - s;
+      if ((t.x != R(0) && rest.x != R(0)) || (t.y != R(0) && rest.y != R(0)) || (t.z != R(0) && rest.z != R(0))) {
+        const R eta = entering ? R(1) / mat.ior : mat.ior;
+        const R k = R(1) - eta * eta * (R(1) - ni * ni);
+        const Vec3<R> dir = k < R(0) ? reflect_dir : ray.dir * eta - n * (eta * ni + M::sqrt(k));
+        const Sample<R> r = trace(Ray<R>{p, dir}, depth + 1, gi_level, eps, rng);
+        if (r.hit) refracted = r.color;
+      }
+      return s * reflected + rest * (t * refracted + (one - t) * diffuse);
+    }
+  }
+
+  // Nearest texel, rounding to the closest one (SPEC.md 1.3), decoded from
+  // sRGB by table.
+  Vec3<R> texel(const Hit<R>& h, const Vec3<R>& p, int32_t id) const {
+    const model::Texture& tex = s_.textures[id];
+    R u, v;
+    if (h.kind == HitKind::kSphere) {
+      const model::Sphere<R>& sp = s_.spheres[h.index];
+      const Vec3<R> q = (p - sp.center) / sp.radius;
+      constexpr R kPi = static_cast<R>(3.14159265358979323846);
+      const R lon = M::atan2(q.x, q.z);
+      const R lat = M::atan2(q.y, M::sqrt(q.x * q.x + q.z * q.z));
+      u = lon / (R(2) * kPi) + R(0.25);
+      v = R(0.5) - lat / kPi;
+    } else {
+      const model::Triangle<R>& tr = s_.triangles[h.index];
+      const R b0 = R(1) - h.b1 - h.b2;
+      u = b0 * tr.u[0] + h.b1 * tr.u[1] + h.b2 * tr.u[2];
+      v = b0 * tr.v[0] + h.b1 * tr.v[1] + h.b2 * tr.v[2];
+    }
+    const int32_t x = wrap(u * M::from_int(tex.width), tex.width);
+    const int32_t y = wrap(v * M::from_int(tex.height), tex.height);
+    const uint8_t* c = tex.rgb + 3 * (static_cast<uint32_t>(y) * static_cast<uint32_t>(tex.width) + static_cast<uint32_t>(x));
+    return {srgb_decode<R>(c[0]), srgb_decode<R>(c[1]), srgb_decode<R>(c[2])};
+  }
+  // round(x) mod n, for any finite x (non-finite gives 0).
+  static int32_t wrap(R x, int32_t n) {
+    R r = M::floor(x + R(0.5));
+    const R nn = M::from_int(n);
+    r = r - M::floor(r / nn) * nn;  // into [0, n)
+    int32_t i = (r >= R(0) && r < nn) ? M::to_int(r) : 0;
+    if (i >= n) i = n - 1;
+    return i;
+  }
+
+  const model::Scene<R>& s_;
+  const Bvh<R>& bvh_;
+};
+
+}  // namespace minrt::general
