@@ -1,5 +1,6 @@
-// minrt: the host renderer, a drop-in for the original min-rt. Reads an SLD
-// scene (stdin or a file), writes the PPM image (stdout or -o FILE).
+// minrt: the host renderer. For SLD a drop-in for the original min-rt (scene
+// on stdin or a file, PPM on stdout or -o FILE); for CS418 scenes like the
+// course's program (writes the PNG named in the scene, or -o FILE).
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -11,7 +12,9 @@
 #include <unistd.h>
 
 #include "core/base/text_numbers.hpp"
+#include "general_cli.hpp"
 #include "output_file.hpp"
+#include "scene_format.hpp"
 #include "render_variants.hpp"
 #include "stdio_stream.hpp"
 
@@ -23,10 +26,14 @@ constexpr int kExitIoError = 1;
 
 void print_help(std::FILE* f) {
   std::fputs(
-      "usage: minrt [OPTIONS] [SCENE.sld]\n"
+      "usage: minrt [OPTIONS] [SCENE.sld | SCENE.txt]\n"
       "Renders an SLD scene like the original min-rt: the scene comes from SCENE.sld\n"
       "(or standard input), the PPM image goes to standard output.\n"
+      "Renders a CS418 scene (a .txt file whose first line is 'png W H NAME.png')\n"
+      "like the course's program: the PNG goes to NAME.png, or to -o FILE.\n"
       "\n"
+      "  --scene-format sld|cs418 the scene's format (default: from the extension,\n"
+      "                           then the first word: 'png' means CS418)\n"
       "  --size WxH               image size (default 512x512, at most 4096x4096)\n"
       "  --format p3|p6           PPM flavour (default p3, the original's text form)\n"
       "  --precision double|float floating-point type (default double)\n"
@@ -38,6 +45,13 @@ void print_help(std::FILE* f) {
       "                           FIFO, device or symbolic link is refused; - is stdout)\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
+      "CS418 only:\n"
+      "  --threads N              render rows on N threads (default: every core;\n"
+      "                           the image is the same for any N)\n"
+      "  --seed N                 random numbers for aa, dof, roughness, gi (default 1)\n"
+      "  --all-features           render on the path with every feature compiled in\n"
+      "                           (for measuring what the specialised paths save)\n"
+      "  --stats                  say which path rendered the scene\n"
       "  -h, --help               this text\n"
       "  --version                version\n"
       "\n"
@@ -69,6 +83,8 @@ int main(int argc, char** argv) {
   const char* output_path = nullptr;
   bool quiet = false;
   bool write_through = false;
+  minrt::host::SceneFormat scene_format = minrt::host::SceneFormat::kAuto;
+  minrt::host::GeneralCli general;
 
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -107,6 +123,26 @@ int main(int argc, char** argv) {
       output_path = value("--output");
     } else if (arg == "--write-through") {
       write_through = true;
+    } else if (arg == "--scene-format") {
+      const std::string v = value("--scene-format");
+      if (!minrt::host::parse_scene_format(v, scene_format))
+        usage_error("bad --scene-format '" + v + "': expected sld or cs418");
+    } else if (arg == "--threads") {
+      const char* v = value("--threads");
+      uint32_t n = 0;
+      if (!minrt::parse_decimal(v, 0, 1024, n) || n == 0)
+        usage_error(std::string("bad --threads '") + v + "': expected 1..1024");
+      general.options.threads = static_cast<int>(n);
+    } else if (arg == "--seed") {
+      const char* v = value("--seed");
+      uint32_t n = 0;
+      if (!minrt::parse_decimal(v, 0, 0xffffffffu, n))
+        usage_error(std::string("bad --seed '") + v + "': expected 0..4294967295");
+      general.options.seed = n;
+    } else if (arg == "--all-features") {
+      general.options.force_full = true;
+    } else if (arg == "--stats") {
+      general.stats = true;
     } else if (arg == "-q" || arg == "--quiet") {
       quiet = true;
     } else if (arg == "-") {
@@ -122,7 +158,44 @@ int main(int argc, char** argv) {
   if (minrt::host::variant_name(variant) == nullptr)
     usage_error("this combination of --precision and --shims is not built (portable shims are float only)");
 
-  std::FILE* in = stdin;
+  // Which reader: the option, else the extension and the first word. Standard
+  // input is read whole first so that it can be looked at.
+  std::string stdin_text;
+  std::FILE* stdin_copy = nullptr;
+  if (scene_format == minrt::host::SceneFormat::kAuto || scene_format == minrt::host::SceneFormat::kCs418) {
+    std::string head;
+    if (scene_path == nullptr) {
+      char buf[65536];
+      for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, stdin)) > 0;) stdin_text.append(buf, n);
+      if (std::ferror(stdin) != 0) {
+        std::fprintf(stderr, "minrt: error: cannot read <stdin>: %s\n", std::strerror(errno));
+        return kExitUsage;
+      }
+      head = stdin_text.substr(0, 4096);
+    } else if (std::FILE* f = std::fopen(scene_path, "rb")) {
+      char buf[4096];
+      head.assign(buf, std::fread(buf, 1, sizeof buf, f));
+      std::fclose(f);
+    }
+    if (scene_format == minrt::host::SceneFormat::kAuto)
+      scene_format = minrt::host::detect_scene_format(scene_path != nullptr ? scene_path : "", head);
+    if (scene_format == minrt::host::SceneFormat::kSld && scene_path == nullptr) {
+      // The SLD reader streams from a FILE: give it the bytes already read.
+      stdin_copy = stdin_text.empty() ? std::fopen("/dev/null", "rb")
+                                      : fmemopen(stdin_text.data(), stdin_text.size(), "rb");
+    }
+  }
+  if (scene_format == minrt::host::SceneFormat::kCs418) {
+    general.scene_path = scene_path != nullptr ? scene_path : "-";
+    general.scene_text = std::move(stdin_text);
+    general.output_path = output_path;
+    general.write_through = write_through;
+    general.quiet = quiet;
+    general.options.variant = variant;
+    return minrt::host::run_cs418_cli(general);
+  }
+
+  std::FILE* in = stdin_copy != nullptr ? stdin_copy : stdin;
   const char* display_name = scene_path != nullptr ? scene_path : "<stdin>";
   if (scene_path != nullptr) {
     in = std::fopen(scene_path, "rb");

@@ -1,0 +1,125 @@
+#include "general_cli.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+#include "file_input.hpp"
+#include "output_file.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+constexpr int kExitSceneError = 2;
+constexpr int kExitIoError = 1;
+// A scene file larger than this is refused before it is read.
+constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 30;
+
+struct WarningContext {
+  const char* file;
+};
+void print_warning(void* ctx, const Diagnostic& d) {
+  const auto* w = static_cast<const WarningContext*>(ctx);
+  std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w->file, d.pos.line, d.pos.col, d.message);
+}
+
+bool ends_with(const std::string& s, const char* tail) {
+  const std::size_t n = std::strlen(tail);
+  return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
+}
+
+bool write_ppm(std::FILE* f, const RgbaImage& img) {
+  std::fprintf(f, "P6\n%d %d\n255\n", img.width, img.height);
+  std::vector<uint8_t> row(static_cast<std::size_t>(img.width) * 3);
+  for (int y = 0; y < img.height; ++y) {
+    const uint8_t* src = img.rgba.data() + static_cast<std::size_t>(y) * img.width * 4;
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < 3; ++c) row[3 * x + c] = src[4 * x + c];
+    if (std::fwrite(row.data(), 1, row.size(), f) != row.size()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string cs418_output_name(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string kw, w, h, name;
+    if (!(words >> kw)) continue;
+    if (kw != "png" || !(words >> w >> h >> name)) return "";
+    return name;
+  }
+  return "";
+}
+
+int run_cs418_cli(GeneralCli& cli) {
+  const bool from_stdin = cli.scene_path == "-";
+  const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
+  if (!from_stdin) {
+    std::string why;
+    if (!read_whole_file(cli.scene_path, cli.scene_text, why, kMaxSceneBytes)) {
+      std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", cli.scene_path.c_str(), why.c_str());
+      return kExitSceneError;
+    }
+  }
+  std::string base_dir;
+  if (!from_stdin) {
+    const std::size_t slash = cli.scene_path.rfind('/');
+    if (slash != std::string::npos) base_dir = cli.scene_path.substr(0, slash + 1);
+  }
+
+  // Where the image goes, checked before the render: -o, else the png line.
+  std::string out_path = cli.output_path != nullptr ? cli.output_path : cs418_output_name(cli.scene_text);
+  if (!out_path.empty()) {
+    std::string why;
+    if (!check_output_target(out_path, cli.write_through, why)) {
+      std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
+      return kExitIoError;
+    }
+  }
+
+  WarningContext wctx{shown.c_str()};
+  WarningSink warnings;
+  if (!cli.quiet) warnings = WarningSink{&print_warning, &wctx};
+  GeneralResult result;
+  std::string error;
+  if (!render_cs418(cli.scene_text, shown, base_dir, cli.options, result, error, warnings)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitSceneError;
+  }
+  if (cli.stats)
+    std::fprintf(stderr, "minrt: %s: %dx%d, path %s, features 0x%03x\n", shown.c_str(), result.image.width,
+                 result.image.height, result.path, result.features);
+  if (out_path.empty()) out_path = result.output_name;
+
+  AtomicOutput output;
+  std::string why;
+  if (!output.open(out_path, cli.write_through, why)) {
+    std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
+    return kExitIoError;
+  }
+  bool ok;
+  if (ends_with(out_path, ".ppm")) {
+    ok = write_ppm(output.file(), result.image);
+    if (!ok) why = std::strerror(errno);
+  } else {
+    ok = write_png(output.file(), result.image, why);
+  }
+  if (!ok) {
+    output.discard();
+    std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.c_str());
+    return kExitIoError;
+  }
+  if (!output.commit(why)) {
+    std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
+    return kExitIoError;
+  }
+  return 0;
+}
+
+}  // namespace minrt::host

@@ -1,0 +1,28 @@
+// minrt's path for the formats on the general tracer (CS418 so far): read
+// the scene file, check where the image goes before the long work, render,
+// then write PNG (or PPM when the output name ends in .ppm) all or nothing.
+#pragma once
+
+#include <string>
+
+#include "general_render.hpp"
+
+namespace minrt::host {
+
+struct GeneralCli {
+  std::string scene_path;      // "-" for standard input
+  std::string scene_text;      // already read when scene_path is "-"
+  const char* output_path = nullptr;  // -o, else the name in the scene
+  bool write_through = false;
+  bool quiet = false;
+  bool stats = false;  // print the path and features on standard error
+  GeneralOptions options;
+};
+
+// Returns the process's exit status; messages go to standard error.
+int run_cs418_cli(GeneralCli& cli);
+
+// The name on a CS418 file's first line ("png W H NAME"), or "" if none.
+std::string cs418_output_name(const std::string& text);
+
+}  // namespace minrt::host

@@ -1,0 +1,162 @@
+#include "general_render.hpp"
+
+#include <atomic>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "core/base/arena.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "formats/cs418/cs418_reader.hpp"
+#include "formats/model/scene_builder.hpp"
+#include "render/general/render.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+// Texture files, decoded once per name, kept as sRGB RGB8 like the board.
+class TextureFiles {
+ public:
+  explicit TextureFiles(std::string base_dir) : base_(std::move(base_dir)) {}
+
+  static int32_t resolve(void* ctx, const char* name, Diagnostic& error) {
+    return static_cast<TextureFiles*>(ctx)->find(name, error);
+  }
+
+  int32_t find(const std::string& name, Diagnostic& error) {
+    auto it = ids_.find(name);
+    if (it != ids_.end()) return it->second;
+    if (textures_.size() >= static_cast<size_t>(cs418::kMaxTextures)) {
+      error.text("more than ").number(cs418::kMaxTextures).text(" textures");
+      return -1;
+    }
+    const std::string path = !name.empty() && name[0] == '/' ? name : base_ + name;
+    RgbaImage img;
+    std::string why;
+    if (!read_png(path, img, why)) {
+      error.text("texture ").text(path.c_str()).text(": ").text(why.c_str());
+      return -1;
+    }
+    auto rgb = std::make_unique<std::vector<uint8_t>>(static_cast<size_t>(img.width) * img.height * 3);
+    for (size_t i = 0, n = static_cast<size_t>(img.width) * img.height; i < n; ++i)
+      for (int c = 0; c < 3; ++c) (*rgb)[3 * i + c] = img.rgba[4 * i + c];
+    model::Texture t;
+    t.width = img.width;
+    t.height = img.height;
+    t.rgb = rgb->data();
+    data_.push_back(std::move(rgb));
+    textures_.push_back(t);
+    const auto id = static_cast<int32_t>(textures_.size() - 1);
+    ids_[name] = id;
+    return id;
+  }
+
+  const model::Texture* table() const { return textures_.empty() ? nullptr : textures_.data(); }
+  uint32_t count() const { return static_cast<uint32_t>(textures_.size()); }
+
+ private:
+  std::string base_;
+  std::map<std::string, int32_t> ids_;
+  std::vector<std::unique_ptr<std::vector<uint8_t>>> data_;
+  std::vector<model::Texture> textures_;
+};
+
+std::string located(const std::string& name, const Diagnostic& d) {
+  if (!d.has_pos) return name + ": error: " + d.message;
+  return name + ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
+}
+
+template <class M>
+bool render_with(const std::string& text, const std::string& name, const std::string& base_dir,
+                 const GeneralOptions& options, GeneralResult& out, std::string& error,
+                 const WarningSink& warnings) {
+  using R = typename M::real;
+  // Arena: the parse log and the final arrays take at most two records per
+  // line, the BVH a bounded amount per object; one allocation, made once.
+  size_t lines = 1;
+  for (char c : text) lines += c == '\n';
+  const size_t record = model::SceneBuilder<R>::record_bytes();
+  const size_t bytes = lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+
+  model::SceneBuilder<R> builder(arena);
+  TextureFiles textures(base_dir);
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{&TextureFiles::resolve, &textures}, warnings);
+  cs418::Header header;
+  model::Scene<R> scene;
+  Diagnostic d;
+  const cs418::ReadStatus st = reader.read(header, scene, d);
+  if (st != cs418::ReadStatus::kOk) {
+    error = located(name, d);
+    return false;
+  }
+  if (!builder.finish(scene)) {
+    error = name + ": error: scene does not fit in memory";
+    return false;
+  }
+  scene.textures = textures.table();
+  scene.texture_count = textures.count();
+  general::Renderer<M> renderer;
+  if (!renderer.setup(scene, arena, options.seed, options.force_full)) {
+    error = name + ": error: scene does not fit in memory (BVH)";
+    return false;
+  }
+  out.output_name = header.output_name;
+  out.features = renderer.features();
+  out.path = general_path_name(renderer.path());
+  out.image.width = scene.width;
+  out.image.height = scene.height;
+  out.image.rgba.assign(static_cast<size_t>(scene.width) * scene.height * 4, 0);
+
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  if (threads < 1) threads = 1;
+  if (threads > scene.height) threads = scene.height;
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int y; (y = next.fetch_add(1)) < scene.height;)
+      renderer.render_row(y, out.image.rgba.data() + static_cast<size_t>(y) * scene.width * 4);
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  return true;
+}
+
+}  // namespace
+
+const char* general_path_name(uint32_t path) {
+  switch (path) {
+    case general::kPathBasic: return "basic (spheres, suns)";
+    case general::kPathDirect: return "direct (planes, triangles, bulbs, lenses, exposure)";
+    default: return "full (every feature)";
+  }
+}
+
+bool render_cs418(const std::string& text, const std::string& name, const std::string& base_dir,
+                  const GeneralOptions& options, GeneralResult& out, std::string& error,
+                  const WarningSink& warnings) {
+  const Variant v = options.variant;
+  if (v.precision == Precision::kDouble && v.shims == ShimSet::kLibm)
+    return render_with<LibmDouble>(text, name, base_dir, options, out, error, warnings);
+  if (v.precision == Precision::kFloat) {
+    switch (v.shims) {
+      case ShimSet::kLibm: return render_with<LibmFloat>(text, name, base_dir, options, out, error, warnings);
+      case ShimSet::kPortable: return render_with<PortableFloat>(text, name, base_dir, options, out, error, warnings);
+      case ShimSet::kPortableFast:
+        return render_with<PortableFloatFast>(text, name, base_dir, options, out, error, warnings);
+      case ShimSet::kPortableMin:
+        return render_with<PortableFloatMin>(text, name, base_dir, options, out, error, warnings);
+    }
+  }
+  error = name + ": error: this combination of --precision and --shims is not built";
+  return false;
+}
+
+}  // namespace minrt::host

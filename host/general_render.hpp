@@ -1,0 +1,40 @@
+// The host's driver for the scene formats on the general tracer (CS418 so
+// far): parse into an arena sized from the text, resolve textures from
+// files, build, render rows on several threads, keep the image in memory
+// for the caller to write.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/base/diagnostic.hpp"
+#include "png_io.hpp"
+#include "render_variants.hpp"
+
+namespace minrt::host {
+
+struct GeneralOptions {
+  Variant variant;
+  uint32_t seed = 1;
+  int threads = 0;          // 0: every core
+  bool force_full = false;  // take the path with every feature compiled in
+};
+
+struct GeneralResult {
+  RgbaImage image;
+  std::string output_name;  // from the scene (CS418's png line)
+  const char* path = "";    // which compiled path rendered it
+  uint32_t features = 0;
+};
+
+// Renders CS418 scene text. `name` is used in messages, `base_dir` resolves
+// texture names. On a scene error returns false with `error` set to the full
+// message line ("scene.txt:3:7: error: ...").
+bool render_cs418(const std::string& text, const std::string& name, const std::string& base_dir,
+                  const GeneralOptions& options, GeneralResult& out, std::string& error,
+                  const WarningSink& warnings);
+
+// Names of the compiled paths, for --stats and the docs.
+const char* general_path_name(uint32_t path);
+
+}  // namespace minrt::host

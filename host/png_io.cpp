@@ -1,0 +1,108 @@
+#include "png_io.hpp"
+
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstring>
+
+namespace minrt::host {
+
+namespace {
+
+// libpng reports errors by longjmp; its message is kept for ours.
+struct PngErrors {
+  char message[200] = {};
+};
+
+void on_error(png_structp png, png_const_charp msg) {
+  auto* e = static_cast<PngErrors*>(png_get_error_ptr(png));
+  std::snprintf(e->message, sizeof e->message, "%s", msg);
+  png_longjmp(png, 1);
+}
+void on_warning(png_structp, png_const_charp) {}
+
+}  // namespace
+
+bool read_png(const std::string& path, RgbaImage& out, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) {
+    error = std::strerror(errno);
+    return false;
+  }
+  unsigned char sig[8] = {};
+  if (std::fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
+    error = std::ferror(f) != 0 ? std::strerror(errno) : "not a PNG file";
+    std::fclose(f);
+    return false;
+  }
+  PngErrors errors;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &errors, on_error, on_warning);
+  png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
+  if (png == nullptr || info == nullptr) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(f);
+    error = "out of memory";
+    return false;
+  }
+  std::vector<png_bytep> rows;
+  if (setjmp(png_jmpbuf(png)) != 0) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(f);
+    error = std::string("bad PNG: ") + errors.message;
+    return false;
+  }
+  png_init_io(png, f);
+  png_set_sig_bytes(png, 8);
+  png_set_user_limits(png, 16384, 16384);
+  png_read_info(png, info);
+  png_set_expand(png);
+  png_set_strip_16(png);
+  png_set_gray_to_rgb(png);
+  png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  out.width = static_cast<int>(png_get_image_width(png, info));
+  out.height = static_cast<int>(png_get_image_height(png, info));
+  out.rgba.assign(static_cast<size_t>(out.width) * out.height * 4, 0);
+  rows.resize(out.height);
+  for (int y = 0; y < out.height; ++y) rows[y] = out.rgba.data() + static_cast<size_t>(y) * out.width * 4;
+  png_read_image(png, rows.data());
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+  std::fclose(f);
+  return true;
+}
+
+bool write_png(std::FILE* f, const RgbaImage& image, std::string& error) {
+  PngErrors errors;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &errors, on_error, on_warning);
+  png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
+  if (png == nullptr || info == nullptr) {
+    png_destroy_write_struct(&png, &info);
+    error = "out of memory";
+    return false;
+  }
+  std::vector<png_bytep> rows(image.height);
+  if (setjmp(png_jmpbuf(png)) != 0) {
+    png_destroy_write_struct(&png, &info);
+    error = std::string("PNG write failed: ") + errors.message;
+    return false;
+  }
+  png_init_io(png, f);
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y)
+    rows[y] = const_cast<png_bytep>(image.rgba.data() + static_cast<size_t>(y) * image.width * 4);
+  png_write_image(png, rows.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  if (std::ferror(f) != 0) {
+    error = std::strerror(errno);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace minrt::host

@@ -1,0 +1,27 @@
+// PNG on the host through libpng (which compresses with zlib): textures in,
+// images out. The board never sees this: it streams stored-deflate PNG from
+// the core (core/image/png_writer.hpp) or sends rows for host-send to write.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace minrt::host {
+
+struct RgbaImage {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgba;  // 4 bytes a pixel, top row first
+};
+
+// Decodes any PNG (palette, grey, 16-bit, interlaced, ...) to 8-bit RGBA.
+// False with the reason ("not a PNG file", libpng's message, the system's
+// error) when it cannot.
+bool read_png(const std::string& path, RgbaImage& out, std::string& error);
+
+// Writes 8-bit RGBA, compressed. False with the reason.
+bool write_png(std::FILE* f, const RgbaImage& image, std::string& error);
+
+}  // namespace minrt::host

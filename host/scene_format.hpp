@@ -1,0 +1,18 @@
+// Which reader a scene file goes to: --scene-format when given, else the
+// file's extension, else its first word (SPEC.md 5.2: `png` starts a CS418
+// file; SLD starts with numbers).
+#pragma once
+
+#include <string>
+
+namespace minrt::host {
+
+enum class SceneFormat { kAuto, kSld, kCs418 };
+
+// "sld", "cs418" -> format; false for an unknown name.
+bool parse_scene_format(const std::string& name, SceneFormat& out);
+
+// Decides from the path and the first bytes of the file.
+SceneFormat detect_scene_format(const std::string& path, const std::string& head);
+
+}  // namespace minrt::host
