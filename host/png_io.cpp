@@ -54,7 +54,7 @@ bool read_png(const std::string& path, RgbaImage& out, std::string& error) {
   }
   png_init_io(png, f);
   png_set_sig_bytes(png, 8);
-  png_set_user_limits(png, 16384, 16384);
+  png_set_user_limits(png, 32768, 32768);
   png_read_info(png, info);
   png_set_expand(png);
   png_set_strip_16(png);

@@ -17,8 +17,18 @@ SceneFormat detect_scene_format(const std::string& path, const std::string& head
   if (ends_with(".sld") || ends_with(".SLD")) return SceneFormat::kSld;
   std::size_t i = 0;
   while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;
-  if (head.compare(i, 3, "png") == 0 && (i + 3 == head.size() || head[i + 3] == ' ' || head[i + 3] == '\t'))
-    return SceneFormat::kCs418;
+  // The first word: SLD starts with a number; a CS418 file with `png`, or
+  // (when the png line is missing) with another of its keywords, which the
+  // CS418 reader then reports properly.
+  std::size_t end = i;
+  while (end < head.size() && head[end] != ' ' && head[end] != '\t' && head[end] != '\r' && head[end] != '\n') ++end;
+  const std::string word = head.substr(i, end - i);
+  static const char* const kCs418Words[] = {
+      "png", "color", "sphere", "sun", "expose", "eye", "forward", "up", "fisheye", "panorama", "plane", "xyz",
+      "tri", "texcoord", "texture", "bulb", "shininess", "bounces", "transparency", "ior", "roughness", "aa",
+      "dof", "gi"};
+  for (const char* k : kCs418Words)
+    if (word == k) return SceneFormat::kCs418;
   return SceneFormat::kSld;
 }
 

@@ -7,6 +7,7 @@
 
 #include "image_load.hpp"
 #include "image_metrics.hpp"
+#include "output_file.hpp"
 
 namespace {
 
@@ -20,6 +21,9 @@ void print_help(std::FILE* f) {
       "\n"
       "  --block N         block size for the PSNR (default 4; 16 from 800 pixels wide)\n"
       "  --max-off N       exit 1 when more than N pixels are off by more than 1\n"
+      "  --sheet OUT.png   also write a contact sheet: A | B | difference (pixels off\n"
+      "                    by more than 1 in red, smaller differences amplified 16x);\n"
+      "                    transparency shows as a checkerboard\n"
       "  -h, --help        this text\n"
       "  --version         version\n"
       "Exit status: 0 compared (and within --max-off), 1 over --max-off, 2 bad usage\n"
@@ -39,6 +43,7 @@ int main(int argc, char** argv) {
   int n = 0;
   int block = 0;
   long max_off = -1;
+  const char* sheet = nullptr;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
@@ -54,6 +59,9 @@ int main(int argc, char** argv) {
       if (*end != 0 || v < 0 || v > 1000000000L || (arg == "--block" && v < 1)) usage("bad value for " + arg);
       if (arg == "--block") block = static_cast<int>(v);
       else max_off = v;
+    } else if (arg == "--sheet") {
+      if (i + 1 >= argc) usage("--sheet needs a value");
+      sheet = argv[++i];
     } else if (!arg.empty() && arg[0] == '-') {
       usage("unknown option '" + arg + "'");
     } else if (n == 2) {
@@ -85,5 +93,14 @@ int main(int argc, char** argv) {
   else std::printf("block PSNR       %.2f dB (%dx%d blocks)\n", d.block_psnr, d.block, d.block);
   std::printf("mean diff A-B    %.3f %.3f %.3f\n", d.mean_diff[0], d.mean_diff[1], d.mean_diff[2]);
   std::printf("coverage         %ld %ld\n", d.coverage_a, d.coverage_b);
+  if (sheet != nullptr) {
+    const minrt::host::RgbaImage out = minrt::host::contact_sheet(img[0], img[1]);
+    minrt::host::AtomicOutput file;
+    std::string why;
+    if (!file.open(sheet, false, why) || !minrt::host::write_png(file.file(), out, why) || !file.commit(why)) {
+      std::fprintf(stderr, "image-compare: error: %s: %s\n", sheet, why.c_str());
+      return 2;
+    }
+  }
   return max_off >= 0 && d.off_by_more_than_1 > max_off ? 1 : 0;
 }

@@ -63,4 +63,38 @@ ImageDiff compare_images(const RgbaImage& a, const RgbaImage& b, int block) {
   return d;
 }
 
+RgbaImage contact_sheet(const RgbaImage& a, const RgbaImage& b) {
+  constexpr int kGap = 4;
+  const int w = a.width, h = a.height;
+  RgbaImage out;
+  out.width = 3 * w + 2 * kGap;
+  out.height = h;
+  out.rgba.assign(static_cast<std::size_t>(out.width) * h * 4, 255);
+  auto put = [&](int x, int y, double r, double g, double bl) {
+    uint8_t* o = &out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4];
+    o[0] = static_cast<uint8_t>(std::fmin(255.0, r));
+    o[1] = static_cast<uint8_t>(std::fmin(255.0, g));
+    o[2] = static_cast<uint8_t>(std::fmin(255.0, bl));
+    o[3] = 255;
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint8_t* pa = &a.rgba[(static_cast<std::size_t>(y) * w + x) * 4];
+      const uint8_t* pb = &b.rgba[(static_cast<std::size_t>(y) * w + x) * 4];
+      const double check = ((x / 4 + y / 4) % 2 == 0) ? 200.0 : 150.0;
+      auto over = [&](const uint8_t* p, int c) { return premul(p, c) + check * (1.0 - p[3] / 255.0); };
+      put(x, y, over(pa, 0), over(pa, 1), over(pa, 2));
+      put(w + kGap + x, y, over(pb, 0), over(pb, 1), over(pb, 2));
+      double worst = std::fabs(static_cast<double>(pa[3]) - pb[3]);
+      double diff[3];
+      for (int c = 0; c < 3; ++c) {
+        diff[c] = std::fabs(premul(pa, c) - premul(pb, c));
+        worst = std::fmax(worst, diff[c]);
+      }
+      if (worst > 1.0 + 1e-9) put(2 * (w + kGap) + x, y, 255, 0, 0);
+      else put(2 * (w + kGap) + x, y, 16 * diff[0], 16 * diff[1], 16 * diff[2]);
+    }
+  return out;
+}
+
 }  // namespace minrt::host

@@ -25,4 +25,9 @@ ImageDiff compare_images(const RgbaImage& a, const RgbaImage& b, int block = 0);
 // Block-averaged MSE only (for the random tests' self-calibrated rule).
 double block_mse(const RgbaImage& a, const RgbaImage& b, int block);
 
+// A | B | difference, side by side with 4-pixel gaps, on an opaque
+// checkerboard so transparency is visible. Difference: red where a pixel is
+// off by more than 1, else the premultiplied difference amplified 16x.
+RgbaImage contact_sheet(const RgbaImage& a, const RgbaImage& b);
+
 }  // namespace minrt::host

@@ -167,7 +167,7 @@ bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<ty
     auto bin_of = [&](uint32_t i) {
       const R f = (centers[i][axis] - lo) * (R(kBvhBins) / width);
       int b = 0;
-      while (b + 1 < kBvhBins && f >= R(b + 1)) ++b;  // no float-to-int conversion needed
+      while (b + 1 < kBvhBins && f >= M::from_int(b + 1)) ++b;  // no float-to-int conversion needed
       return b;
     };
     if (width > R(0)) {

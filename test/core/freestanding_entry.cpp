@@ -3,6 +3,9 @@
 // those of the math policy and the compiler's memory routines.
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "core/image/png_writer.hpp"
+#include "formats/cs418/cs418_reader.hpp"
+#include "render/general/render.hpp"
 #include "render/minrt/render.hpp"
 
 namespace {
@@ -12,7 +15,27 @@ int read_byte(void*) { return -1; }
 void write_bytes(void*, const uint8_t*, size_t) {}
 }  // namespace
 
+// The general path as the board runs it: CS418 text in, PNG rows out.
+int general_entry() {
+  minrt::Arena arena(g_arena, sizeof g_arena);
+  minrt::model::SceneBuilder<POLICY::real> builder(arena);
+  minrt::cs418::Reader<POLICY> reader(minrt::ByteSource{&read_byte, nullptr}, builder, {}, {});
+  minrt::cs418::Header header;
+  minrt::model::Scene<POLICY::real> scene;
+  minrt::Diagnostic error;
+  if (reader.read(header, scene, error) != minrt::cs418::ReadStatus::kOk) return 1;
+  if (!builder.finish(scene)) return 2;
+  minrt::general::Renderer<POLICY> renderer;
+  if (!renderer.setup(scene, arena, 1)) return 3;
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (row == nullptr) return 4;
+  minrt::PngStoredWriter png(minrt::ByteSink{&write_bytes, nullptr});
+  renderer.render(minrt::rgba_row_sink_of(png), row);
+  return 0;
+}
+
 extern "C" int minrt_entry() {
+  if (general_entry() != 0) return 1;
   minrt::Arena arena(g_arena, sizeof g_arena);
   minrt::Diagnostic error;
   return static_cast<int>(minrt::render_sld<POLICY>(minrt::ByteSource{&read_byte, nullptr},

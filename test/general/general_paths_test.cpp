@@ -1,0 +1,57 @@
+// The specialised paths (render/general/features.hpp): a scene is rendered
+// on the smallest path that has its features, and that path gives the same
+// bytes as the path with every feature compiled in.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "general_render.hpp"
+#include "render/general/render.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+minrt::host::GeneralResult render_text(const std::string& text, bool full, minrt::host::Variant v = {}) {
+  minrt::host::GeneralOptions o;
+  o.variant = v;
+  o.force_full = full;
+  o.threads = 2;
+  minrt::host::GeneralResult r;
+  std::string error;
+  const std::string dir = minrt::test::shared_dir() + "/formats/cs418/";
+  const bool ok = minrt::host::render_cs418(text, "scene.txt", dir, o, r, error, {});
+  INFO(error);
+  REQUIRE(ok);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("general paths: each scene takes the smallest path with its features", "[general][paths]") {
+  const std::string spheres = "png 40 30 x.png\nsphere 0 0 -2 1\ncolor 1 0 0\nsphere 1 0 -3 1\nsun 1 1 1\n";
+  const std::string tri = "png 40 30 x.png\nxyz 0 0 -2\nxyz 1 0 -2\nxyz 0 1 -2\ntri 1 2 3\nsun 0 0 1\n";
+  const std::string shiny = "png 40 30 x.png\nshininess 0.5\nsphere 0 0 -2 1\nsun 1 1 1\n";
+  CHECK(render_text(spheres, false).path == minrt::host::general_path_name(minrt::general::kPathBasic));
+  CHECK(render_text(tri, false).path == minrt::host::general_path_name(minrt::general::kPathDirect));
+  CHECK(render_text(shiny, false).path == minrt::host::general_path_name(minrt::general::kPathFull));
+  CHECK(render_text(spheres, true).path == minrt::host::general_path_name(minrt::general::kPathFull));
+}
+
+TEST_CASE("general paths: the specialised path gives the bytes of the full one", "[general][paths]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  const minrt::host::Variant portable{minrt::host::Precision::kFloat, minrt::host::ShimSet::kPortable};
+  for (const char* name : {"sphere", "suns", "shadow-basic", "tri", "plane", "bulb", "fisheye", "panorama",
+                           "expose2", "many"}) {
+    DYNAMIC_SECTION(name) {
+      const std::string text =
+          minrt::test::read_file(minrt::test::shared_dir() + "/formats/cs418/ray-" + name + ".txt");
+      const auto fast = render_text(text, false);
+      CHECK(std::string(fast.path) != minrt::host::general_path_name(minrt::general::kPathFull));
+      CHECK(fast.image.rgba == render_text(text, true).image.rgba);
+      CHECK(render_text(text, false, portable).image.rgba == render_text(text, true, portable).image.rgba);
+    }
+  }
+}
