@@ -93,8 +93,12 @@ int run_cs418_cli(GeneralCli& cli) {
     return kExitSceneError;
   }
   if (cli.stats)
-    std::fprintf(stderr, "minrt: %s: %dx%d, path %s, features 0x%03x\n", shown.c_str(), result.image.width,
-                 result.image.height, result.path, result.features);
+    std::fprintf(stderr,
+                 "minrt: %s: %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d "
+                 "thread%s\n",
+                 shown.c_str(), result.image.width, result.image.height, result.path, result.features,
+                 result.parse_seconds, result.build_seconds, result.render_seconds, result.threads,
+                 result.threads == 1 ? "" : "s");
   if (out_path.empty()) out_path = result.output_name;
 
   AtomicOutput output;

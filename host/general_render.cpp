@@ -1,6 +1,7 @@
 #include "general_render.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <map>
 #include <memory>
@@ -84,6 +85,9 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
 
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  const Clock::time_point t_parse = Clock::now();
   model::SceneBuilder<R> builder(arena);
   TextureFiles textures(base_dir);
   MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
@@ -102,11 +106,14 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   }
   scene.textures = textures.table();
   scene.texture_count = textures.count();
+  out.parse_seconds = seconds_since(t_parse);
+  const Clock::time_point t_build = Clock::now();
   general::Renderer<M> renderer;
   if (!renderer.setup(scene, arena, options.seed, options.force_full)) {
     error = name + ": error: scene does not fit in memory (BVH)";
     return false;
   }
+  out.build_seconds = seconds_since(t_build);
   out.output_name = header.output_name;
   out.features = renderer.features();
   out.path = general_path_name(renderer.path());
@@ -117,6 +124,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   if (threads < 1) threads = 1;
   if (threads > scene.height) threads = scene.height;
+  const Clock::time_point t_render = Clock::now();
   std::atomic<int> next{0};
   auto work = [&] {
     for (int y; (y = next.fetch_add(1)) < scene.height;)
@@ -126,6 +134,8 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   for (int i = 1; i < threads; ++i) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
+  out.render_seconds = seconds_since(t_render);
+  out.threads = threads;
   return true;
 }
 

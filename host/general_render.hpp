@@ -25,6 +25,8 @@ struct GeneralResult {
   std::string output_name;  // from the scene (CS418's png line)
   const char* path = "";    // which compiled path rendered it
   uint32_t features = 0;
+  double parse_seconds = 0, build_seconds = 0, render_seconds = 0;  // textures count as parsing
+  int threads = 1;
 };
 
 // Renders CS418 scene text. `name` is used in messages, `base_dir` resolves

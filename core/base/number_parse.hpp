@@ -184,6 +184,21 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
     return NumberStatus::kOk;
   }
   // value = d / 10^-exp10: a 64-bit quotient with a sticky remainder.
+#if defined(__SIZEOF_INT128__)
+  // Where the compiler has 128-bit integers (the host, not RV32) the common
+  // case, at most 19 significant digits over at most 10^19, divides in one
+  // step; the same quotient and remainder as the long division below.
+  if (-exp10 <= 19 && d.bit_length() <= 64) {
+    uint64_t p = 1;
+    for (int e = 0; e < -exp10; ++e) p *= 10;
+    const uint64_t dv = d.bits_from(0);
+    const int k = 63 + (64 - __builtin_clzll(p)) - (64 - __builtin_clzll(dv));
+    const unsigned __int128 num = static_cast<unsigned __int128>(dv) << k;
+    const uint64_t q = static_cast<uint64_t>(num / p);
+    out = round_to_format<R>(q, -k, num % p != 0);
+    return NumberStatus::kOk;
+  }
+#endif
   BigUint den(1);
   den.mul_pow10(-exp10);
   const int k = 63 + den.bit_length() - d.bit_length();

@@ -248,21 +248,26 @@ bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<ty
   return true;
 }
 
-// Slab test against a box: entry distance, or false when the ray misses it
-// or enters beyond `limit`.
+// Slab test against a box: the distance at which the ray enters it (0 when
+// it starts inside), or a negative value when it misses it or enters beyond
+// `limit`. Always inlined: it is the innermost test of every traversal.
 template <class R>
-bool hit_box(const Bounds<R>& b, const Vec3<R>& origin, const Vec3<R>& inv, R limit) {
+[[gnu::always_inline]] inline R box_entry(const Bounds<R>& b, const Vec3<R>& origin, const Vec3<R>& inv, R limit) {
   R t0 = (b.lo.x - origin.x) * inv.x, t1 = (b.hi.x - origin.x) * inv.x;
   R tmin = t0 < t1 ? t0 : t1, tmax = t0 < t1 ? t1 : t0;
   t0 = (b.lo.y - origin.y) * inv.y;
   t1 = (b.hi.y - origin.y) * inv.y;
-  tmin = (t0 < t1 ? t0 : t1) > tmin ? (t0 < t1 ? t0 : t1) : tmin;
-  tmax = (t0 < t1 ? t1 : t0) < tmax ? (t0 < t1 ? t1 : t0) : tmax;
+  R lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+  tmin = lo > tmin ? lo : tmin;
+  tmax = hi < tmax ? hi : tmax;
   t0 = (b.lo.z - origin.z) * inv.z;
   t1 = (b.hi.z - origin.z) * inv.z;
-  tmin = (t0 < t1 ? t0 : t1) > tmin ? (t0 < t1 ? t0 : t1) : tmin;
-  tmax = (t0 < t1 ? t1 : t0) < tmax ? (t0 < t1 ? t1 : t0) : tmax;
-  return tmax >= tmin && tmax >= R(0) && tmin <= limit;
+  lo = t0 < t1 ? t0 : t1;
+  hi = t0 < t1 ? t1 : t0;
+  tmin = lo > tmin ? lo : tmin;
+  tmax = hi < tmax ? hi : tmax;
+  if (tmin < R(0)) tmin = R(0);
+  return tmax >= tmin && tmin <= limit ? tmin : R(-1);
 }
 
 // 1/d per axis, with zero components replaced by a tiny value of the same

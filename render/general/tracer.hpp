@@ -57,47 +57,83 @@ class Tracer {
       }
     }
     if (bvh_.node_count == 0) return;
+    // Ordered traversal: both children's boxes are tested at the parent, the
+    // nearer one is entered first and the farther one waits on the stack with
+    // its entry distance, so it is dropped if a closer hit turns up first.
+    // The order of visits never changes the result: hits are compared by
+    // (distance, file order), whatever order they are found in.
     const Vec3<R> inv = inverse_dir(ray.dir);
-    const bool neg[3] = {ray.dir.x < R(0), ray.dir.y < R(0), ray.dir.z < R(0)};
-    uint32_t stack[kBvhStack];
+    auto limit = [&] { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; };
+    struct Entry {
+      uint32_t node;
+      R t;
+    };
+    Entry stack[kBvhStack];
     int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const BvhNode<R>& node = bvh_.nodes[stack[--top]];
-      const R limit = h.kind == HitKind::kNone ? R(3.0e38f) : h.t;
-      if (!hit_box(node.box, ray.origin, inv, limit)) continue;
+    if (box_entry(bvh_.nodes[0].box, ray.origin, inv, limit()) < R(0)) return;
+    uint32_t current = 0;
+    for (;;) {
+      const BvhNode<R>& node = bvh_.nodes[current];
       if (node.count == 0) {
-        // Near child last on the stack, so it is visited first.
-        const uint32_t far_child = node.index + (neg[node.axis] ? 0u : 1u);
-        stack[top++] = far_child;
-        stack[top++] = node.index + (neg[node.axis] ? 1u : 0u);
-        continue;
+        const R lim = limit();
+        const R ta = box_entry(bvh_.nodes[node.index].box, ray.origin, inv, lim);
+        const R tb = box_entry(bvh_.nodes[node.index + 1].box, ray.origin, inv, lim);
+        if (ta >= R(0) && tb >= R(0)) {
+          const bool a_first = ta <= tb;
+          stack[top++] = Entry{a_first ? node.index + 1 : node.index, a_first ? tb : ta};
+          current = a_first ? node.index : node.index + 1;
+          continue;
+        }
+        if (ta >= R(0)) {
+          current = node.index;
+          continue;
+        }
+        if (tb >= R(0)) {
+          current = node.index + 1;
+          continue;
+        }
+      } else {
+        leaf(node, ray, eps, h);
       }
-      for (uint32_t k = 0; k < node.count; ++k) {
-        const uint32_t ref = bvh_.refs[node.index + k];
-        if constexpr ((F & kTriangles) != 0) {
-          if ((ref & kTriangleBit) != 0) {
-            const uint32_t i = ref & ~kTriangleBit;
-            R b1, b2;
-            const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
-            if (t > eps && h.closer(t, s_.triangles[i].order)) {
-              h.t = t;
-              h.kind = HitKind::kTriangle;
-              h.index = i;
-              h.order = s_.triangles[i].order;
-              h.b1 = b1;
-              h.b2 = b2;
-            }
-            continue;
+      // Next waiting node that may still hold something closer.
+      bool found = false;
+      while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.t <= limit()) {
+          current = e.node;
+          found = true;
+          break;
+        }
+      }
+      if (!found) return;
+    }
+  }
+
+  void leaf(const BvhNode<R>& node, const Ray<R>& ray, R eps, Hit<R>& h) const {
+    for (uint32_t k = 0; k < node.count; ++k) {
+      const uint32_t ref = bvh_.refs[node.index + k];
+      if constexpr ((F & kTriangles) != 0) {
+        if ((ref & kTriangleBit) != 0) {
+          const uint32_t i = ref & ~kTriangleBit;
+          R b1, b2;
+          const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
+          if (t > eps && h.closer(t, s_.triangles[i].order)) {
+            h.t = t;
+            h.kind = HitKind::kTriangle;
+            h.index = i;
+            h.order = s_.triangles[i].order;
+            h.b1 = b1;
+            h.b2 = b2;
           }
+          continue;
         }
-        const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
-        if (t > eps && h.closer(t, s_.spheres[ref].order)) {
-          h.t = t;
-          h.kind = HitKind::kSphere;
-          h.index = ref;
-          h.order = s_.spheres[ref].order;
-        }
+      }
+      const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+      if (t > eps && h.closer(t, s_.spheres[ref].order)) {
+        h.t = t;
+        h.kind = HitKind::kSphere;
+        h.index = ref;
+        h.order = s_.spheres[ref].order;
       }
     }
   }
@@ -117,7 +153,7 @@ class Tracer {
     stack[top++] = 0;
     while (top > 0) {
       const BvhNode<R>& node = bvh_.nodes[stack[--top]];
-      if (!hit_box(node.box, ray.origin, inv, limit)) continue;
+      if (box_entry(node.box, ray.origin, inv, limit) < R(0)) continue;
       if (node.count == 0) {
         stack[top++] = node.index + 1;
         stack[top++] = node.index;

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Renders every CS418 test of ../shared/formats/cs418 with minrt (double, and
+# float with the portable shims the board uses), compares each with the
+# course's reference image (image-compare, SPEC.md 1.6) and writes
+#   docs/cs418/<test>.png   contact sheets: ours (double) | reference | difference
+#   docs/cs418/table.md     the figures, one row per test
+# Usage: scripts/cs418_report.sh [--shared DIR] [--out DIR]
+# Needs build/release (scripts/render.sh or scripts/test.sh builds it).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+shared=$root/../shared
+out=$root/docs/cs418
+while [ $# -gt 0 ]; do
+  case $1 in
+    --shared) shared=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "cs418_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+bin=$root/build/release/host
+for tool in minrt image-compare; do
+  [ -x "$bin/$tool" ] || { echo "cs418_report.sh: error: $bin/$tool not built (run scripts/test.sh first)" >&2; exit 1; }
+done
+dir=$shared/formats/cs418
+[ -d "$dir" ] || { echo "cs418_report.sh: error: no CS418 tests in $dir" >&2; exit 1; }
+mkdir -p "$out"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+figures() {  # A B -> "off alpha psnr"
+  "$bin/image-compare" "$@" | awk '/off by/{o=$5}/alpha mis/{a=$3}/PSNR/{p=$3}END{print o, a, p}'
+}
+{
+  echo "| test | pixels | double: off by > 1 | alpha | block PSNR | float/portable: off by > 1 | block PSNR | path |"
+  echo "|---|---|---|---|---|---|---|---|"
+  for scene in "$dir"/ray-*.txt; do
+    t=$(basename "$scene" .txt)
+    "$bin/minrt" -q --stats "$scene" -o "$work/$t.png" 2>"$work/stats"
+    "$bin/minrt" -q --precision float --shims portable "$scene" -o "$work/$t-f.png"
+    read -r off alpha psnr < <(figures "$work/$t.png" "$dir/$t.png" --sheet "$out/$t.png")
+    read -r foff _ fpsnr < <(figures "$work/$t-f.png" "$dir/$t.png")
+    pixels=$("$bin/image-compare" "$work/$t.png" "$dir/$t.png" | awk '/^pixels/{print $2}')
+    path=$(sed -n 's/.*path \([a-z]*\).*/\1/p' "$work/stats")
+    echo "| ${t#ray-} | $pixels | $off | $alpha | $psnr | $foff | $fpsnr | $path |"
+  done
+} > "$out/table.md"
+echo "wrote $out/table.md and $(ls "$out"/ray-*.png | wc -l) contact sheets in $out"
