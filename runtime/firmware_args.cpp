@@ -70,6 +70,8 @@ bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic
       options.big_endian = false;
     } else if (equal(arg, "--endian=big")) {
       options.big_endian = true;
+    } else if (equal(arg, "--all-features")) {
+      options.all_features = true;
     } else if (equal(arg, "--footprint")) {
       options.footprint = true;
     } else {

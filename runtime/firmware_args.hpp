@@ -8,6 +8,8 @@
 //   --protocol=raw|course|framed   serial protocol (default raw), see
 //                      docs/host-send.md; framed always renders P6 rows
 //   --endian=little|big  byte order of the course protocol's words
+//   --all-features     CS418: render on the path with every feature compiled
+//                      in (to measure what the specialised paths save)
 //
 // Defaults are build-time settings (MINRT_FW_DEFAULT_* in runtime/CMakeLists.txt).
 #pragma once
@@ -38,6 +40,7 @@ struct FirmwareOptions {
   bool footprint = false;
   Protocol protocol = Protocol::kRaw;
   bool big_endian = false;  // course words
+  bool all_features = false;  // CS418 path selection off
 };
 
 // Fills `options` from argv[1..argc-1]; on a usage error returns false with

@@ -1,5 +1,7 @@
 // The firmware: reads an SLD scene from the UART, renders it with the
-// portable float math and streams the PPM back, row by row. On a bad scene
+// portable float math and streams the PPM back, row by row. A scene whose
+// first word starts with a letter is a CS418 file (cs418_board.hpp): its
+// image goes back as a streamed PNG. On a bad scene
 // or bad arguments it sends one MINRT_ERROR_MARKER line instead and returns
 // a non-zero status, which crt0 hands to the test finisher.
 //
@@ -12,6 +14,8 @@
 #include <minrt/serial_protocol.h>
 
 #include "core/base/diagnostic.hpp"
+#include "core/base/peek_source.hpp"
+#include "cs418_board.hpp"
 #include "firmware_args.hpp"
 #include "footprint.hpp"
 #include "core/math/math_portable.hpp"
@@ -161,8 +165,20 @@ extern "C" int main(int argc, char** argv) {
   if (options.protocol == minrt::fw::Protocol::kFramed) return serve_framed(uart, options, arena, error);
   minrt::fw::SerialInput input(uart, options.idle_polls);
   minrt::fw::SerialOutput output(uart, options.footprint);
+  minrt::PeekSource scene(input.source());
+  const int first = scene.first_nonblank();
+  if ((first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z')) {
+    const minrt::fw::Cs418Result r =
+        minrt::fw::render_cs418(scene.source(), output.sink(), arena, options.all_features, error);
+    if (r != minrt::fw::Cs418Result::kOk) {
+      send_error(uart, error);
+      return r == minrt::fw::Cs418Result::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
+    }
+    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
+    return MINRT_STATUS_OK;
+  }
   const minrt::RenderStatus status = minrt::render_sld<Math>(
-      input.source(), output.sink(), options.render, g_state, arena, error);
+      scene.source(), output.sink(), options.render, g_state, arena, error);
   if (status != minrt::RenderStatus::kOk) {
     send_error(uart, error);
     return status_of(status);

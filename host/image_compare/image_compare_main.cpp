@@ -21,12 +21,14 @@ void print_help(std::FILE* f) {
       "\n"
       "  --block N         block size for the PSNR (default 4; 16 from 800 pixels wide)\n"
       "  --max-off N       exit 1 when more than N pixels are off by more than 1\n"
+      "  --identical       exit 1 unless every decoded RGBA byte is equal\n"
       "  --sheet OUT.png   also write a contact sheet: A | B | difference (pixels off\n"
       "                    by more than 1 in red, smaller differences amplified 16x);\n"
       "                    transparency shows as a checkerboard\n"
       "  -h, --help        this text\n"
       "  --version         version\n"
-      "Exit status: 0 compared (and within --max-off), 1 over --max-off, 2 bad usage\n"
+      "Exit status: 0 compared (and within --max-off, identical with --identical),\n"
+      "1 over --max-off or not identical, 2 bad usage\n"
       "or unreadable image.\n",
       f);
 }
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
   int block = 0;
   long max_off = -1;
   const char* sheet = nullptr;
+  bool identical = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
@@ -59,6 +62,8 @@ int main(int argc, char** argv) {
       if (*end != 0 || v < 0 || v > 1000000000L || (arg == "--block" && v < 1)) usage("bad value for " + arg);
       if (arg == "--block") block = static_cast<int>(v);
       else max_off = v;
+    } else if (arg == "--identical") {
+      identical = true;
     } else if (arg == "--sheet") {
       if (i + 1 >= argc) usage("--sheet needs a value");
       sheet = argv[++i];
@@ -101,6 +106,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "image-compare: error: %s: %s\n", sheet, why.c_str());
       return 2;
     }
+  }
+  if (identical && img[0].rgba != img[1].rgba) {
+    std::fprintf(stderr, "image-compare: the images differ\n");
+    return 1;
   }
   return max_off >= 0 && d.off_by_more_than_1 > max_off ? 1 : 0;
 }

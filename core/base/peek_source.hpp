@@ -1,0 +1,46 @@
+// A ByteSource that lets its reader look at the start of the input and then
+// read it again from the first byte: the board decides a scene's format from
+// its first word (a letter starts a CS418 file, a digit or sign an SLD one)
+// without losing the bytes, and so without shifting line numbers.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/byte_io.hpp"
+
+namespace minrt {
+
+class PeekSource {
+ public:
+  explicit PeekSource(ByteSource in) : in_(in) {}
+
+  // The first byte that is not blank, or -1 at the end of the input (or
+  // when more than kKeep blanks come first). The bytes read so far are
+  // replayed by source().
+  int first_nonblank() {
+    while (kept_ < kKeep) {
+      const int c = in_.get();
+      if (c < 0) return -1;
+      buf_[kept_++] = static_cast<uint8_t>(c);
+      if (c != ' ' && c != '\t' && c != '\r' && c != '\n') return c;
+    }
+    return -1;
+  }
+
+  ByteSource source() { return ByteSource{&read_fn, this}; }
+
+ private:
+  static constexpr int kKeep = 256;
+  static int read_fn(void* ctx) {
+    auto* self = static_cast<PeekSource*>(ctx);
+    if (self->pos_ < self->kept_) return self->buf_[self->pos_++];
+    return self->in_.get();
+  }
+
+  ByteSource in_;
+  uint8_t buf_[kKeep];
+  int kept_ = 0;
+  int pos_ = 0;
+};
+
+}  // namespace minrt
