@@ -5,6 +5,9 @@
 #include <cstring>
 #include <sstream>
 
+#include <minrt/limits.hpp>
+
+#include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
 #include "output_file.hpp"
 
@@ -43,6 +46,27 @@ bool write_ppm(std::FILE* f, const RgbaImage& img) {
 }
 
 }  // namespace
+
+bool cs418_png_line(const std::string& text, int& width, int& height, std::string& name) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string kw, w, h, extra;
+    if (!(words >> kw)) continue;
+    if (kw != "png" || !(words >> w >> h >> name) || (words >> extra)) return false;
+    uint32_t wv = 0, hv = 0;
+    const char* pw = w.c_str();
+    const char* ph = h.c_str();
+    if (!parse_decimal(pw, 0, limits::kMaxImageWidth, wv) || !parse_decimal(ph, 0, limits::kMaxImageHeight, hv) ||
+        wv == 0 || hv == 0)
+      return false;
+    width = static_cast<int>(wv);
+    height = static_cast<int>(hv);
+    return true;
+  }
+  return false;
+}
 
 std::string cs418_output_name(const std::string& text) {
   std::istringstream in(text);

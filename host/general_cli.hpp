@@ -25,4 +25,8 @@ int run_cs418_cli(GeneralCli& cli);
 // The name on a CS418 file's first line ("png W H NAME"), or "" if none.
 std::string cs418_output_name(const std::string& text);
 
+// The whole png line: false when the first line is not "png W H NAME" with
+// W and H in 1..4096.
+bool cs418_png_line(const std::string& text, int& width, int& height, std::string& name);
+
 }  // namespace minrt::host

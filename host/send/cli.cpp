@@ -2,7 +2,9 @@
 
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
+#include "general_cli.hpp"
 #include "output_file.hpp"
+#include "scene_format.hpp"
 
 #include <minrt/serial_protocol.h>
 
@@ -217,6 +219,7 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
       }
     } else if (a == "-o" || a == "--output") {
       if (!value(o.output)) return ParseResult::kError;
+      o.output_given = true;
     } else if (a == "--write-through") {
       o.write_through = true;
     } else if (a == "--verify") {
@@ -274,12 +277,29 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
   return ParseResult::kRun;
 }
 
-int run(const Options& o) {
+int run(const Options& options) {
   install_signal_handlers();
-  if (o.list) return list_ports_command();
+  if (options.list) return list_ports_command();
 
+  Options o = options;
   std::string scene, why;
   if (!minrt::host::read_whole_file(o.scene, scene, why)) return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
+  // A CS418 scene (the first word decides, as in minrt): the board answers
+  // with a PNG of the size on the png line, written by default to the name
+  // given there, like the course's program.
+  const bool cs418 =
+      minrt::host::detect_scene_format(o.scene, scene.substr(0, 4096)) == minrt::host::SceneFormat::kCs418;
+  int png_width = 0, png_height = 0;
+  if (cs418) {
+    if (o.protocol != Protocol::kRaw)
+      return fail(kExitUsage, "CS418 scenes go over --protocol raw; course and framed carry SLD only, for now");
+    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to CS418 scenes");
+    std::string name;
+    if (!minrt::host::cs418_png_line(scene, png_width, png_height, name))
+      return fail(kExitFirmware, "scene rejected before sending: " + o.scene +
+                                     ": the first line must be 'png WIDTH HEIGHT FILE.png' (1..4096 each)");
+    if (!o.output_given) o.output = name;
+  }
   // The output is checked before the transfer, not after minutes of it.
   if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
@@ -339,12 +359,17 @@ int run(const Options& o) {
   // A share of the 8N1 limit means something only on a real serial line: a
   // pseudo-terminal (the simulator's, or any other) has no baud rate.
   const bool paced = !use_sim && !is_pseudo_terminal(port.fd());
-  Progress progress(o.progress_forced || ::isatty(2) != 0, expected_image_bytes(o.spec), o.spec.height,
+  const std::uint64_t expected_bytes =
+      cs418 ? static_cast<std::uint64_t>(png_width) * png_height * 4 + static_cast<std::uint64_t>(png_height) * 18 + 64
+            : expected_image_bytes(o.spec);
+  Progress progress(o.progress_forced || ::isatty(2) != 0, expected_bytes, cs418 ? png_height : o.spec.height,
                     paced ? o.port_settings.baud : 0);
   Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
               &progress};
   TransferResult r;
-  if (o.protocol == Protocol::kRaw) {
+  if (cs418) {
+    r = run_raw_png(ex, scene, png_width, png_height);
+  } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);
   } else if (o.protocol == Protocol::kCourse) {
     CourseHostOptions co;

@@ -21,7 +21,8 @@ struct Options {
   Protocol protocol = Protocol::kRaw;
   ImageSpec spec{512, 512, PpmKind::kP3};
   std::string scene;
-  std::string output;        // -o; default SCENE's stem + ".ppm"
+  std::string output;        // -o; default SCENE's stem + ".ppm" (CS418: the png line's name)
+  bool output_given = false;
   bool write_through = false;  // --write-through: into a FIFO, device or link given to -o
   double first_byte_timeout = 120;
   double idle_timeout = 30;

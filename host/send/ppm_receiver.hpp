@@ -42,6 +42,8 @@ class PpmReceiver {
   bool failed() const { return state_ == State::kFailed; }
   bool firmware_error() const { return state_ == State::kFirmwareError; }
   bool started() const { return state_ != State::kStart; }
+  // Whether the bytes fed last belong to the image (not an error line).
+  bool image_bytes() const { return done() || state_ == State::kHeader || state_ == State::kPayload; }
   // What went wrong (kFailed), or the firmware's message without the marker.
   const std::string& message() const { return message_; }
 

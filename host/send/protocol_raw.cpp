@@ -18,7 +18,8 @@ int ms_since(Clock::time_point t) {
 }
 }  // namespace
 
-TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
+template <class Receiver>
+TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
   TransferResult r;
   const int fd = ex.port.fd();
   std::size_t sent = 0;
@@ -65,9 +66,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
         }
         last_rx = Clock::now();
         const std::size_t used = rx.feed(buf, static_cast<std::size_t>(n));
-        if (rx.done() || (rx.state() == PpmReceiver::State::kHeader) ||
-            rx.state() == PpmReceiver::State::kPayload)
-          r.image.append(reinterpret_cast<const char*>(buf), used);
+        if (rx.image_bytes()) r.image.append(reinterpret_cast<const char*>(buf), used);
         if (ex.progress) ex.progress->update(rx.bytes(), rx.rows_complete());
         if (rx.done()) {
           t_end = Clock::now();
@@ -138,6 +137,16 @@ TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx) {
   r.sent = sent;
   r.received = rx.bytes();
   return r;
+}
+
+template TransferResult exchange<PpmReceiver>(Exchange&, const std::string&, PpmReceiver&);
+template TransferResult exchange<PngReceiver>(Exchange&, const std::string&, PngReceiver&);
+
+TransferResult run_raw_png(Exchange& ex, const std::string& scene, int width, int height) {
+  std::string out = scene;
+  out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
+  PngReceiver rx(width, height);
+  return exchange(ex, out, rx);
 }
 
 TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& spec) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "port.hpp"
+#include "png_receiver.hpp"
 #include "ppm_receiver.hpp"
 #include "progress.hpp"
 
@@ -42,8 +43,14 @@ struct Exchange {
 // Sends `out` (may be empty), then collects the reply into `rx`. `t0` is the
 // moment the transfer clock started (the first byte sent); if null, it
 // starts with the first byte written here.
-TransferResult exchange(Exchange& ex, const std::string& out, PpmReceiver& rx);
+// Receiver: PpmReceiver or PngReceiver (instantiated in protocol_raw.cpp).
+template <class Receiver>
+TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx);
 
 TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& spec);
+
+// A CS418 scene: the reply is a PNG stream of WIDTH x HEIGHT (the scene's
+// png line), checked chunk by chunk.
+TransferResult run_raw_png(Exchange& ex, const std::string& scene, int width, int height);
 
 }  // namespace minrt::send

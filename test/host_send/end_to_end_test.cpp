@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "png_io.hpp"
 #include "port.hpp"
 #include "sim_launcher.hpp"
 #include "test_support.hpp"
@@ -163,4 +164,40 @@ TEST_CASE("every bad scene through firmware-sim ends with the firmware's error",
     return run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--size", "16x16", "--format",
                 "p6", scene, "-o", out});
   });
+}
+
+TEST_CASE("host-send sends CS418 scenes to firmware-sim and writes the PNG it sends back", "[e2e][firmware][cs418]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string cs418 = hs_test::shared_dir() + "/formats/cs418/";
+  for (const char* name : {"ray-sphere", "ray-shadow-plane", "ray-trans3", "ray-many"}) {
+    const std::string scene = cs418 + name + ".txt";
+    const std::string got = dir.file(std::string(name) + "-board.png");
+    const std::string want = dir.file(std::string(name) + "-host.png");
+    const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, scene, "-o", got});
+    INFO(name << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    REQUIRE(run({HS_MINRT, "-q", "--precision", "float", "--shims", "portable", scene, "-o", want}).status == 0);
+    minrt::host::RgbaImage a, b;
+    std::string why;
+    REQUIRE(minrt::host::read_png(got, a, why));
+    REQUIRE(minrt::host::read_png(want, b, why));
+    CHECK(a.width == b.width);
+    CHECK(a.rgba == b.rgba);
+  }
+}
+
+TEST_CASE("host-send: a broken CS418 scene ends with the board's located error and no image", "[e2e][firmware][cs418]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string out = dir.file("x.png");
+  const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
+                           std::string(HS_SOURCE_DIR) + "/test/general/bad/bad-number.txt", "-o", out});
+  CHECK(r.status == 3);
+  CHECK(r.err.find("the board reported an error: 2:15: not a number: 'O.5'") != std::string::npos);
+  CHECK(!hs_test::file_exists(out));
+  const RunResult framed = run({HS_HOST_SEND, "--sim", "--protocol", "framed",
+                                hs_test::shared_dir() + "/formats/cs418/ray-sphere.txt", "-o", out});
+  CHECK(framed.status == 2);
+  CHECK(framed.err.find("CS418 scenes go over --protocol raw") != std::string::npos);
 }
