@@ -18,6 +18,7 @@ struct GeneralOptions {
   uint32_t seed = 1;
   int threads = 0;          // 0: every core
   bool force_full = false;  // take the path with every feature compiled in
+  bool full_tree = false;   // trace every secondary ray, however small its weight
 };
 
 struct GeneralResult {

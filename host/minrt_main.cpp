@@ -51,6 +51,9 @@ void print_help(std::FILE* f) {
       "  --seed N                 random numbers for aa, dof, roughness, gi (default 1)\n"
       "  --all-features           render on the path with every feature compiled in\n"
       "                           (for measuring what the specialised paths save)\n"
+      "  --full-tree              trace every reflected, refracted and GI ray; by\n"
+      "                           default rays that can change a pixel by less than\n"
+      "                           1/65536 of the brightest radiance are skipped\n"
       "  --stats                  say which path rendered the scene and how long the\n"
       "                           parse, the BVH and the render took\n"
       "  -h, --help               this text\n"
@@ -142,6 +145,8 @@ int main(int argc, char** argv) {
       general.options.seed = n;
     } else if (arg == "--all-features") {
       general.options.force_full = true;
+    } else if (arg == "--full-tree") {
+      general.options.full_tree = true;
     } else if (arg == "--stats") {
       general.stats = true;
     } else if (arg == "-q" || arg == "--quiet") {

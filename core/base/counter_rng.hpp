@@ -27,6 +27,14 @@ class CounterRng {
 
   constexpr uint32_t next_u32() { return mix32(key_ + mix32(counter_++)); }
 
+  // An independent stream for a branch (a reflected ray, ...), addressed by
+  // this stream's position and the branch: drawing from it, or not tracing
+  // the branch at all, leaves this stream's numbers unchanged, and the same
+  // branch forked at another position (another sample's hit) differs.
+  constexpr CounterRng fork(uint32_t branch) const {
+    return CounterRng(key_, counter_ * 0x9e3779b9u + branch * 0x85ebca6bu + 0x165667b1u, 0);
+  }
+
   // Uniform in [0, 1) with 24 random bits: exact in float and in double, so
   // the host's float and double models and the board see the same values.
   // The conversion goes through the math policy M (no int-to-float
@@ -38,6 +46,8 @@ class CounterRng {
   }
 
  private:
+  constexpr CounterRng(uint32_t parent_key, uint32_t salt, int) : key_(mix32(parent_key ^ mix32(salt))) {}
+
   uint32_t key_;
   uint32_t counter_ = 0;
 };

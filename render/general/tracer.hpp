@@ -21,6 +21,13 @@ namespace minrt::general {
 // value from 1e-10 to 1e-3 gives the reference images).
 inline constexpr double kSecondaryEpsilon = 1e-4;
 
+// Each secondary ray draws from its own stream, forked by the kind of
+// branch, so skipping a branch (the weight cut-off) changes no other
+// random number.
+inline constexpr uint32_t kBranchReflect = 1;
+inline constexpr uint32_t kBranchRefract = 2;
+inline constexpr uint32_t kBranchGi = 3;
+
 template <class R>
 struct Sample {
   Vec3<R> color;
@@ -32,14 +39,17 @@ class Tracer {
   using R = typename M::real;
 
  public:
-  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh) : s_(scene), bvh_(bvh) {}
+  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh, R min_weight)
+      : s_(scene), bvh_(bvh), min_weight_(min_weight) {}
 
   // Colour along a ray; `hit` false when it meets nothing.
-  Sample<R> trace(const Ray<R>& ray, int depth, int gi_level, R eps, CounterRng& rng) const {
+  // `weight` bounds how much this ray can still change the pixel: children
+  // whose weight falls below the renderer's cut-off are not traced.
+  Sample<R> trace(const Ray<R>& ray, int depth, int gi_level, R weight, R eps, CounterRng& rng) const {
     Hit<R> h{};
     nearest(ray, eps, h);
     if (h.kind == HitKind::kNone) return {{}, false};
-    return {shade(ray, h, depth, gi_level, rng), true};
+    return {shade(ray, h, depth, gi_level, weight, rng), true};
   }
 
  private:
@@ -139,7 +149,25 @@ class Tracer {
   }
 
   // Is anything between eps and `limit` along the ray? (Shadow rays.)
-  bool occluded(const Ray<R>& ray, R eps, R limit) const {
+  // Does the primitive `ref` (a BVH reference) block the ray before `limit`?
+  bool blocks(uint32_t ref, const Ray<R>& ray, R eps, R limit) const {
+    R t;
+    if constexpr ((F & kTriangles) != 0) {
+      if ((ref & kTriangleBit) != 0) {
+        R b1, b2;
+        t = hit_triangle<M>(s_.triangles[ref & ~kTriangleBit], ray, eps, b1, b2);
+        return t > eps && t < limit;
+      }
+    }
+    t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+    return t > eps && t < limit;
+  }
+
+  // Is anything between eps and `limit` along the ray? (Shadow rays toward
+  // light `light`.) The object that last blocked this light is tried first:
+  // neighbouring shadow rays are usually blocked by the same one. The cache
+  // only saves time; the answer is the same with or without it.
+  bool occluded(const Ray<R>& ray, R eps, R limit, uint32_t light) const {
     if constexpr ((F & kPlanes) != 0) {
       for (uint32_t i = 0; i < s_.plane_count; ++i) {
         const R t = hit_plane<M>(s_.planes[i], ray, eps);
@@ -147,38 +175,39 @@ class Tracer {
       }
     }
     if (bvh_.node_count == 0) return false;
+    uint32_t* cached = light < kShadowCache ? &shadow_cache_[light] : nullptr;
+    if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
     const Vec3<R> inv = inverse_dir(ray.dir);
     uint32_t stack[kBvhStack];
     int top = 0;
+    if (box_entry(bvh_.nodes[0].box, ray.origin, inv, limit) < R(0)) return false;
     stack[top++] = 0;
     while (top > 0) {
       const BvhNode<R>& node = bvh_.nodes[stack[--top]];
-      if (box_entry(node.box, ray.origin, inv, limit) < R(0)) continue;
       if (node.count == 0) {
-        stack[top++] = node.index + 1;
-        stack[top++] = node.index;
+        // Both children tested here: only boxes the ray enters are visited.
+        if (box_entry(bvh_.nodes[node.index + 1].box, ray.origin, inv, limit) >= R(0)) stack[top++] = node.index + 1;
+        if (box_entry(bvh_.nodes[node.index].box, ray.origin, inv, limit) >= R(0)) stack[top++] = node.index;
         continue;
       }
       for (uint32_t k = 0; k < node.count; ++k) {
         const uint32_t ref = bvh_.refs[node.index + k];
-        R t;
-        if constexpr ((F & kTriangles) != 0) {
-          if ((ref & kTriangleBit) != 0) {
-            R b1, b2;
-            t = hit_triangle<M>(s_.triangles[ref & ~kTriangleBit], ray, eps, b1, b2);
-            if (t > eps && t < limit) return true;
-            continue;
-          }
+        if (blocks(ref, ray, eps, limit)) {
+          if (cached != nullptr) *cached = ref;
+          return true;
         }
-        t = hit_sphere<M>(s_.spheres[ref], ray, eps);
-        if (t > eps && t < limit) return true;
       }
     }
     return false;
   }
 
   // --------------------------------------------------------------- shading
-  Vec3<R> shade(const Ray<R>& ray, const Hit<R>& h, int depth, int gi_level, CounterRng& rng) const {
+  static R max_abs(const Vec3<R>& v) {
+    const R x = v.x < R(0) ? -v.x : v.x, y = v.y < R(0) ? -v.y : v.y, z = v.z < R(0) ? -v.z : v.z;
+    return x > y ? (x > z ? x : z) : (y > z ? y : z);
+  }
+
+  Vec3<R> shade(const Ray<R>& ray, const Hit<R>& h, int depth, int gi_level, R weight, CounterRng& rng) const {
     const Vec3<R> p = ray.origin + ray.dir * h.t;
     Vec3<R> n;
     uint32_t mat_index;
@@ -233,14 +262,18 @@ class Tracer {
       }
       const R lambert = dot(n, dir);
       if (!(lambert > R(0))) continue;
-      if (occluded(Ray<R>{p, dir}, eps, limit)) continue;
+      if (occluded(Ray<R>{p, dir}, eps, limit, i)) continue;
       diffuse += color * energy * lambert;
     }
     if constexpr ((F & kGi) != 0) {
       if (gi_level < s_.gi_depth) {
         const Vec3<R> d = normalize<M>(n + in_unit_ball<M>(rng));
-        const Sample<R> g = trace(Ray<R>{p, d}, depth, gi_level + 1, eps, rng);
-        if (g.hit) diffuse += color * g.color;
+        const R w = weight * max_abs(color);
+        if (!(w < min_weight_)) {
+          CounterRng child = rng.fork(kBranchGi);
+          const Sample<R> g = trace(Ray<R>{p, d}, depth, gi_level + 1, w, eps, child);
+          if (g.hit) diffuse += color * g.color;
+        }
       }
     }
     if constexpr ((F & kSecondary) == 0) {
@@ -254,16 +287,20 @@ class Tracer {
       const R ni = dot(n, ray.dir);
       const Vec3<R> reflect_dir = ray.dir - n * (R(2) * ni);
       Vec3<R> reflected{}, refracted{};
-      if (s.x != R(0) || s.y != R(0) || s.z != R(0)) {
-        const Sample<R> r = trace(Ray<R>{p, reflect_dir}, depth + 1, gi_level, eps, rng);
+      const R w_reflect = weight * max_abs(s);
+      if (w_reflect != R(0) && !(w_reflect < min_weight_)) {
+        CounterRng child = rng.fork(kBranchReflect);
+        const Sample<R> r = trace(Ray<R>{p, reflect_dir}, depth + 1, gi_level, w_reflect, eps, child);
         if (r.hit) reflected = r.color;
       }
       const Vec3<R> rest = one - s;
-      if ((t.x != R(0) && rest.x != R(0)) || (t.y != R(0) && rest.y != R(0)) || (t.z != R(0) && rest.z != R(0))) {
+      const R w_refract = weight * max_abs(rest * t);
+      if (w_refract != R(0) && !(w_refract < min_weight_)) {
         const R eta = entering ? R(1) / mat.ior : mat.ior;
         const R k = R(1) - eta * eta * (R(1) - ni * ni);
         const Vec3<R> dir = k < R(0) ? reflect_dir : ray.dir * eta - n * (eta * ni + M::sqrt(k));
-        const Sample<R> r = trace(Ray<R>{p, dir}, depth + 1, gi_level, eps, rng);
+        CounterRng child = rng.fork(kBranchRefract);
+        const Sample<R> r = trace(Ray<R>{p, dir}, depth + 1, gi_level, w_refract, eps, child);
         if (r.hit) refracted = r.color;
       }
       return s * reflected + rest * (t * refracted + (one - t) * diffuse);
@@ -304,8 +341,17 @@ class Tracer {
     return i;
   }
 
+  static constexpr uint32_t kShadowCache = 16;  // lights with a last-blocker cache
+  static constexpr uint32_t kNoBlocker = 0xffffffffu;
+
   const model::Scene<R>& s_;
   const Bvh<R>& bvh_;
+  R min_weight_;
+  // One tracer per row (per thread): the cache is never shared.
+  mutable uint32_t shadow_cache_[kShadowCache] = {kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
+                                                  kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
+                                                  kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
+                                                  kNoBlocker};
 };
 
 }  // namespace minrt::general

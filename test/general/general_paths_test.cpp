@@ -3,6 +3,8 @@
 // bytes as the path with every feature compiled in.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "general_render.hpp"
@@ -54,4 +56,47 @@ TEST_CASE("general paths: the specialised path gives the bytes of the full one",
       CHECK(render_text(text, false, portable).image.rgba == render_text(text, true, portable).image.rgba);
     }
   }
+}
+
+TEST_CASE("general: the weight cut-off leaves the course's reflection and refraction tests unchanged",
+          "[general][cutoff]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  for (const char* name : {"shine1", "shine3", "bounces", "trans1", "trans3", "ior"}) {
+    DYNAMIC_SECTION(name) {
+      const std::string text =
+          minrt::test::read_file(minrt::test::shared_dir() + "/formats/cs418/ray-" + name + ".txt");
+      minrt::host::GeneralOptions o;
+      o.threads = 2;
+      minrt::host::GeneralResult cut, full;
+      std::string error;
+      const std::string dir = minrt::test::shared_dir() + "/formats/cs418/";
+      REQUIRE(minrt::host::render_cs418(text, name, dir, o, cut, error, {}));
+      o.full_tree = true;
+      REQUIRE(minrt::host::render_cs418(text, name, dir, o, full, error, {}));
+      CHECK(cut.image.rgba == full.image.rgba);
+    }
+  }
+}
+
+TEST_CASE("general: a skipped branch changes no other random number", "[general][cutoff]") {
+  // Glass and rough mirrors with 16 bounces: the cut-off skips deep
+  // branches; the rough reflections' noise must stay the same, so the two
+  // images differ by at most one level per channel.
+  const std::string scene =
+      "png 48 32 x.png\nbounces 16\naa 4\nsun 1 1 1\ncolor 0.9 0.9 0.9\nshininess 0.1\ntransparency 0.9\n"
+      "sphere -0.6 0 -3 0.5\nsphere 0.6 0 -3 0.5\ntransparency 0\nshininess 0.6\nroughness 0.1\n"
+      "sphere 0 0.8 -3.5 0.5\nsphere 0 -0.8 -3.5 0.5\n";
+  minrt::host::GeneralOptions o;
+  minrt::host::GeneralResult cut, full;
+  std::string error;
+  REQUIRE(minrt::host::render_cs418(scene, "s.txt", "", o, cut, error, {}));
+  o.full_tree = true;
+  REQUIRE(minrt::host::render_cs418(scene, "s.txt", "", o, full, error, {}));
+  int worst = 0;
+  for (std::size_t i = 0; i < cut.image.rgba.size(); ++i)
+    worst = std::max(worst, std::abs(int(cut.image.rgba[i]) - int(full.image.rgba[i])));
+  CHECK(worst <= 1);
 }

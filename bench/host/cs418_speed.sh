@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# CS418 speed on the host: ray-many (256x256, 10,000 spheres) parse, BVH and
+# render times as medians of interleaved runs (specialised path, every
+# feature compiled in, one thread, all threads), and with --large the
+# 800x800, 10,000-sphere, aa 40, bounces 16 scene of make_cs418_large.py.
+# Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--shared DIR]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+shared=$root/../shared
+runs=9
+large=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --runs) runs=$2; shift 2 ;;
+    --large) large=1; shift ;;
+    --shared) shared=$2; shift 2 ;;
+    -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "cs418_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+minrt=$root/build/release/host/minrt
+[ -x "$minrt" ] || { echo "cs418_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "cpu: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), $(nproc) cores"
+# One --stats line -> "parse bvh render" seconds.
+times_of() { sed -n 's/.*parse \([0-9.]*\) s, BVH \([0-9.]*\) s, render \([0-9.]*\) s.*/\1 \2 \3/p'; }
+median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+scene=$shared/formats/cs418/ray-many.txt
+declare -A col
+variants=("specialised,1:--threads 1" "all-features,1:--threads 1 --all-features" "specialised,all:")
+for ((i = 0; i < runs; i++)); do
+  for v in "${variants[@]}"; do
+    name=${v%%:*}
+    # shellcheck disable=SC2086
+    read -r p b r < <("$minrt" --stats ${v#*:} "$scene" -o "$work/many.png" 2>&1 | times_of)
+    col[$name.parse]+="$p "
+    col[$name.bvh]+="$b "
+    col[$name.render]+="$r "
+  done
+done
+echo "ray-many 256x256, medians of $runs interleaved runs (seconds):"
+printf '  %-18s %8s %8s %8s %8s\n' variant parse bvh render total
+for v in "${variants[@]}"; do
+  name=${v%%:*}
+  p=$(tr ' ' '\n' <<<"${col[$name.parse]}" | grep . | median)
+  b=$(tr ' ' '\n' <<<"${col[$name.bvh]}" | grep . | median)
+  r=$(tr ' ' '\n' <<<"${col[$name.render]}" | grep . | median)
+  printf '  %-18s %8.4f %8.4f %8.4f %8.4f\n' "$name" "$p" "$b" "$r" "$(awk -v a="$p" -v b="$b" -v c="$r" 'BEGIN{print a+b+c}')"
+done
+if [ "$large" = 1 ]; then
+  python3 "$root/bench/host/make_cs418_large.py" > "$work/large.txt"
+  echo "large 800x800, 10,000 spheres, aa 40, bounces 16, all threads:"
+  "$minrt" --stats "$work/large.txt" -o "$work/large.png" 2>&1 | sed 's/^/  /'
+fi
