@@ -109,8 +109,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   out.parse_seconds = seconds_since(t_parse);
   const Clock::time_point t_build = Clock::now();
   general::Renderer<M> renderer;
-  if (!renderer.setup(scene, arena, options.seed, options.force_full,
-                      options.full_tree ? 0.0 : general::kDefaultMinWeight)) {
+  if (!renderer.setup(scene, arena, options.seed, options.force_full, options.full_tree)) {
     error = name + ": error: scene does not fit in memory (BVH)";
     return false;
   }

@@ -30,7 +30,7 @@ inline constexpr uint32_t kPathFull = kAllFeatures;
 // fraction of the brightest radiance in the scene. Without it a scene of
 // glass spheres with 16 bounces traces a binary tree per pixel; with it the
 // 33 course tests give the same bytes (docs/cs418.md). 0 traces every ray.
-inline constexpr double kDefaultMinWeight = 1.0 / 65536;
+inline constexpr float kDefaultMinWeight = 1.0f / 65536.0f;  // exact in float and double
 
 template <class M>
 class Renderer {
@@ -40,11 +40,16 @@ class Renderer {
   // Builds the BVH in the arena and picks the path. False when the arena is
   // too small.
   bool setup(const model::Scene<R>& scene, Arena& arena, uint32_t seed, bool force_full = false,
-             double min_weight = kDefaultMinWeight) {
+             bool full_tree = false) {
     scene_ = &scene;
     seed_ = seed;
-    min_weight_ = static_cast<R>(min_weight);
+    min_weight_ = full_tree ? R(0) : R(kDefaultMinWeight);
     if (!build_bvh<M>(scene, arena, bvh_)) return false;
+    auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
+    if (dirs == nullptr) return false;
+    for (uint32_t i = 0; i < scene.light_count; ++i)
+      if (scene.lights[i].kind == model::LightKind::kSun) dirs[i] = normalize<M>(scene.lights[i].vector);
+    light_dirs_ = dirs;
     features_ = features_of(scene);
     if (force_full) path_ = kPathFull;
     else if ((features_ & ~kPathBasic) == 0) path_ = kPathBasic;
@@ -80,7 +85,7 @@ class Renderer {
   template <uint32_t F>
   void row(int y, uint8_t* out) const {
     const model::Scene<R>& s = *scene_;
-    Tracer<M, F> tracer(s, bvh_, min_weight_);  // one per row: its shadow cache is this row's
+    Tracer<M, F> tracer(s, bvh_, light_dirs_, min_weight_);  // one per row: its shadow cache is this row's
     const CameraRays<M> camera(s);
     const R half = R(0.5);
     for (int x = 0; x < s.width; ++x) {
@@ -131,6 +136,7 @@ class Renderer {
   uint32_t features_ = 0;
   uint32_t path_ = kPathFull;
   R min_weight_ = static_cast<R>(kDefaultMinWeight);
+  const Vec3<R>* light_dirs_ = nullptr;
 };
 
 }  // namespace minrt::general

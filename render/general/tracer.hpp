@@ -39,8 +39,9 @@ class Tracer {
   using R = typename M::real;
 
  public:
-  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh, R min_weight)
-      : s_(scene), bvh_(bvh), min_weight_(min_weight) {}
+  // `light_dirs`: each sun's normalised direction, computed once at set-up.
+  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh, const Vec3<R>* light_dirs, R min_weight)
+      : s_(scene), bvh_(bvh), light_dirs_(light_dirs), min_weight_(min_weight) {}
 
   // Colour along a ray; `hit` false when it meets nothing.
   // `weight` bounds how much this ray can still change the pixel: children
@@ -253,11 +254,11 @@ class Tracer {
           energy = light.color / dist2;
           limit = dist;
         } else {
-          dir = normalize<M>(light.vector);
+          dir = light_dirs_[i];
           energy = light.color;
         }
       } else {
-        dir = normalize<M>(light.vector);
+        dir = light_dirs_[i];
         energy = light.color;
       }
       const R lambert = dot(n, dir);
@@ -346,6 +347,7 @@ class Tracer {
 
   const model::Scene<R>& s_;
   const Bvh<R>& bvh_;
+  const Vec3<R>* light_dirs_;
   R min_weight_;
   // One tracer per row (per thread): the cache is never shared.
   mutable uint32_t shadow_cache_[kShadowCache] = {kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
