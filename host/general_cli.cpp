@@ -69,16 +69,9 @@ bool cs418_png_line(const std::string& text, int& width, int& height, std::strin
 }
 
 std::string cs418_output_name(const std::string& text) {
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string kw, w, h, name;
-    if (!(words >> kw)) continue;
-    if (kw != "png" || !(words >> w >> h >> name)) return "";
-    return name;
-  }
-  return "";
+  int w = 0, h = 0;
+  std::string name;
+  return cs418_png_line(text, w, h, name) ? name : "";
 }
 
 int run_cs418_cli(GeneralCli& cli) {

@@ -13,7 +13,6 @@ namespace {
 constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 // The writer's chunks are one row (4W + 6 bytes per 64 KiB block) at most.
 constexpr std::uint32_t kMaxChunk = 1u << 24;
-constexpr std::size_t kMaxErrorLine = 512;
 
 std::uint32_t be32(const std::uint8_t* p) {
   return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
@@ -73,7 +72,7 @@ bool PngReceiver::step(std::uint8_t c) {
     case State::kStart:
       if (c == static_cast<std::uint8_t>(MINRT_ERROR_MARKER[0])) {
         state_ = State::kErrorLine;
-        message_.assign(1, static_cast<char>(c));
+        error_line_.start(c);
         return true;
       }
       if (c != kSignature[0]) {
@@ -114,19 +113,16 @@ bool PngReceiver::step(std::uint8_t c) {
       return true;
     }
     case State::kErrorLine:
-      if (c == '\n') {
-        const std::string marker = MINRT_ERROR_MARKER;
-        if (message_.compare(0, marker.size(), marker) == 0) {
-          message_.erase(0, marker.size());
+      switch (error_line_.feed(c)) {
+        case ErrorLine::Step::kMore: return true;
+        case ErrorLine::Step::kMessage:
+          message_ = error_line_.text();
           state_ = State::kFirmwareError;
-        } else {
-          fail("unexpected reply line: " + message_);
-        }
-        return false;
+          return false;
+        case ErrorLine::Step::kNotMarker: return fail("unexpected reply line: " + error_line_.text());
+        case ErrorLine::Step::kTooLong: return fail("error line from the board is too long");
       }
-      if (message_.size() >= kMaxErrorLine) return fail("error line from the board is too long");
-      if (c != '\r') message_.push_back(static_cast<char>(c));
-      return true;
+      return false;
     default:
       return false;
   }
@@ -136,7 +132,7 @@ void PngReceiver::finish() {
   if (done() || failed() || firmware_error()) return;
   char buf[160];
   if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
-  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", message_.c_str());
+  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", error_line_.text().c_str());
   else
     std::snprintf(buf, sizeof buf, "PNG stream is truncated: %d of %d rows after %llu bytes", rows_complete(), height_,
                   static_cast<unsigned long long>(bytes_));

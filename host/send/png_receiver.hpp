@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <string>
 
+#include "error_line.hpp"
+
 namespace minrt::send {
 
 class PngReceiver {
@@ -39,6 +41,7 @@ class PngReceiver {
   int width_, height_;
   State state_ = State::kStart;
   std::string message_;
+  ErrorLine error_line_;
   std::uint64_t bytes_ = 0;
   int rows_ = 0;
   // Current chunk: 8 header bytes, data, 4 CRC bytes.

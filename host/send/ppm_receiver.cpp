@@ -11,7 +11,6 @@ namespace minrt::send {
 namespace {
 bool is_space(std::uint8_t c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f'; }
 bool is_digit(std::uint8_t c) { return c >= '0' && c <= '9'; }
-constexpr std::size_t kMaxErrorLine = 4096;
 const char* kind_name(PpmKind k) { return k == PpmKind::kP3 ? "P3" : "P6"; }
 }  // namespace
 
@@ -73,7 +72,7 @@ bool PpmReceiver::step(std::uint8_t c) {
     case State::kStart:
       if (c == MINRT_ERROR_MARKER[0]) {
         state_ = State::kErrorLine;
-        message_.assign(1, static_cast<char>(c));
+        error_line_.start(c);
         return true;
       }
       if (c != 'P') {
@@ -84,21 +83,17 @@ bool PpmReceiver::step(std::uint8_t c) {
       state_ = State::kHeader;
       token_ = "P";
       return true;
-    case State::kErrorLine: {
-      if (c == '\n') {
-        const std::string marker = MINRT_ERROR_MARKER;
-        if (message_.compare(0, marker.size(), marker) == 0) {
-          message_.erase(0, marker.size());
+    case State::kErrorLine:
+      switch (error_line_.feed(c)) {
+        case ErrorLine::Step::kMore: return true;
+        case ErrorLine::Step::kMessage:
+          message_ = error_line_.text();
           state_ = State::kFirmwareError;
-        } else {
-          fail("unexpected reply line: " + message_);
-        }
-        return false;
+          return false;
+        case ErrorLine::Step::kNotMarker: return fail("unexpected reply line: " + error_line_.text());
+        case ErrorLine::Step::kTooLong: return fail("error line from the board is too long");
       }
-      if (message_.size() >= kMaxErrorLine) return fail("error line from the board is too long");
-      if (c != '\r') message_.push_back(static_cast<char>(c));
-      return true;
-    }
+      return false;
     case State::kHeader:
       if (in_comment_) {
         if (c == '\n' || c == '\r') in_comment_ = false;
@@ -195,7 +190,7 @@ void PpmReceiver::finish() {
   }
   char buf[160];
   if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
-  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", message_.c_str());
+  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", error_line_.text().c_str());
   else if (state_ == State::kHeader) std::snprintf(buf, sizeof buf, "PPM header is cut off after %llu bytes", static_cast<unsigned long long>(bytes_));
   else
     std::snprintf(buf, sizeof buf, "image is truncated: %zu of %zu channel values (%d of %d rows) after %llu bytes",

@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+
+#include "error_line.hpp"
 #include <vector>
 
 namespace minrt::send {
@@ -61,6 +63,7 @@ class PpmReceiver {
   ImageSpec expected_;
   State state_ = State::kStart;
   std::string message_;
+  ErrorLine error_line_;
   std::uint64_t bytes_ = 0;
   // Header parsing.
   int header_field_ = 0;  // 0 magic, 1 width, 2 height, 3 maxval

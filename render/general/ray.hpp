@@ -28,6 +28,15 @@ struct Hit {
   bool closer(R t2, uint32_t order2) const {
     return kind == HitKind::kNone || t2 < t || (t2 == t && order2 > order);
   }
+  // Takes the candidate if it is closer (by the rule above); says whether.
+  bool offer(R t2, HitKind kind2, uint32_t index2, uint32_t order2) {
+    if (!closer(t2, order2)) return false;
+    t = t2;
+    kind = kind2;
+    index = index2;
+    order = order2;
+    return true;
+  }
 };
 
 }  // namespace minrt::general

@@ -59,12 +59,7 @@ class Tracer {
     if constexpr ((F & kPlanes) != 0) {
       for (uint32_t i = 0; i < s_.plane_count; ++i) {
         const R t = hit_plane<M>(s_.planes[i], ray, eps);
-        if (t > eps && h.closer(t, s_.planes[i].order)) {
-          h.t = t;
-          h.kind = HitKind::kPlane;
-          h.index = i;
-          h.order = s_.planes[i].order;
-        }
+        if (t > eps) h.offer(t, HitKind::kPlane, i, s_.planes[i].order);
       }
     }
     if (bvh_.node_count == 0) return;
@@ -128,11 +123,7 @@ class Tracer {
           const uint32_t i = ref & ~kTriangleBit;
           R b1, b2;
           const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
-          if (t > eps && h.closer(t, s_.triangles[i].order)) {
-            h.t = t;
-            h.kind = HitKind::kTriangle;
-            h.index = i;
-            h.order = s_.triangles[i].order;
+          if (t > eps && h.offer(t, HitKind::kTriangle, i, s_.triangles[i].order)) {
             h.b1 = b1;
             h.b2 = b2;
           }
@@ -140,12 +131,7 @@ class Tracer {
         }
       }
       const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
-      if (t > eps && h.closer(t, s_.spheres[ref].order)) {
-        h.t = t;
-        h.kind = HitKind::kSphere;
-        h.index = ref;
-        h.order = s_.spheres[ref].order;
-      }
+      if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
     }
   }
 
