@@ -16,17 +16,22 @@ using Math = PortableFloatHwSqrt;
 using Math = PortableFloat;
 #endif
 
-int32_t no_textures(void*, const char* name, Diagnostic& error) {
-  error.text("texture ").text(name).text(": textures reach the board only over the framed protocol (not yet)");
-  return -1;
+int32_t find_texture(void* ctx, const char* name, Diagnostic& error) {
+  const auto* table = static_cast<const send::textures::Table*>(ctx);
+  const int32_t i = table != nullptr ? table->find(name) : -1;
+  if (i < 0) error.text("texture ").text(name).text(": not sent ahead of the scene (host-send sends the ones it names)");
+  return i;
 }
 
 }  // namespace
 
-Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features, Diagnostic& error) {
+Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
+                         const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   model::SceneBuilder<R> builder(arena);
-  cs418::Reader<Math> reader(in, builder, cs418::TextureResolver{&no_textures, nullptr}, WarningSink{});
+  cs418::Reader<Math> reader(in, builder,
+                             cs418::TextureResolver{&find_texture, const_cast<send::textures::Table*>(textures)},
+                             WarningSink{});
   cs418::Header header;
   model::Scene<R> scene;
   switch (reader.read(header, scene, error)) {
@@ -36,7 +41,15 @@ Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_fea
   }
   general::Renderer<Math> renderer;
   uint8_t* row = nullptr;
-  if (!builder.finish(scene) || !renderer.setup(scene, arena, 1, all_features) ||
+  model::Texture* table = nullptr;
+  const int count = textures != nullptr ? textures->count : 0;
+  if (count > 0 && (table = arena.alloc_zeroed<model::Texture>(static_cast<size_t>(count))) != nullptr) {
+    for (int i = 0; i < count; ++i)
+      table[i] = model::Texture{textures->items[i].width, textures->items[i].height, textures->items[i].rgb};
+    scene.textures = table;
+    scene.texture_count = static_cast<uint32_t>(count);
+  }
+  if ((count > 0 && table == nullptr) || !builder.finish(scene) || !renderer.setup(scene, arena, 1, all_features) ||
       (row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width))) == nullptr) {
     error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
         " bytes)");

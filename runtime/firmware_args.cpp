@@ -33,7 +33,7 @@ bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     const bool takes_value =
-        equal(arg, "--size") || equal(arg, "--format") || equal(arg, "--idle-polls");
+        equal(arg, "--size") || equal(arg, "--format") || equal(arg, "--idle-polls") || equal(arg, "--ram-size");
     if (takes_value && i + 1 >= argc) {
       error.text(arg).text(" needs a value");
       return false;
@@ -70,6 +70,13 @@ bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic
       options.big_endian = false;
     } else if (equal(arg, "--endian=big")) {
       options.big_endian = true;
+    } else if (equal(arg, "--ram-size")) {
+      const char* v = argv[++i];
+      const char* p = v;
+      if (!parse_decimal(p, 'M', 1024, options.ram_mib) || *p != 'M' || p[1] != 0 || options.ram_mib < 4) {
+        bad_value(error, arg, v).text("NM, 4M..1024M");
+        return false;
+      }
     } else if (equal(arg, "--all-features")) {
       options.all_features = true;
     } else if (equal(arg, "--footprint")) {

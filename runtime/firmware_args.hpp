@@ -8,6 +8,9 @@
 //   --protocol=raw|course|framed   serial protocol (default raw), see
 //                      docs/host-send.md; framed always renders P6 rows
 //   --endian=little|big  byte order of the course protocol's words
+//   --ram-size NM      the machine has N MiB of RAM (4..1024; default 4, the
+//                      board's): above 4 MiB the render arena moves to the
+//                      RAM past the linked image, when that is larger
 //   --all-features     CS418: render on the path with every feature compiled
 //                      in (to measure what the specialised paths save)
 //
@@ -41,6 +44,7 @@ struct FirmwareOptions {
   Protocol protocol = Protocol::kRaw;
   bool big_endian = false;  // course words
   bool all_features = false;  // CS418 path selection off
+  uint32_t ram_mib = 4;       // --ram-size
 };
 
 // Fills `options` from argv[1..argc-1]; on a usage error returns false with

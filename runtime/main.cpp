@@ -10,6 +10,7 @@
 // in test/host_send runs too: protocol/protocol_{course,framed}_board.hpp.
 // The course protocol's first stage is a boot loader: an uploaded program
 // is loaded and started instead of this renderer.
+#include <minrt/boot_args.h>
 #include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
 
@@ -158,7 +159,15 @@ extern "C" int main(int argc, char** argv) {
     return MINRT_STATUS_USAGE;
   }
 
-  const minrt::fw::ArenaRegion region = minrt::fw::arena_region();
+  minrt::fw::ArenaRegion region = minrt::fw::arena_region();
+  // A machine with more RAM than the board (firmware-sim --ram-size): the
+  // RAM above the linked 4 MiB, below the boot arguments, when larger.
+  const uint32_t ram = options.ram_mib << 20;
+  if (ram > MINRT_RAM_DEFAULT_SIZE) {
+    const size_t above = ram - MINRT_RAM_DEFAULT_SIZE - MINRT_BOOT_ARGS_MAX;
+    if (above > region.size)
+      region = {reinterpret_cast<void*>(static_cast<uintptr_t>(MINRT_RAM_BASE + MINRT_RAM_DEFAULT_SIZE)), above};
+  }
   minrt::Arena arena(region.base, region.size);
   if (options.protocol == minrt::fw::Protocol::kCourse || (minrt::fw::program_handoff() & MINRT_PROGRAM_LOADED) != 0)
     return serve_course(uart, argc, argv, options, arena, error);
@@ -166,10 +175,24 @@ extern "C" int main(int argc, char** argv) {
   minrt::fw::SerialInput input(uart, options.idle_polls);
   minrt::fw::SerialOutput output(uart, options.footprint);
   minrt::PeekSource scene(input.source());
-  const int first = scene.first_nonblank();
+  int first = scene.first_nonblank();
+  // A CS418 scene's textures, decoded by host-send, come first.
+  minrt::send::textures::Table* textures = nullptr;
+  minrt::PeekSource after_textures(input.source());
+  if (first == MINRT_TEXTURES_MARKER) {
+    minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
+    textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
+    if (textures == nullptr) error.text("no room for the texture table");
+    if (textures == nullptr || !minrt::send::textures::receive(binary.source(), arena, *textures, error)) {
+      send_error(uart, error);
+      return MINRT_STATUS_OUT_OF_MEMORY;
+    }
+    first = after_textures.first_nonblank();
+  }
+  minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
   if ((first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z')) {
     const minrt::fw::Cs418Result r =
-        minrt::fw::render_cs418(scene.source(), output.sink(), arena, options.all_features, error);
+        minrt::fw::render_cs418(text.source(), output.sink(), arena, options.all_features, textures, error);
     if (r != minrt::fw::Cs418Result::kOk) {
       send_error(uart, error);
       return r == minrt::fw::Cs418Result::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;

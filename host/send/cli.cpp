@@ -6,6 +6,7 @@
 #include "output_file.hpp"
 #include "scene_format.hpp"
 
+#include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
 
 #include <sys/stat.h>
@@ -25,6 +26,7 @@
 #include "protocol_course_host.hpp"
 #include "protocol_framed_host.hpp"
 #include "protocol_raw.hpp"
+#include "texture_preamble.hpp"
 #include "sim_launcher.hpp"
 #include "verify.hpp"
 
@@ -95,6 +97,8 @@ void print_help() {
       "  --port DEV               serial device, or usb:VID:PID[:SERIAL] (see --list)\n"
       "  --sim [ELF]              run the firmware in firmware-sim (default; ELF defaults\n"
       "                           to the build's firmware or $MINRT_FIRMWARE_ELF)\n"
+      "  --sim-ram-size NM        RAM of the simulated board (default 4M, the board's);\n"
+      "                           for CS418 scenes whose textures do not fit (implies --sim)\n"
       "  --sim-binary PATH        simulator to run (default: the build's firmware-sim or\n"
       "                           $MINRT_FIRMWARE_SIM)\n"
       "  --baud N                 line rate, any value (default 115200; with --sim it\n"
@@ -164,6 +168,17 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
         o.sim_elf = argv[++i];
     } else if (a == "--sim-binary") {
       if (!value(o.sim_binary)) return ParseResult::kError;
+    } else if (a == "--sim-ram-size") {
+      std::string v;
+      if (!value(v)) return ParseResult::kError;
+      uint32_t mib = 0;
+      const char* p = v.c_str();
+      if (!minrt::parse_decimal(p, 'M', 1024, mib) || *p != 'M' || p[1] != 0 || mib < 1) {
+        error = "bad --sim-ram-size '" + v + "': expected NM, 1M..1024M";
+        return ParseResult::kError;
+      }
+      o.sim_ram_bytes = static_cast<std::uint64_t>(mib) << 20;
+      o.sim = true;
       o.sim = true;  // naming a simulator asks for one
     } else if (a == "--baud") {
       if (!value(v)) return ParseResult::kError;
@@ -277,6 +292,10 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
   return ParseResult::kRun;
 }
 
+// RAM the firmware keeps for itself (code, data, stack, the scene and the
+// tracer's tables) when textures are loaded: a conservative bound.
+constexpr std::uint64_t kFirmwareReserve = 512 * 1024;
+
 int run(const Options& options) {
   install_signal_handlers();
   if (options.list) return list_ports_command();
@@ -290,6 +309,7 @@ int run(const Options& options) {
   const bool cs418 =
       minrt::host::detect_scene_format(o.scene, scene.substr(0, 4096)) == minrt::host::SceneFormat::kCs418;
   int png_width = 0, png_height = 0;
+  std::string texture_preamble;  // CS418: decoded textures, sent ahead of the scene
   if (cs418) {
     if (o.protocol != Protocol::kRaw)
       return fail(kExitUsage, "CS418 scenes go over --protocol raw; course and framed carry SLD only, for now");
@@ -299,6 +319,15 @@ int run(const Options& options) {
       return fail(kExitFirmware, "scene rejected before sending: " + o.scene +
                                      ": the first line must be 'png WIDTH HEIGHT FILE.png' (1..4096 each)");
     if (!o.output_given) o.output = name;
+    // The textures it names go first, decoded here (the board has no PNG
+    // decoder); they must fit in the board's RAM next to the firmware.
+    const std::size_t slash = o.scene.rfind('/');
+    const std::string base_dir = slash == std::string::npos ? "" : o.scene.substr(0, slash + 1);
+    const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
+    if (!build_texture_preamble(scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
+      return fail(kExitFirmware, "scene rejected before sending: " + why);
+    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   // The output is checked before the transfer, not after minutes of it.
   if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
@@ -306,7 +335,7 @@ int run(const Options& options) {
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
   // refuses such a scene with minrt's message, so nothing is sent.
-  if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
+  if (!cs418 && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
     std::string words;
     if (!sld_to_course_words(scene, false, words, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
@@ -335,6 +364,11 @@ int run(const Options& options) {
     cfg.baud = o.baud_given ? o.port_settings.baud : 0;
     cfg.firmware_args = {"--size", std::to_string(o.spec.width) + "x" + std::to_string(o.spec.height), "--format",
                          kind_arg(o.spec.kind)};
+    if (o.sim_ram_bytes != 0) {
+      cfg.ram_size = std::to_string(o.sim_ram_bytes >> 20) + "M";
+      cfg.firmware_args.push_back("--ram-size");
+      cfg.firmware_args.push_back(cfg.ram_size);
+    }
     if (o.protocol == Protocol::kCourse) {
       cfg.firmware_args.push_back("--protocol=course");
       if (o.big_endian) cfg.firmware_args.push_back("--endian=big");
@@ -368,7 +402,7 @@ int run(const Options& options) {
               &progress};
   TransferResult r;
   if (cs418) {
-    r = run_raw_png(ex, scene, png_width, png_height);
+    r = run_raw_png(ex, texture_preamble + scene, png_width, png_height);
   } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);
   } else if (o.protocol == Protocol::kCourse) {

@@ -66,6 +66,10 @@ bool SimLauncher::start(const SimConfig& config, std::string& error) {
     args.push_back("--baud");
     args.push_back(std::to_string(config.baud));
   }
+  if (!config.ram_size.empty()) {
+    args.push_back("--ram-size");
+    args.push_back(config.ram_size);
+  }
   args.push_back(config.firmware);
   if (!config.firmware_args.empty()) {
     args.push_back("--");

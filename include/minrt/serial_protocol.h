@@ -27,6 +27,18 @@
 /* '!' cannot begin a PPM (which begins with 'P'). */
 #define MINRT_ERROR_MARKER "!minrt-error: "
 
+/* CS418 scenes with textures (raw protocol): the textures travel ahead of
+ * the scene text, decoded on the host:
+ *   MINRT_TEXTURES_MARKER, count (1 byte, 1..MINRT_MAX_TEXTURES), then for each
+ *   texture: name length (1 byte, 1..255), the name as written in the scene,
+ *   width and height (2 bytes each, little-endian, 1..MINRT_MAX_TEXTURE_SIDE),
+ *   width*height*3 bytes of sRGB RGB, top row first;
+ * then the scene text as usual. The firmware answers with a PNG stream
+ * (starts with 0x89) or the error line. */
+#define MINRT_TEXTURES_MARKER 0x01
+#define MINRT_MAX_TEXTURES 64
+#define MINRT_MAX_TEXTURE_SIDE 16384
+
 /* ASCII EOT (Ctrl-D): optional end-of-input byte after the scene. */
 #define MINRT_END_OF_INPUT 0x04
 

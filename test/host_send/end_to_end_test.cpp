@@ -170,7 +170,8 @@ TEST_CASE("host-send sends CS418 scenes to firmware-sim and writes the PNG it se
   HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
   const std::string cs418 = hs_test::shared_dir() + "/formats/cs418/";
-  for (const char* name : {"ray-sphere", "ray-shadow-plane", "ray-trans3", "ray-many"}) {
+  // ray-tex and ray-trit: their textures travel decoded ahead of the scene.
+  for (const char* name : {"ray-sphere", "ray-shadow-plane", "ray-trans3", "ray-many", "ray-tex", "ray-trit"}) {
     const std::string scene = cs418 + name + ".txt";
     const std::string got = dir.file(std::string(name) + "-board.png");
     const std::string want = dir.file(std::string(name) + "-host.png");
@@ -200,4 +201,39 @@ TEST_CASE("host-send: a broken CS418 scene ends with the board's located error a
                                 hs_test::shared_dir() + "/formats/cs418/ray-sphere.txt", "-o", out});
   CHECK(framed.status == 2);
   CHECK(framed.err.find("CS418 scenes go over --protocol raw") != std::string::npos);
+}
+
+TEST_CASE("host-send: textures too large for the board are refused before sending, and fit a larger simulated RAM",
+          "[e2e][firmware][cs418]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  minrt::host::RgbaImage big;
+  big.width = 1500;
+  big.height = 1000;  // 4.5 MB of texels: more than the board's 4 MiB
+  big.rgba.assign(static_cast<std::size_t>(big.width) * big.height * 4, 200);
+  {
+    std::FILE* f = std::fopen(dir.file("big.png").c_str(), "wb");
+    std::string why;
+    REQUIRE(minrt::host::write_png(f, big, why));
+    std::fclose(f);
+  }
+  {
+    std::FILE* f = std::fopen(dir.file("big.txt").c_str(), "w");
+    std::fputs("png 12 8 out.png\ntexture big.png\nsphere 0 0 -2 1\nsun 1 1 1\n", f);
+    std::fclose(f);
+  }
+  const std::string out = dir.file("out.png");
+  const RunResult small = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
+                               dir.file("big.txt"), "-o", out});
+  CHECK(small.status == 3);
+  CHECK(small.err.find("scene rejected before sending: the textures need 4500000 bytes") != std::string::npos);
+  CHECK(!hs_test::file_exists(out));
+  const RunResult larger = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim-ram-size", "16M", "--sim",
+                                HS_FIRMWARE_ELF, dir.file("big.txt"), "-o", out});
+  INFO(larger.err);
+  CHECK(larger.status == 0);
+  minrt::host::RgbaImage img;
+  std::string why;
+  REQUIRE(minrt::host::read_png(out, img, why));
+  CHECK(img.width == 12);
 }

@@ -1,0 +1,18 @@
+// host-send's side of the texture preamble (include/minrt/serial_protocol.h):
+// finds the textures a CS418 scene names, decodes them with libpng and lays
+// them out ahead of the scene text, so the board needs no PNG decoder.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace minrt::send {
+
+// Fills `out` with the preamble for the textures `scene` names (empty when it
+// names none). Texture files resolve against `base_dir`. False with the
+// reason: a missing or bad PNG, too many textures, a name too long, or more
+// texel bytes than `board_bytes` (then the message says how much is needed).
+bool build_texture_preamble(const std::string& scene, const std::string& base_dir, std::uint64_t board_bytes,
+                            std::string& out, std::string& error);
+
+}  // namespace minrt::send
