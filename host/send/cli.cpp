@@ -168,18 +168,18 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
         o.sim_elf = argv[++i];
     } else if (a == "--sim-binary") {
       if (!value(o.sim_binary)) return ParseResult::kError;
+      o.sim = true;  // naming a simulator asks for one
     } else if (a == "--sim-ram-size") {
       std::string v;
       if (!value(v)) return ParseResult::kError;
       uint32_t mib = 0;
       const char* p = v.c_str();
-      if (!minrt::parse_decimal(p, 'M', 1024, mib) || *p != 'M' || p[1] != 0 || mib < 1) {
-        error = "bad --sim-ram-size '" + v + "': expected NM, 1M..1024M";
+      if (!minrt::parse_decimal(p, 'M', 1024, mib) || *p != 'M' || p[1] != 0 || mib < 4) {
+        error = "bad --sim-ram-size '" + v + "': expected NM, 4M..1024M";
         return ParseResult::kError;
       }
       o.sim_ram_bytes = static_cast<std::uint64_t>(mib) << 20;
       o.sim = true;
-      o.sim = true;  // naming a simulator asks for one
     } else if (a == "--baud") {
       if (!value(v)) return ParseResult::kError;
       char* end = nullptr;
