@@ -13,6 +13,7 @@
 
 #include "core/base/text_numbers.hpp"
 #include "general_cli.hpp"
+#include "jaworski_cli.hpp"
 #include "output_file.hpp"
 #include "scene_format.hpp"
 #include "render_variants.hpp"
@@ -32,8 +33,12 @@ void print_help(std::FILE* f) {
       "Renders a CS418 scene (a .txt file whose first line is 'png W H NAME.png')\n"
       "like the course's program: the PNG goes to NAME.png, or to -o FILE.\n"
       "\n"
-      "  --scene-format sld|cs418 the scene's format (default: from the extension,\n"
-      "                           then the first word: 'png' means CS418)\n"
+      "Renders a Jaworski scene (keywords imWidth, ..., lights, objects) like the\n"
+      "original program: the BMP goes to the scene's name with .bmp, or to -o FILE.\n"
+      "\n"
+      "  --scene-format sld|cs418|jaworski  the scene's format (default: from the\n"
+      "                           extension, then the first word: 'png' means CS418,\n"
+      "                           a header field such as imWidth means Jaworski)\n"
       "  --size WxH               image size (default 512x512, at most 4096x4096)\n"
       "  --format p3|p6           PPM flavour (default p3, the original's text form)\n"
       "  --precision double|float floating-point type (default double)\n"
@@ -45,6 +50,7 @@ void print_help(std::FILE* f) {
       "                           FIFO, device or symbolic link is refused; - is stdout)\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
+      "  -n, --no-save            Jaworski: render without saving the image\n"
       "CS418 only:\n"
       "  --threads N              render rows on N threads (default: every core;\n"
       "                           the image is the same for any N)\n"
@@ -89,6 +95,7 @@ int main(int argc, char** argv) {
   bool write_through = false;
   minrt::host::SceneFormat scene_format = minrt::host::SceneFormat::kAuto;
   minrt::host::GeneralCli general;
+  bool no_save = false;
 
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -130,7 +137,7 @@ int main(int argc, char** argv) {
     } else if (arg == "--scene-format") {
       const std::string v = value("--scene-format");
       if (!minrt::host::parse_scene_format(v, scene_format))
-        usage_error("bad --scene-format '" + v + "': expected sld or cs418");
+        usage_error("bad --scene-format '" + v + "': expected sld, cs418 or jaworski");
     } else if (arg == "--threads") {
       const char* v = value("--threads");
       uint32_t n = 0;
@@ -143,6 +150,8 @@ int main(int argc, char** argv) {
       if (!minrt::parse_decimal(v, 0, 0xffffffffu, n))
         usage_error(std::string("bad --seed '") + v + "': expected 0..4294967295");
       general.options.seed = n;
+    } else if (arg == "-n" || arg == "--no-save") {
+      no_save = true;
     } else if (arg == "--all-features") {
       general.options.force_full = true;
     } else if (arg == "--full-tree") {
@@ -168,7 +177,7 @@ int main(int argc, char** argv) {
   // input is read whole first so that it can be looked at.
   std::string stdin_text;
   std::FILE* stdin_copy = nullptr;
-  if (scene_format == minrt::host::SceneFormat::kAuto || scene_format == minrt::host::SceneFormat::kCs418) {
+  if (scene_format != minrt::host::SceneFormat::kSld) {
     std::string head;
     if (scene_path == nullptr) {
       char buf[65536];
@@ -190,6 +199,16 @@ int main(int argc, char** argv) {
       stdin_copy = stdin_text.empty() ? std::fopen("/dev/null", "rb")
                                       : fmemopen(stdin_text.data(), stdin_text.size(), "rb");
     }
+  }
+  if (scene_format == minrt::host::SceneFormat::kJaworski) {
+    minrt::host::JaworskiCli j;
+    j.scene_path = scene_path != nullptr ? scene_path : "-";
+    j.scene_text = std::move(stdin_text);
+    j.output_path = output_path;
+    j.save = !no_save;
+    j.write_through = write_through;
+    j.variant = variant;
+    return minrt::host::run_jaworski_cli(j);
   }
   if (scene_format == minrt::host::SceneFormat::kCs418) {
     general.scene_path = scene_path != nullptr ? scene_path : "-";

@@ -5,6 +5,7 @@ namespace minrt::host {
 bool parse_scene_format(const std::string& name, SceneFormat& out) {
   if (name == "sld") out = SceneFormat::kSld;
   else if (name == "cs418") out = SceneFormat::kCs418;
+  else if (name == "jaworski") out = SceneFormat::kJaworski;
   else return false;
   return true;
 }
@@ -16,13 +17,28 @@ SceneFormat detect_scene_format(const std::string& path, const std::string& head
   };
   if (ends_with(".sld") || ends_with(".SLD")) return SceneFormat::kSld;
   std::size_t i = 0;
-  while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;
+  for (;;) {  // blanks, and Jaworski's # comments (CS418 and SLD have none)
+    while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;
+    if (i < head.size() && head[i] == '#') {
+      while (i < head.size() && head[i] != '\n') ++i;
+      continue;
+    }
+    break;
+  }
   // The first word: SLD starts with a number; a CS418 file with `png`, or
   // (when the png line is missing) with another of its keywords, which the
   // CS418 reader then reports properly.
   std::size_t end = i;
   while (end < head.size() && head[end] != ' ' && head[end] != '\t' && head[end] != '\r' && head[end] != '\n') ++end;
   const std::string word = head.substr(i, end - i);
+  std::string lower;
+  for (char c : word) {
+    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'))) break;  // Jaworski tokens may be glued
+    lower.push_back(static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c));
+  }
+  for (const char* k : {"imwidth", "imheight", "canvwidth", "canvheight", "depth", "bgcolor", "raydepth", "lights",
+                        "objects"})
+    if (lower == k) return SceneFormat::kJaworski;
   static const char* const kCs418Words[] = {
       "png", "color", "sphere", "sun", "expose", "eye", "forward", "up", "fisheye", "panorama", "plane", "xyz",
       "tri", "texcoord", "texture", "bulb", "shininess", "bounces", "transparency", "ior", "roughness", "aa",

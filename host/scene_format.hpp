@@ -1,15 +1,16 @@
 // Which reader a scene file goes to: --scene-format when given, else the
 // file's extension, else its first word (SPEC.md 5.2: `png` starts a CS418
-// file; SLD starts with numbers).
+// file, a header field such as `imWidth` a Jaworski one (after `#`
+// comments); SLD starts with numbers).
 #pragma once
 
 #include <string>
 
 namespace minrt::host {
 
-enum class SceneFormat { kAuto, kSld, kCs418 };
+enum class SceneFormat { kAuto, kSld, kCs418, kJaworski };
 
-// "sld", "cs418" -> format; false for an unknown name.
+// "sld", "cs418", "jaworski" -> format; false for an unknown name.
 bool parse_scene_format(const std::string& name, SceneFormat& out);
 
 // Decides from the path and the first bytes of the file.

@@ -3,7 +3,10 @@
 // those of the math policy and the compiler's memory routines.
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "core/image/bmp_writer.hpp"
 #include "core/image/png_writer.hpp"
+#include "formats/jaworski/jaworski_reader.hpp"
+#include "render/jaworski/tracer.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "render/general/render.hpp"
 #include "render/minrt/render.hpp"
@@ -34,8 +37,23 @@ int general_entry() {
   return 0;
 }
 
+// Jaworski's path: keyword scene in, BMP rows out.
+int jaworski_entry() {
+  minrt::Arena arena(g_arena, sizeof g_arena);
+  minrt::jaworski::Scene<POLICY::real> scene;
+  if (!scene.allocate(arena, 256)) return 1;
+  minrt::jaworski::Reader<POLICY> reader(minrt::ByteSource{&read_byte, nullptr}, scene);
+  minrt::Diagnostic error;
+  if (!reader.read(error)) return 2;
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (row == nullptr) return 3;
+  minrt::BmpWriter bmp(minrt::ByteSink{&write_bytes, nullptr});
+  minrt::jaworski::Tracer<POLICY>(scene).render(minrt::rgba_row_sink_of(bmp), row);
+  return 0;
+}
+
 extern "C" int minrt_entry() {
-  if (general_entry() != 0) return 1;
+  if (general_entry() != 0 || jaworski_entry() != 0) return 1;
   minrt::Arena arena(g_arena, sizeof g_arena);
   minrt::Diagnostic error;
   return static_cast<int>(minrt::render_sld<POLICY>(minrt::ByteSource{&read_byte, nullptr},

@@ -1,0 +1,108 @@
+#include "jaworski_cli.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "core/base/arena.hpp"
+#include "core/image/bmp_writer.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "file_input.hpp"
+#include "formats/jaworski/jaworski_reader.hpp"
+#include "output_file.hpp"
+#include "render/jaworski/tracer.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+constexpr int kExitSceneError = 2;
+constexpr int kExitIoError = 1;
+constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
+
+void append(void* ctx, const uint8_t* p, size_t n) {
+  static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n);
+}
+
+// Parses and renders into `bmp`; false with the message line in `error`.
+template <class M>
+bool render(const std::string& text, const std::string& name, std::string& bmp, std::string& error) {
+  using R = typename M::real;
+  const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
+  const size_t bytes = static_cast<size_t>(capacity) * (sizeof(jaworski::Object<R>) + sizeof(jaworski::Light<R>) +
+                                                        sizeof(jaworski::SurfaceNode<R>) + sizeof(jaworski::Part<R>)) +
+                       4096;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  jaworski::Scene<R> scene;
+  if (!scene.allocate(arena, capacity)) {
+    error = name + ": error: scene does not fit in memory";
+    return false;
+  }
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  jaworski::Reader<M> reader(mem.source(), scene);
+  Diagnostic d;
+  if (!reader.read(d)) {
+    error = name + ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
+    return false;
+  }
+  std::vector<uint8_t> row(static_cast<size_t>(scene.width) * 4);
+  BmpWriter writer(ByteSink{&append, &bmp});
+  jaworski::Tracer<M>(scene).render(rgba_row_sink_of(writer), row.data());
+  return true;
+}
+
+}  // namespace
+
+std::string jaworski_output_name(const std::string& scene_path) {
+  const std::size_t dot = scene_path.rfind('.');
+  const std::size_t slash = scene_path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return scene_path + ".bmp";
+  return scene_path.substr(0, dot + 1) + "bmp";
+}
+
+int run_jaworski_cli(JaworskiCli& cli) {
+  const bool from_stdin = cli.scene_path == "-";
+  const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
+  if (!from_stdin) {
+    std::string why;
+    if (!read_whole_file(cli.scene_path, cli.scene_text, why, kMaxSceneBytes)) {
+      std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", cli.scene_path.c_str(), why.c_str());
+      return kExitSceneError;
+    }
+  }
+  std::string out_path;
+  if (cli.save) {
+    out_path = cli.output_path != nullptr ? cli.output_path : from_stdin ? "-" : jaworski_output_name(cli.scene_path);
+    std::string why;
+    if (!check_output_target(out_path, cli.write_through, why)) {
+      std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
+      return kExitIoError;
+    }
+  }
+  std::string bmp, error;
+  bool ok;
+  const Variant v = cli.variant;
+  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, bmp, error);
+  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, bmp, error);
+  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, bmp, error);
+  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, bmp, error);
+  else ok = render<PortableFloat>(cli.scene_text, shown, bmp, error);
+  if (!ok) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitSceneError;
+  }
+  if (!cli.save) return 0;
+  AtomicOutput output;
+  std::string why;
+  if (!output.open(out_path, cli.write_through, why) ||
+      std::fwrite(bmp.data(), 1, bmp.size(), output.file()) != bmp.size() || !output.commit(why)) {
+    output.discard();
+    std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
+    return kExitIoError;
+  }
+  return 0;
+}
+
+}  // namespace minrt::host

@@ -1,0 +1,158 @@
+// Jaworski's tracer, operation for operation (SPEC.md 3.3): the original
+// uses only + - x / and sqrt in double precision, so with the same order of
+// operations a double build gives its bytes exactly. Hence its own small
+// tracer rather than the general one: no normal flipping, shadow and mirror
+// rays start 1e-5 along the normal, the first object wins ties, a depth of
+// 0 or a miss gives the background, mixtures are summed in file order, and
+// bytes are round-half-to-even of 255 x the clamped value.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/image/row_sink.hpp"
+#include "formats/jaworski/jaworski_scene.hpp"
+
+namespace minrt::jaworski {
+
+template <class M>
+class Tracer {
+  using R = typename M::real;
+  using V = Vec3<R>;
+
+ public:
+  explicit Tracer(const Scene<R>& s) : s_(s) {}
+
+  // One row of RGBA bytes; y = 0 is the bottom row, as the original renders.
+  void render_row(int y, uint8_t* rgba) const {
+    const R sw = s_.canvas_width, sh = s_.canvas_height;
+    const R left = R(-0.5) * sw, bottom = R(-0.5) * sh;
+    const R py = bottom + sh * (M::from_int(y) + R(0.5)) / M::from_int(s_.height);
+    for (int x = 0; x < s_.width; ++x) {
+      const R px = left + sw * (M::from_int(x) + R(0.5)) / M::from_int(s_.width);
+      const V origin{R(0), R(0), -s_.depth};
+      const V c = trace(s_.ray_depth, origin, normalize(V{px, py, s_.depth}));
+      uint8_t* o = rgba + 4 * x;
+      o[0] = to_byte(c.x);
+      o[1] = to_byte(c.y);
+      o[2] = to_byte(c.z);
+      o[3] = 255;
+    }
+  }
+
+  void render(RgbaRowSink sink, uint8_t* row) const {
+    sink.begin(s_.width, s_.height);
+    for (int y = 0; y < s_.height; ++y) {
+      render_row(y, row);
+      sink.row(y, row);
+    }
+    sink.end();
+  }
+
+ private:
+  static constexpr R kEps = static_cast<R>(1e-5);
+
+  // v x (1/|v|), as the original normalises.
+  static V normalize(const V& v) { return v * (R(1) / M::sqrt(dot(v, v))); }
+  // Haskell's max 0 y and min 1 y (a NaN argument gives 0 and NaN).
+  static R max0(R y) { return R(0) <= y ? y : R(0); }
+  static R min1(R y) { return R(1) <= y ? R(1) : y; }
+
+  static uint8_t to_byte(R v) {
+    const R x = R(255) * max0(min1(v));
+    // Round half to even (Haskell's round); x is in [0, 255].
+    const R f = M::floor(x);
+    const R diff = x - f;
+    int32_t i = M::to_int(f);
+    if (diff > R(0.5) || (diff == R(0.5) && (i & 1) != 0)) ++i;
+    return static_cast<uint8_t>(i);
+  }
+
+  // Smallest t > 0 over all objects, the first object on a tie; -1 if none.
+  R closest(const V& o, const V& d, int32_t& hit) const {
+    R best = R(-1);
+    hit = kNone;
+    auto offer = [&](R t, int32_t i) {
+      if (t > R(0) && (hit == kNone || t < best)) {
+        best = t;
+        hit = i;
+      }
+    };
+    for (int32_t i = 0; i < s_.object_count; ++i) {
+      const Object<R>& ob = s_.objects[i];
+      if (ob.kind == ShapeKind::kSphere) {
+        const V oc = o - ob.point;
+        const R doc = dot(d, oc);
+        const R delta = doc * doc - dot(oc, oc) + ob.radius * ob.radius;
+        if (delta < R(0)) continue;
+        const R root = M::sqrt(delta);
+        offer(-doc - root, i);
+        offer(-doc + root, i);
+      } else {
+        offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
+      }
+    }
+    return best;
+  }
+
+  V normal_at(const Object<R>& ob, const V& x) const {
+    return ob.kind == ShapeKind::kSphere ? normalize(x - ob.point) : ob.normal;
+  }
+
+  V trace(int32_t depth, const V& o, const V& d) const {
+    if (depth == 0) return s_.background;
+    int32_t hit;
+    const R t = closest(o, d, hit);
+    if (hit == kNone) return s_.background;
+    const Object<R>& ob = s_.objects[hit];
+    const V x = o + d * t;
+    return surface_color(ob, x, ob.surface, depth, d);
+  }
+
+  V surface_color(const Object<R>& ob, const V& x, int32_t surface, int32_t depth, const V& d) const {
+    const SurfaceNode<R>& node = s_.surfaces[surface];
+    switch (node.s.kind) {
+      case SurfaceKind::kLuminous: return node.color;
+      case SurfaceKind::kDiffusive: {
+        const V n = normal_at(ob, x);
+        V sum{};
+        for (int32_t i = 0; i < s_.light_count; ++i) sum = sum + shadow(s_.lights[i], x, n);
+        return sum * node.color;
+      }
+      case SurfaceKind::kReflective: {
+        const V n = normal_at(ob, x);
+        const V origin = x + n * kEps;
+        const V dir = normalize(d - n * (R(2) * dot(n, d)));
+        return trace(depth - 1, origin, dir);
+      }
+      case SurfaceKind::kMixed: {
+        V acc{};
+        for (int32_t p = node.s.first_part; p != kNone; p = s_.parts[p].next)
+          acc = acc + surface_color(ob, x, s_.parts[p].surface, depth, d) * s_.parts[p].weight;
+        return acc;
+      }
+    }
+    return V{};
+  }
+
+  // What a light gives the point x with normal n: nothing when the nearest
+  // object along the shadow ray blocks it (any, for a directional light;
+  // one nearer than the light, for a spherical one).
+  V shadow(const Light<R>& l, const V& x, const V& n) const {
+    const V origin = x + n * kEps;
+    const V dir = normalize(l.kind == LightKind::kDirectional ? l.vector : l.vector - x);
+    int32_t hit;
+    const R t = closest(origin, dir, hit);
+    if (hit != kNone) {
+      if (l.kind == LightKind::kDirectional) return V{};
+      const V xs = x - l.vector;
+      if (t * t < dot(xs, xs)) return V{};
+    }
+    if (l.kind == LightKind::kDirectional) return l.color * max0(dot(l.vector, n));
+    const V v = l.vector - x;
+    return l.color * (max0(dot(normalize(v), n)) / dot(v, v));
+  }
+
+  const Scene<R>& s_;
+};
+
+}  // namespace minrt::jaworski
