@@ -1,7 +1,8 @@
 // The firmware: reads an SLD scene from the UART, renders it with the
 // portable float math and streams the PPM back, row by row. A scene whose
 // first word starts with a letter is a CS418 file (cs418_board.hpp): its
-// image goes back as a streamed PNG. On a bad scene
+// image goes back as a streamed PNG; one that starts with `#` or a header
+// field of Jaworski's format (jaworski_board.hpp) gets a streamed BMP. On a bad scene
 // or bad arguments it sends one MINRT_ERROR_MARKER line instead and returns
 // a non-zero status, which crt0 hands to the test finisher.
 //
@@ -17,6 +18,7 @@
 #include "core/base/diagnostic.hpp"
 #include "core/base/peek_source.hpp"
 #include "cs418_board.hpp"
+#include "jaworski_board.hpp"
 #include "firmware_args.hpp"
 #include "footprint.hpp"
 #include "core/math/math_portable.hpp"
@@ -190,6 +192,16 @@ extern "C" int main(int argc, char** argv) {
     first = after_textures.first_nonblank();
   }
   minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
+  char word[16];
+  text.first_word(word, sizeof word);
+  if (minrt::fw::is_jaworski_start(first, word)) {
+    const minrt::fw::JaworskiResult r = minrt::fw::render_jaworski(text.source(), output.sink(), arena, error);
+    if (r != minrt::fw::JaworskiResult::kOk) {
+      send_error(uart, error);
+      return r == minrt::fw::JaworskiResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
+    }
+    return MINRT_STATUS_OK;
+  }
   if ((first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z')) {
     const minrt::fw::Cs418Result r =
         minrt::fw::render_cs418(text.source(), output.sink(), arena, options.all_features, textures, error);

@@ -18,19 +18,41 @@ class PeekSource {
   // when more than kKeep blanks come first). The bytes read so far are
   // replayed by source().
   int first_nonblank() {
+    if (first_ != kUnknown) return first_;
+    first_ = -1;
     while (kept_ < kKeep) {
       const int c = in_.get();
-      if (c < 0) return -1;
+      if (c < 0) break;
       buf_[kept_++] = static_cast<uint8_t>(c);
-      if (c != ' ' && c != '\t' && c != '\r' && c != '\n') return c;
+      if (c != ' ' && c != '\t' && c != '\r' && c != '\n') {
+        first_ = c;
+        break;
+      }
     }
-    return -1;
+    return first_;
+  }
+
+  // The first word: the letters from the first non-blank byte on, lower
+  // case, at most `cap - 1` of them, into `out` (empty when the input does
+  // not start with a letter). Replayed by source() like the rest.
+  void first_word(char* out, int cap) {
+    int n = 0;
+    int c = first_nonblank();
+    while (((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) && n + 1 < cap) {
+      out[n++] = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+      if (kept_ >= kKeep) break;
+      c = in_.get();
+      if (c < 0) break;
+      buf_[kept_++] = static_cast<uint8_t>(c);
+    }
+    out[n] = 0;
   }
 
   ByteSource source() { return ByteSource{&read_fn, this}; }
 
  private:
   static constexpr int kKeep = 256;
+  static constexpr int kUnknown = -2;
   static int read_fn(void* ctx) {
     auto* self = static_cast<PeekSource*>(ctx);
     if (self->pos_ < self->kept_) return self->buf_[self->pos_++];
@@ -41,6 +63,7 @@ class PeekSource {
   uint8_t buf_[kKeep];
   int kept_ = 0;
   int pos_ = 0;
+  int first_ = kUnknown;
 };
 
 }  // namespace minrt

@@ -3,6 +3,7 @@
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
 #include "general_cli.hpp"
+#include "jaworski_cli.hpp"
 #include "output_file.hpp"
 #include "scene_format.hpp"
 
@@ -306,8 +307,19 @@ int run(const Options& options) {
   // A CS418 scene (the first word decides, as in minrt): the board answers
   // with a PNG of the size on the png line, written by default to the name
   // given there, like the course's program.
-  const bool cs418 =
-      minrt::host::detect_scene_format(o.scene, scene.substr(0, 4096)) == minrt::host::SceneFormat::kCs418;
+  const minrt::host::SceneFormat format = minrt::host::detect_scene_format(o.scene, scene.substr(0, 4096));
+  const bool cs418 = format == minrt::host::SceneFormat::kCs418;
+  // A Jaworski scene: the board answers with a BMP, by default written to
+  // the scene's name with .bmp, like the original program.
+  const bool jaworski = format == minrt::host::SceneFormat::kJaworski;
+  if (jaworski) {
+    if (o.protocol != Protocol::kRaw)
+      return fail(kExitUsage, "Jaworski scenes go over --protocol raw; course and framed carry SLD only, for now");
+    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to Jaworski scenes");
+    if (!o.output_given) o.output = minrt::host::jaworski_output_name(o.scene);
+    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
+  }
   int png_width = 0, png_height = 0;
   std::string texture_preamble;  // CS418: decoded textures, sent ahead of the scene
   if (cs418) {
@@ -335,7 +347,7 @@ int run(const Options& options) {
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
   // refuses such a scene with minrt's message, so nothing is sent.
-  if (!cs418 && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
+  if (!cs418 && !jaworski && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
     std::string words;
     if (!sld_to_course_words(scene, false, words, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
@@ -401,7 +413,9 @@ int run(const Options& options) {
   Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
               &progress};
   TransferResult r;
-  if (cs418) {
+  if (jaworski) {
+    r = run_raw_bmp(ex, scene);
+  } else if (cs418) {
     r = run_raw_png(ex, texture_preamble + scene, png_width, png_height);
   } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);

@@ -141,6 +141,14 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
 
 template TransferResult exchange<PpmReceiver>(Exchange&, const std::string&, PpmReceiver&);
 template TransferResult exchange<PngReceiver>(Exchange&, const std::string&, PngReceiver&);
+template TransferResult exchange<BmpReceiver>(Exchange&, const std::string&, BmpReceiver&);
+
+TransferResult run_raw_bmp(Exchange& ex, const std::string& scene) {
+  std::string out = scene;
+  out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
+  BmpReceiver rx;
+  return exchange(ex, out, rx);
+}
 
 TransferResult run_raw_png(Exchange& ex, const std::string& scene, int width, int height) {
   std::string out = scene;

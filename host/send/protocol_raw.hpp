@@ -8,6 +8,7 @@
 #include <string>
 
 #include "port.hpp"
+#include "bmp_receiver.hpp"
 #include "png_receiver.hpp"
 #include "ppm_receiver.hpp"
 #include "progress.hpp"
@@ -52,5 +53,8 @@ TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& 
 // A CS418 scene: the reply is a PNG stream of WIDTH x HEIGHT (the scene's
 // png line), checked chunk by chunk.
 TransferResult run_raw_png(Exchange& ex, const std::string& scene, int width, int height);
+
+// A Jaworski scene: the reply is a 32-bit BMP.
+TransferResult run_raw_bmp(Exchange& ex, const std::string& scene);
 
 }  // namespace minrt::send

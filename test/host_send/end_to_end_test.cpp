@@ -237,3 +237,25 @@ TEST_CASE("host-send: textures too large for the board are refused before sendin
   REQUIRE(minrt::host::read_png(out, img, why));
   CHECK(img.width == 12);
 }
+
+TEST_CASE("host-send sends Jaworski scenes to firmware-sim and writes the BMP it sends back", "[e2e][firmware][jaworski]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string jw = hs_test::shared_dir() + "/formats/jaworski/";
+  for (const char* name : {"basic-diffuse-sphere", "mixed-nested-deep", "syntax-case-comments"}) {
+    const std::string scene = jw + name + ".txt";
+    const std::string got = dir.file(std::string(name) + "-board.bmp");
+    const std::string want = dir.file(std::string(name) + "-host.bmp");
+    const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, scene, "-o", got});
+    INFO(name << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    REQUIRE(run({HS_MINRT, "-q", "--precision", "float", "--shims", "portable", scene, "-o", want}).status == 0);
+    CHECK(hs_test::read_file(got) == hs_test::read_file(want));
+  }
+  const std::string out = dir.file("bad.bmp");
+  const RunResult bad = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
+                             jw + "bad/bad-unknown-colour.txt", "-o", out});
+  CHECK(bad.status == 3);
+  CHECK(bad.err.find("the board reported an error: 6:26: expected a colour") != std::string::npos);
+  CHECK(!hs_test::file_exists(out));
+}

@@ -1,0 +1,108 @@
+#include "bmp_receiver.hpp"
+
+#include <cstdio>
+
+#include <minrt/serial_protocol.h>
+
+namespace minrt::send {
+
+namespace {
+constexpr int kMaxSide = 16384;
+std::uint32_t le32(const std::uint8_t* p) {
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+}  // namespace
+
+bool BmpReceiver::fail(std::string msg) {
+  state_ = State::kFailed;
+  message_ = std::move(msg);
+  return false;
+}
+
+int BmpReceiver::rows_complete() const {
+  return width_ > 0 ? static_cast<int>(pixels_seen_ / (4u * static_cast<std::uint64_t>(width_))) : 0;
+}
+
+std::size_t BmpReceiver::feed(const std::uint8_t* data, std::size_t size) {
+  std::size_t i = 0;
+  while (i < size && !done() && !failed() && !firmware_error()) {
+    if (state_ == State::kPixels) {  // the bulk of the image: take what is there
+      const std::uint64_t want = pixel_bytes_ - pixels_seen_;
+      const std::size_t n = static_cast<std::size_t>(want < size - i ? want : size - i);
+      pixels_seen_ += n;
+      bytes_ += n;
+      i += n;
+      if (pixels_seen_ == pixel_bytes_) state_ = State::kDone;
+      continue;
+    }
+    const bool more = step(data[i]);
+    ++i;
+    ++bytes_;
+    if (!more) break;
+  }
+  return i;
+}
+
+bool BmpReceiver::header_done() {
+  const std::uint8_t* h = header_;
+  width_ = static_cast<int>(le32(h + 18));
+  height_ = static_cast<int>(le32(h + 22));
+  if (h[0] != 'B' || h[1] != 'M' || le32(h + 10) != 54 || le32(h + 14) != 40 || h[28] != 32 || width_ < 1 ||
+      height_ < 1 || width_ > kMaxSide || height_ > kMaxSide)
+    return fail("the board's BMP header is not the one the firmware writes: the line damaged it");
+  pixel_bytes_ = 4u * static_cast<std::uint64_t>(width_) * static_cast<std::uint64_t>(height_);
+  if (le32(h + 2) != 54 + pixel_bytes_) return fail("the board's BMP header gives a wrong file size");
+  state_ = State::kPixels;
+  return true;
+}
+
+bool BmpReceiver::step(std::uint8_t c) {
+  switch (state_) {
+    case State::kStart:
+      if (c == static_cast<std::uint8_t>(MINRT_ERROR_MARKER[0])) {
+        state_ = State::kErrorLine;
+        error_line_.start(c);
+        return true;
+      }
+      if (c != 'B') {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "reply does not start like a BMP or an error line (first byte 0x%02x)", c);
+        return fail(buf);
+      }
+      state_ = State::kHeader;
+      header_[at_++] = c;
+      return true;
+    case State::kHeader:
+      header_[at_++] = c;
+      if (at_ == sizeof header_) return header_done();
+      return true;
+    case State::kErrorLine:
+      switch (error_line_.feed(c)) {
+        case ErrorLine::Step::kMore: return true;
+        case ErrorLine::Step::kMessage:
+          message_ = error_line_.text();
+          state_ = State::kFirmwareError;
+          return false;
+        case ErrorLine::Step::kNotMarker: return fail("unexpected reply line: " + error_line_.text());
+        case ErrorLine::Step::kTooLong: return fail("error line from the board is too long");
+      }
+      return false;
+    default:
+      return false;
+  }
+}
+
+void BmpReceiver::finish() {
+  if (done() || failed() || firmware_error()) return;
+  char buf[160];
+  if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
+  else if (state_ == State::kErrorLine)
+    std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", error_line_.text().c_str());
+  else
+    std::snprintf(buf, sizeof buf, "BMP is truncated: %d of %d rows after %llu bytes", rows_complete(), height_,
+                  static_cast<unsigned long long>(bytes_));
+  fail(buf);
+}
+
+}  // namespace minrt::send

@@ -1,0 +1,58 @@
+#include "jaworski_board.hpp"
+
+#include "core/image/bmp_writer.hpp"
+#include "core/math/math_portable.hpp"
+#include "core/math/math_rv32f.hpp"
+#include "formats/jaworski/jaworski_reader.hpp"
+#include "render/jaworski/tracer.hpp"
+
+namespace minrt::fw {
+
+namespace {
+
+#if MINRT_FW_HW_SQRT
+using Math = PortableFloatHwSqrt;
+#else
+using Math = PortableFloat;
+#endif
+
+// Items (objects, lights, surfaces, mixture parts) a scene may have on the
+// board: about 0.4 MB of arena in float.
+constexpr int32_t kCapacity = 4096;
+
+bool same(const char* a, const char* b) {
+  while (*a != 0 && *a == *b) ++a, ++b;
+  return *a == *b;
+}
+
+}  // namespace
+
+bool is_jaworski_start(int first_byte, const char* first_word) {
+  if (first_byte == '#') return true;  // neither SLD nor CS418 has comments
+  static constexpr const char* kWords[] = {"imwidth", "imheight", "canvwidth", "canvheight", "depth",
+                                           "bgcolor", "raydepth", "lights",    "objects"};
+  for (const char* w : kWords)
+    if (same(first_word, w)) return true;
+  return false;
+}
+
+JaworskiResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+  using R = Math::real;
+  jaworski::Scene<R> scene;
+  if (!scene.allocate(arena, kCapacity)) {
+    error.text("no room for the scene tables");
+    return JaworskiResult::kOutOfMemory;
+  }
+  jaworski::Reader<Math> reader(in, scene);
+  if (!reader.read(error)) return JaworskiResult::kSceneError;
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (row == nullptr) {
+    error.text("image row does not fit in the board's memory");
+    return JaworskiResult::kOutOfMemory;
+  }
+  BmpWriter bmp(out);
+  jaworski::Tracer<Math>(scene).render(rgba_row_sink_of(bmp), row);
+  return JaworskiResult::kOk;
+}
+
+}  // namespace minrt::fw
