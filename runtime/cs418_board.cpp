@@ -1,20 +1,13 @@
 #include "cs418_board.hpp"
 
 #include "core/image/png_writer.hpp"
-#include "core/math/math_portable.hpp"
-#include "core/math/math_rv32f.hpp"
+#include "board_math.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "render/general/render.hpp"
 
 namespace minrt::fw {
 
 namespace {
-
-#if MINRT_FW_HW_SQRT
-using Math = PortableFloatHwSqrt;
-#else
-using Math = PortableFloat;
-#endif
 
 int32_t find_texture(void* ctx, const char* name, Diagnostic& error) {
   const auto* table = static_cast<const send::textures::Table*>(ctx);

@@ -1,20 +1,13 @@
 #include "jaworski_board.hpp"
 
 #include "core/image/bmp_writer.hpp"
-#include "core/math/math_portable.hpp"
-#include "core/math/math_rv32f.hpp"
+#include "board_math.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "render/jaworski/tracer.hpp"
 
 namespace minrt::fw {
 
 namespace {
-
-#if MINRT_FW_HW_SQRT
-using Math = PortableFloatHwSqrt;
-#else
-using Math = PortableFloat;
-#endif
 
 // Items (objects, lights, surfaces, mixture parts) a scene may have on the
 // board: about 0.4 MB of arena in float.

@@ -21,8 +21,7 @@
 #include "jaworski_board.hpp"
 #include "firmware_args.hpp"
 #include "footprint.hpp"
-#include "core/math/math_portable.hpp"
-#include "core/math/math_rv32f.hpp"
+#include "board_math.hpp"
 #include "ns16550.hpp"
 #include "program_loader.hpp"
 #include "protocol/protocol_course_board.hpp"
@@ -32,14 +31,7 @@
 
 namespace {
 
-// PortableFloat as the host's `--shims portable`; with MINRT_FW_HW_SQRT the
-// square root is fsqrt.s (same bits, see core/math/math_rv32f.hpp) where the ISA
-// has it.
-#if MINRT_FW_HW_SQRT
-using Math = minrt::PortableFloatHwSqrt;
-#else
-using Math = minrt::PortableFloat;
-#endif
+using Math = minrt::fw::Math;  // board_math.hpp
 
 // The scene and the tracer's tables: static, so their size shows in .bss.
 minrt::RenderState<Math> g_state;

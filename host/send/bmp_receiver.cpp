@@ -77,17 +77,15 @@ bool BmpReceiver::step(std::uint8_t c) {
       header_[at_++] = c;
       if (at_ == sizeof header_) return header_done();
       return true;
-    case State::kErrorLine:
-      switch (error_line_.feed(c)) {
-        case ErrorLine::Step::kMore: return true;
-        case ErrorLine::Step::kMessage:
-          message_ = error_line_.text();
-          state_ = State::kFirmwareError;
-          return false;
-        case ErrorLine::Step::kNotMarker: return fail("unexpected reply line: " + error_line_.text());
-        case ErrorLine::Step::kTooLong: return fail("error line from the board is too long");
-      }
+    case State::kErrorLine: {
+      bool firmware = false;
+      std::string message;
+      if (error_line_.step(c, firmware, message)) return true;
+      if (!firmware) return fail(message);
+      message_ = message;
+      state_ = State::kFirmwareError;
       return false;
+    }
     default:
       return false;
   }

@@ -32,6 +32,28 @@ class ErrorLine {
   }
   const std::string& text() const { return text_; }
 
+  // For the receivers: feeds `c`; true while the line goes on. At its end
+  // `firmware` says whether it was the firmware's message (then `message`
+  // is that message) or something else (then `message` says what).
+  bool step(std::uint8_t c, bool& firmware, std::string& message) {
+    switch (feed(c)) {
+      case Step::kMore: return true;
+      case Step::kMessage:
+        firmware = true;
+        message = text_;
+        return false;
+      case Step::kNotMarker:
+        firmware = false;
+        message = "unexpected reply line: " + text_;
+        return false;
+      case Step::kTooLong:
+        firmware = false;
+        message = "error line from the board is too long";
+        return false;
+    }
+    return false;
+  }
+
  private:
   static constexpr std::size_t kMaxLength = 4096;
   std::string text_;

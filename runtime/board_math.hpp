@@ -1,0 +1,17 @@
+// The firmware's one math policy, for every format: PortableFloat as the
+// host's `--shims portable`; with MINRT_FW_HW_SQRT the square root is
+// fsqrt.s (the same bits, core/math/math_rv32f.hpp) where the ISA has it.
+#pragma once
+
+#include "core/math/math_portable.hpp"
+#include "core/math/math_rv32f.hpp"
+
+namespace minrt::fw {
+
+#if MINRT_FW_HW_SQRT
+using Math = PortableFloatHwSqrt;
+#else
+using Math = PortableFloat;
+#endif
+
+}  // namespace minrt::fw
