@@ -9,6 +9,7 @@
 
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
+#include "image_window.hpp"
 #include "output_file.hpp"
 
 namespace minrt::host {
@@ -140,6 +141,8 @@ int run_cs418_cli(GeneralCli& cli) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
   }
+  if (cli.show && !show_image(result.image, "minrt: " + shown, why))
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   return 0;
 }
 

@@ -16,6 +16,7 @@ struct GeneralCli {
   bool write_through = false;
   bool quiet = false;
   bool stats = false;  // print the path and features on standard error
+  bool show = false;   // --show: the image in a window afterwards
   GeneralOptions options;
 };
 

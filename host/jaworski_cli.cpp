@@ -9,6 +9,7 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "file_input.hpp"
+#include "image_window.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "output_file.hpp"
 #include "render/jaworski/tracer.hpp"
@@ -25,9 +26,11 @@ void append(void* ctx, const uint8_t* p, size_t n) {
   static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n);
 }
 
-// Parses and renders into `bmp`; false with the message line in `error`.
+// Parses and renders into `bmp` (and `image`, top row first, for the
+// window); false with the message line in `error`.
 template <class M>
-bool render(const std::string& text, const std::string& name, std::string& bmp, std::string& error) {
+bool render(const std::string& text, const std::string& name, std::string& bmp, RgbaImage& image,
+            std::string& error) {
   using R = typename M::real;
   const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
   const size_t bytes = static_cast<size_t>(capacity) * (sizeof(jaworski::Object<R>) + sizeof(jaworski::Light<R>) +
@@ -50,6 +53,21 @@ bool render(const std::string& text, const std::string& name, std::string& bmp, 
   std::vector<uint8_t> row(static_cast<size_t>(scene.width) * 4);
   BmpWriter writer(ByteSink{&append, &bmp});
   jaworski::Tracer<M>(scene).render(rgba_row_sink_of(writer), row.data());
+  // The BMP holds the rows bottom first; the window wants them top first.
+  image.width = scene.width;
+  image.height = scene.height;
+  image.rgba.resize(static_cast<size_t>(scene.width) * scene.height * 4);
+  const size_t stride = static_cast<size_t>(scene.width) * 4;
+  for (int y = 0; y < scene.height; ++y) {
+    const uint8_t* src = reinterpret_cast<const uint8_t*>(bmp.data()) + 54 + stride * (scene.height - 1 - y);
+    uint8_t* dst = image.rgba.data() + stride * y;
+    for (int x = 0; x < scene.width; ++x) {
+      dst[4 * x] = src[4 * x + 2];
+      dst[4 * x + 1] = src[4 * x + 1];
+      dst[4 * x + 2] = src[4 * x];
+      dst[4 * x + 3] = src[4 * x + 3];
+    }
+  }
   return true;
 }
 
@@ -82,26 +100,35 @@ int run_jaworski_cli(JaworskiCli& cli) {
     }
   }
   std::string bmp, error;
+  RgbaImage image;
   bool ok;
   const Variant v = cli.variant;
-  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, bmp, error);
-  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, bmp, error);
-  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, bmp, error);
-  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, bmp, error);
-  else ok = render<PortableFloat>(cli.scene_text, shown, bmp, error);
+  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, bmp, image, error);
+  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, bmp, image, error);
+  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, bmp, image, error);
+  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, bmp, image, error);
+  else ok = render<PortableFloat>(cli.scene_text, shown, bmp, image, error);
   if (!ok) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;
   }
-  if (!cli.save) return 0;
-  AtomicOutput output;
   std::string why;
+  auto show = [&] {
+    if (cli.show && !show_image(image, "minrt: " + shown, why))
+      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  };
+  if (!cli.save) {
+    show();
+    return 0;
+  }
+  AtomicOutput output;
   if (!output.open(out_path, cli.write_through, why) ||
       std::fwrite(bmp.data(), 1, bmp.size(), output.file()) != bmp.size() || !output.commit(why)) {
     output.discard();
     std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
     return kExitIoError;
   }
+  show();
   return 0;
 }
 

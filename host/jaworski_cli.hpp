@@ -14,6 +14,7 @@ struct JaworskiCli {
   std::string scene_text;  // already read when scene_path is "-"
   const char* output_path = nullptr;
   bool save = true;        // -n turns it off
+  bool show = false;       // -s/--show: the image in a window afterwards
   bool write_through = false;
   Variant variant;
 };

@@ -51,6 +51,9 @@ void print_help(std::FILE* f) {
       "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
       "  -n, --no-save            Jaworski: render without saving the image\n"
+      "  -s, --show               CS418, Jaworski: show the image in a window afterwards\n"
+      "                           (ESC, q or the close button quit; without a display\n"
+      "                           a one-line warning, and the file is still written)\n"
       "CS418 only:\n"
       "  --threads N              render rows on N threads (default: every core;\n"
       "                           the image is the same for any N)\n"
@@ -96,6 +99,7 @@ int main(int argc, char** argv) {
   minrt::host::SceneFormat scene_format = minrt::host::SceneFormat::kAuto;
   minrt::host::GeneralCli general;
   bool no_save = false;
+  bool show = false;
 
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -150,6 +154,8 @@ int main(int argc, char** argv) {
       if (!minrt::parse_decimal(v, 0, 0xffffffffu, n))
         usage_error(std::string("bad --seed '") + v + "': expected 0..4294967295");
       general.options.seed = n;
+    } else if (arg == "-s" || arg == "--show") {
+      show = true;
     } else if (arg == "-n" || arg == "--no-save") {
       no_save = true;
     } else if (arg == "--all-features") {
@@ -208,6 +214,7 @@ int main(int argc, char** argv) {
     j.save = !no_save;
     j.write_through = write_through;
     j.variant = variant;
+    j.show = show;
     return minrt::host::run_jaworski_cli(j);
   }
   if (scene_format == minrt::host::SceneFormat::kCs418) {
@@ -217,6 +224,7 @@ int main(int argc, char** argv) {
     general.write_through = write_through;
     general.quiet = quiet;
     general.options.variant = variant;
+    general.show = show;
     return minrt::host::run_cs418_cli(general);
   }
 
