@@ -13,6 +13,8 @@
 
 #include "core/base/text_numbers.hpp"
 #include "general_cli.hpp"
+#include "image_load.hpp"
+#include "image_window.hpp"
 #include "jaworski_cli.hpp"
 #include "output_file.hpp"
 #include "scene_format.hpp"
@@ -51,7 +53,7 @@ void print_help(std::FILE* f) {
       "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
       "  -n, --no-save            Jaworski: render without saving the image\n"
-      "  -s, --show               CS418, Jaworski: show the image in a window afterwards\n"
+      "  -s, --show               show the image in a window afterwards (SLD: with -o FILE)\n"
       "                           (ESC, q or the close button quit; without a display\n"
       "                           a one-line warning, and the file is still written)\n"
       "CS418 only:\n"
@@ -296,6 +298,14 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
       return kExitIoError;
     }
+  }
+  if (show) {
+    minrt::host::RgbaImage image;
+    std::string why = "the image went to standard output (give -o FILE to see it)";
+    if (output_path == nullptr || std::string(output_path) == "-" ||
+        !minrt::host::load_image(output_path, image, why) ||
+        !minrt::host::show_image(image, std::string("minrt: ") + display_name, why))
+      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   }
   return 0;
 }

@@ -3,6 +3,8 @@
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
 #include "general_cli.hpp"
+#include "image_load.hpp"
+#include "image_window.hpp"
 #include "jaworski_cli.hpp"
 #include "output_file.hpp"
 #include "scene_format.hpp"
@@ -124,6 +126,8 @@ void print_help() {
       "  --first-byte-timeout S   wait for the reply at most S seconds (default 120)\n"
       "  --idle-timeout S         longest silence within the reply (default 30)\n"
       "  --progress               draw the progress line even when stderr is no terminal\n"
+      "  -s, --show               show the received image in a window (SDL2) once it is\n"
+      "                           written; without a display a one-line warning\n"
       "  -q, --quiet              no summary line\n"
       "  -h, --help, --version\n"
       "\n"
@@ -260,6 +264,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
       o.quiet = true;
     } else if (a == "--progress") {
       o.progress_forced = true;
+    } else if (a == "-s" || a == "--show") {
+      o.show = true;
     } else if (a.size() > 1 && a[0] == '-') {
       error = "unknown option '" + a + "'";
       return ParseResult::kError;
@@ -468,6 +474,17 @@ int run(const Options& options) {
       std::snprintf(line + n, sizeof line - n, ", %d rows re-sent", r.retransmitted_rows);
     std::fprintf(stderr, "%s\n", line);
     std::fprintf(stderr, "host-send: sha256 %s\n", digest.c_str());
+  }
+  if (o.show) {
+    // The image as written (PPM, PNG or BMP), in a window.
+    minrt::host::RgbaImage shown;
+    std::string why2;
+    if (o.output == "-") {
+      std::fprintf(stderr, "host-send: warning: not showing the image: it went to standard output\n");
+    } else if (!minrt::host::load_image(o.output, shown, why2) ||
+               !minrt::host::show_image(shown, "host-send: " + o.output, why2)) {
+      std::fprintf(stderr, "host-send: warning: not showing the image: %s\n", why2.c_str());
+    }
   }
   if (!o.verify_ref.empty()) {
     Image got;

@@ -34,6 +34,7 @@ struct Options {
   bool list = false;
   bool quiet = false;
   bool progress_forced = false;  // --progress: draw even without a terminal
+  bool show = false;             // --show: the received image in a window
 };
 
 enum class ParseResult { kRun, kHelp, kVersion, kError };
