@@ -1,6 +1,9 @@
 #include "jaworski_cli.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <thread>
 #include <memory>
 #include <vector>
 
@@ -29,7 +32,7 @@ void append(void* ctx, const uint8_t* p, size_t n) {
 // Parses and renders into `bmp` (and `image`, top row first, for the
 // window); false with the message line in `error`.
 template <class M>
-bool render(const std::string& text, const std::string& name, std::string& bmp, RgbaImage& image,
+bool render(const std::string& text, const std::string& name, int threads, std::string& bmp, RgbaImage& image,
             std::string& error) {
   using R = typename M::real;
   const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
@@ -50,24 +53,32 @@ bool render(const std::string& text, const std::string& name, std::string& bmp, 
     error = name + ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
     return false;
   }
-  std::vector<uint8_t> row(static_cast<size_t>(scene.width) * 4);
+  // Rows are independent: render them on every core into `rows` (bottom row
+  // first, as the tracer counts them), then stream them to the BMP writer.
+  const size_t stride = static_cast<size_t>(scene.width) * 4;
+  std::vector<uint8_t> rows(stride * static_cast<size_t>(scene.height));
+  const jaworski::Tracer<M> tracer(scene);
+  if (threads < 1) threads = static_cast<int>(std::thread::hardware_concurrency());
+  if (threads < 1) threads = 1;
+  if (threads > scene.height) threads = scene.height;
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int y; (y = next.fetch_add(1)) < scene.height;) tracer.render_row(y, rows.data() + stride * y);
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
   BmpWriter writer(ByteSink{&append, &bmp});
-  jaworski::Tracer<M>(scene).render(rgba_row_sink_of(writer), row.data());
-  // The BMP holds the rows bottom first; the window wants them top first.
+  writer.begin(scene.width, scene.height);
+  for (int y = 0; y < scene.height; ++y) writer.row(y, rows.data() + stride * y);
+  writer.end();
+  // The window wants the rows top first.
   image.width = scene.width;
   image.height = scene.height;
-  image.rgba.resize(static_cast<size_t>(scene.width) * scene.height * 4);
-  const size_t stride = static_cast<size_t>(scene.width) * 4;
-  for (int y = 0; y < scene.height; ++y) {
-    const uint8_t* src = reinterpret_cast<const uint8_t*>(bmp.data()) + 54 + stride * (scene.height - 1 - y);
-    uint8_t* dst = image.rgba.data() + stride * y;
-    for (int x = 0; x < scene.width; ++x) {
-      dst[4 * x] = src[4 * x + 2];
-      dst[4 * x + 1] = src[4 * x + 1];
-      dst[4 * x + 2] = src[4 * x];
-      dst[4 * x + 3] = src[4 * x + 3];
-    }
-  }
+  image.rgba.resize(rows.size());
+  for (int y = 0; y < scene.height; ++y)
+    std::copy_n(rows.data() + stride * (scene.height - 1 - y), stride, image.rgba.data() + stride * y);
   return true;
 }
 
@@ -103,11 +114,11 @@ int run_jaworski_cli(JaworskiCli& cli) {
   RgbaImage image;
   bool ok;
   const Variant v = cli.variant;
-  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, bmp, image, error);
-  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, bmp, image, error);
-  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, bmp, image, error);
-  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, bmp, image, error);
-  else ok = render<PortableFloat>(cli.scene_text, shown, bmp, image, error);
+  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, cli.threads, bmp, image, error);
+  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, cli.threads, bmp, image, error);
+  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, cli.threads, bmp, image, error);
+  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, cli.threads, bmp, image, error);
+  else ok = render<PortableFloat>(cli.scene_text, shown, cli.threads, bmp, image, error);
   if (!ok) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;

@@ -15,6 +15,7 @@ struct JaworskiCli {
   const char* output_path = nullptr;
   bool save = true;        // -n turns it off
   bool show = false;       // -s/--show: the image in a window afterwards
+  int threads = 0;         // --threads (0: every core); the same bytes for any count
   bool write_through = false;
   Variant variant;
 };

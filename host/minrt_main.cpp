@@ -56,9 +56,9 @@ void print_help(std::FILE* f) {
       "  -s, --show               show the image in a window afterwards (SLD: with -o FILE)\n"
       "                           (ESC, q or the close button quit; without a display\n"
       "                           a one-line warning, and the file is still written)\n"
+      "  --threads N              CS418, Jaworski: render rows on N threads (default:\n"
+      "                           every core; the image is the same for any N)\n"
       "CS418 only:\n"
-      "  --threads N              render rows on N threads (default: every core;\n"
-      "                           the image is the same for any N)\n"
       "  --seed N                 random numbers for aa, dof, roughness, gi (default 1)\n"
       "  --all-features           render on the path with every feature compiled in\n"
       "                           (for measuring what the specialised paths save)\n"
@@ -217,6 +217,7 @@ int main(int argc, char** argv) {
     j.write_through = write_through;
     j.variant = variant;
     j.show = show;
+    j.threads = general.options.threads;
     return minrt::host::run_jaworski_cli(j);
   }
   if (scene_format == minrt::host::SceneFormat::kCs418) {

@@ -82,6 +82,11 @@ TEST_CASE("Jaworski: the double build writes the original's 24 BMPs byte for byt
     INFO(scene << ": " << r.err);
     REQUIRE(r.status == 0);
     CHECK(minrt::host::sha256_hex(minrt::test::read_file(out)) == sha);
+    // Rows rendered on one or three threads: the same bytes.
+    for (const char* threads : {"1", "3"}) {
+      REQUIRE(run_minrt(std::string("-q --threads ") + threads + " -o '" + out + "' '" + jw_dir() + scene + "'").status == 0);
+      CHECK(minrt::host::sha256_hex(minrt::test::read_file(out)) == sha);
+    }
     std::remove(out.c_str());
     ++n;
   }
