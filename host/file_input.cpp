@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 namespace minrt::host {
@@ -47,6 +48,14 @@ bool read_whole_file(const std::string& path, std::string& out, std::string& err
   }
   ::close(fd);
   return true;
+}
+
+bool read_scene_file(const std::string& path, std::string& text, std::size_t max_bytes) {
+  if (path == "-") return true;
+  std::string why;
+  if (read_whole_file(path, text, why, max_bytes)) return true;
+  std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", path.c_str(), why.c_str());
+  return false;
 }
 
 }  // namespace minrt::host

@@ -14,4 +14,9 @@ namespace minrt::host {
 bool read_whole_file(const std::string& path, std::string& out, std::string& error,
                      std::size_t max_bytes = static_cast<std::size_t>(-1));
 
+// minrt's scene files: reads `path` (unless it is "-", whose text the caller
+// already has) into `text`; on failure prints "minrt: error: cannot read
+// PATH: REASON" and returns false.
+bool read_scene_file(const std::string& path, std::string& text, std::size_t max_bytes);
+
 }  // namespace minrt::host

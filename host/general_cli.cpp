@@ -78,13 +78,7 @@ std::string cs418_output_name(const std::string& text) {
 int run_cs418_cli(GeneralCli& cli) {
   const bool from_stdin = cli.scene_path == "-";
   const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
-  if (!from_stdin) {
-    std::string why;
-    if (!read_whole_file(cli.scene_path, cli.scene_text, why, kMaxSceneBytes)) {
-      std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", cli.scene_path.c_str(), why.c_str());
-      return kExitSceneError;
-    }
-  }
+  if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
   std::string base_dir;
   if (!from_stdin) {
     const std::size_t slash = cli.scene_path.rfind('/');

@@ -29,10 +29,10 @@ void append(void* ctx, const uint8_t* p, size_t n) {
   static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n);
 }
 
-// Parses and renders into `bmp` (and `image`, top row first, for the
-// window); false with the message line in `error`.
+// Parses and renders into `bmp` (and, when `image` is given, a top-first
+// copy for the window); false with the message line in `error`.
 template <class M>
-bool render(const std::string& text, const std::string& name, int threads, std::string& bmp, RgbaImage& image,
+bool render(const std::string& text, const std::string& name, int threads, std::string& bmp, RgbaImage* image,
             std::string& error) {
   using R = typename M::real;
   const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
@@ -73,12 +73,13 @@ bool render(const std::string& text, const std::string& name, int threads, std::
   writer.begin(scene.width, scene.height);
   for (int y = 0; y < scene.height; ++y) writer.row(y, rows.data() + stride * y);
   writer.end();
-  // The window wants the rows top first.
-  image.width = scene.width;
-  image.height = scene.height;
-  image.rgba.resize(rows.size());
-  for (int y = 0; y < scene.height; ++y)
-    std::copy_n(rows.data() + stride * (scene.height - 1 - y), stride, image.rgba.data() + stride * y);
+  if (image != nullptr) {  // the window wants the rows top first
+    image->width = scene.width;
+    image->height = scene.height;
+    image->rgba.resize(rows.size());
+    for (int y = 0; y < scene.height; ++y)
+      std::copy_n(rows.data() + stride * (scene.height - 1 - y), stride, image->rgba.data() + stride * y);
+  }
   return true;
 }
 
@@ -94,13 +95,7 @@ std::string jaworski_output_name(const std::string& scene_path) {
 int run_jaworski_cli(JaworskiCli& cli) {
   const bool from_stdin = cli.scene_path == "-";
   const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
-  if (!from_stdin) {
-    std::string why;
-    if (!read_whole_file(cli.scene_path, cli.scene_text, why, kMaxSceneBytes)) {
-      std::fprintf(stderr, "minrt: error: cannot read %s: %s\n", cli.scene_path.c_str(), why.c_str());
-      return kExitSceneError;
-    }
-  }
+  if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
   std::string out_path;
   if (cli.save) {
     out_path = cli.output_path != nullptr ? cli.output_path : from_stdin ? "-" : jaworski_output_name(cli.scene_path);
@@ -112,13 +107,14 @@ int run_jaworski_cli(JaworskiCli& cli) {
   }
   std::string bmp, error;
   RgbaImage image;
+  RgbaImage* for_window = cli.show ? &image : nullptr;
   bool ok;
   const Variant v = cli.variant;
-  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, cli.threads, bmp, image, error);
-  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, cli.threads, bmp, image, error);
-  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, cli.threads, bmp, image, error);
-  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, cli.threads, bmp, image, error);
-  else ok = render<PortableFloat>(cli.scene_text, shown, cli.threads, bmp, image, error);
+  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
+  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
+  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
+  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
+  else ok = render<PortableFloat>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
   if (!ok) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;
