@@ -7,6 +7,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # One package a line, so that changes to the list merge cleanly.
 packages=(
   cmake make g++ pkg-config
+  ccache                    # rebuilds in other clones reuse objects
   clang lld llvm
   libclang-rt-14-dev        # sanitizers and libFuzzer
   catch2
