@@ -9,17 +9,20 @@
 #include <minrt/memory_map.h>
 
 #include "finisher.hpp"
+#include "memory_map.hpp"
 #include "uart.hpp"
 
 namespace fwsim {
 
+// The default RAM base (the board's); a run may move RAM (memory_map.hpp).
 inline constexpr uint32_t kRamBase = MINRT_RAM_BASE;
 
 class Bus {
  public:
   enum class Result : uint8_t { Ok, Fault, Misaligned, Stop };
 
-  explicit Bus(uint32_t ram_size);
+  explicit Bus(const MemoryMap& map);
+  explicit Bus(uint32_t ram_size) : Bus(MemoryMap{kRamBase, ram_size}) {}
   ~Bus() { std::free(ram_); }
   Bus(const Bus&) = delete;
   Bus& operator=(const Bus&) = delete;
@@ -27,9 +30,14 @@ class Bus {
   uint8_t* ram() { return ram_; }
   const uint8_t* ram() const { return ram_; }
   uint32_t ram_size() const { return ram_size_; }
+  uint32_t ram_base() const { return map_.ram_base; }
+  const MemoryMap& map() const { return map_; }
+  // Unsigned wrap-around makes addresses below the base fail too.
   bool in_ram(uint32_t addr, uint32_t len) const {
-    return addr >= kRamBase && addr - kRamBase <= ram_size_ - len && len <= ram_size_;
+    return addr - map_.ram_base <= ram_size_ - len && len <= ram_size_;
   }
+  // Host pointer to RAM at a simulated address the caller checked with in_ram.
+  uint8_t* ram_at(uint32_t addr) { return ram_ + (addr - map_.ram_base); }
 
   void attach_uart(Uart* uart) { uart_ = uart; }
   Uart* uart() const { return uart_; }
@@ -43,6 +51,7 @@ class Bus {
   bool finished() const { return finished_; }
 
  private:
+  MemoryMap map_;
   uint8_t* ram_;  // calloc: pages the firmware never touches cost nothing
   uint32_t ram_size_;
   Uart* uart_ = nullptr;

@@ -3,7 +3,6 @@
 #include <cerrno>
 #include <cstdlib>
 
-#include <minrt/memory_map.h>
 
 namespace fwsim {
 namespace {
@@ -23,6 +22,13 @@ uint64_t parse_count(const std::string& opt, const std::string& v, bool allow_su
   return n * mult;
 }
 
+uint64_t parse_port(const std::string& opt, const std::string& v) {
+  if (v == "0") return 0;
+  const uint64_t port = parse_count(opt, v, false);
+  if (port > 65535) throw UsageError(opt + " needs a TCP port 0..65535, got '" + v + "'");
+  return port;
+}
+
 }  // namespace
 
 const char* cli_help_text() {
@@ -40,11 +46,24 @@ const char* cli_help_text() {
          "                         (exit 0 if every op meets them, 1 if one misses)\n"
          "  --profile-out FILE     per-function profile in callgrind format\n"
          "  --folded-out FILE      folded call stacks (cycles) for flame graphs\n"
+         "  --flame-out FILE       flame graph (SVG, opens in any web browser)\n"
          "  --max-instructions N   stop with an error after N instructions\n"
-         "  --ram-size N           RAM size in bytes (K/M suffix ok; default 4M)\n"
+         "Memory map (default: the board's, include/minrt/memory_map.h):\n"
+         "  --ram BASE:SIZE        RAM at BASE, SIZE bytes (K/M suffix ok; default\n"
+         "                         0x80000000:4M); e.g. --ram 0:1M for a program linked at 0\n"
+         "  --ram-size N           RAM size only (default 4M)\n"
+         "  --uart ADDR            NS16550A UART base (default 0x10000000)\n"
+         "  --finisher ADDR        exit device (SiFive test finisher) base (default 0x100000)\n"
+         "  --machine FILE         memory map from a file of key = value lines\n"
+         "                         (ram = BASE:SIZE, uart = ADDR, finisher = ADDR)\n"
+         "Debugging:\n"
          "  --stats                print instructions, cycles, host MIPS... on stderr\n"
-         "  --trace                print every executed instruction on stderr\n"
-         "  --help, --version\n"
+         "  --trace                print every executed instruction with the registers\n"
+         "                         and memory it writes, on stderr\n"
+         "  --gdb PORT             wait for GDB on 127.0.0.1:PORT (0 = any free port;\n"
+         "                         the port is printed on stderr) and run under its control\n"
+         "  -h, --help             this help\n"
+         "  --version              the version\n"
          "Exit status: firmware's code; 2 usage, 3 bad ELF, 4 trap, 5 instruction limit,\n"
          "6 UART input exhausted while polled, 7 host I/O error.\n";
 }
@@ -80,6 +99,14 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
       if (r % 4096 || r < 65536 || r > 0x7ffff000ull)
         throw UsageError("--ram-size must be a multiple of 4096 between 64K and 2047M");
       o.ram_size = static_cast<uint32_t>(r);
+    } else if (a == "--ram") o.ram_spec = value(a);
+    else if (a == "--uart") o.uart_base = value(a);
+    else if (a == "--finisher") o.finisher_base = value(a);
+    else if (a == "--machine") o.machine_file = value(a);
+    else if (a == "--flame-out") o.flame_out = value(a);
+    else if (a == "--gdb") {
+      const uint64_t port = parse_port(a, value(a));
+      o.gdb_port = static_cast<int>(port);
     } else if (a == "--stats") o.stats = true;
     else if (a == "--trace") o.trace = true;
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
@@ -94,7 +121,7 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
   if (o.elf.empty()) throw UsageError("missing ELF file");
   if (o.pty && (!o.uart_in.empty() || !o.uart_out.empty()))
     throw UsageError("--pty cannot be combined with --uart-in/--uart-out");
-  if (!o.ram_size) o.ram_size = MINRT_RAM_DEFAULT_SIZE;
+  if (o.gdb_port >= 0 && o.pty) throw UsageError("--gdb cannot be combined with --pty");
   return o;
 }
 

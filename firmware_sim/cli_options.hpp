@@ -20,9 +20,15 @@ struct CliOptions {
   bool fpu_check = false;         // measure the FPU model's error instead of running an ELF
   std::string profile_out, folded_out;
   uint64_t max_instructions = 0;  // 0 = unlimited
-  uint32_t ram_size = 0;          // 0 = MINRT_RAM_DEFAULT_SIZE
+  uint32_t ram_size = 0;          // --ram-size; 0 = from the map
+  // Memory map (memory_map.hpp): the machine file first, then --ram,
+  // --ram-size, --uart and --finisher on top of it; empty = unchanged.
+  std::string machine_file;
+  std::string ram_spec, uart_base, finisher_base;
   bool stats = false;
   bool trace = false;
+  std::string flame_out;          // flame graph SVG
+  int gdb_port = -1;              // -1 = no GDB stub; 0 = any free port
   bool help = false, version = false;
 };
 

@@ -89,11 +89,11 @@ LoadedElf load_elf(const std::string& path, Bus& bus) {
     if (!bus.in_ram(ph.p_paddr, ph.p_memsz)) {
       char buf[160];
       std::snprintf(buf, sizeof buf, "segment 0x%08x..0x%08x lies outside RAM 0x%08x..0x%08x",
-                    ph.p_paddr, ph.p_paddr + ph.p_memsz, kRamBase, kRamBase + bus.ram_size());
+                    ph.p_paddr, ph.p_paddr + ph.p_memsz, bus.ram_base(), bus.ram_base() + bus.ram_size());
       fail(path, buf);
     }
     if (uint64_t{ph.p_offset} + ph.p_filesz > f.size()) fail(path, "segment beyond end of file");
-    std::memcpy(bus.ram() + (ph.p_paddr - kRamBase), f.data() + ph.p_offset, ph.p_filesz);
+    std::memcpy(bus.ram_at(ph.p_paddr), f.data() + ph.p_offset, ph.p_filesz);
     if (ph.p_flags & PF_X) {
       if (!have_text || ph.p_paddr < out.text_begin) out.text_begin = ph.p_paddr;
       if (!have_text || ph.p_paddr + ph.p_memsz > out.text_end) out.text_end = ph.p_paddr + ph.p_memsz;

@@ -57,7 +57,7 @@ uint32_t rem_s(uint32_t a, uint32_t b) {
 
 void Machine::trace_instruction(uint32_t pc) {
   uint32_t word = 0;
-  std::memcpy(&word, bus_.ram() + (pc - kRamBase), 4);
+  std::memcpy(&word, bus_.ram_at(pc), 4);
   std::fprintf(trace_, "%08x: %08x  %s\n", pc, word, disassemble(word, pc).c_str());
 }
 
@@ -143,7 +143,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   Profiler* const profiler = profiler_;
 
   Entry* const base = code_.entries();
-  Entry* ip = base + (hart_.pc - kRamBase) / 4;
+  const uint32_t ram_base = bus_.ram_base();
+  Entry* ip = base + (hart_.pc - ram_base) / 4;
   uint32_t* const x = hart_.x;
   // f[] directly follows x[] in HartState: addressing it from x saves a register.
   static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
@@ -161,7 +162,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
-#define PC_OF(p) (kRamBase + static_cast<uint32_t>((p) - base) * 4u)
+#define PC_OF(p) (ram_base + static_cast<uint32_t>((p) - base) * 4u)
 #define RETIRED() (n + static_cast<uint64_t>(ip - block))
 #define NOW() (Timed ? cycles : start + RETIRED())
 #define SYNC()                                                 \
@@ -222,7 +223,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define LOAD(T, dest)                                                                   \
   do {                                                                                  \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                         \
-    const uint32_t off = addr - kRamBase;                                               \
+    const uint32_t off = addr - ram_base;                                               \
     T v;                                                                                \
     if (IN_RAM(T)) {                                                                    \
       std::memcpy(&v, ram + off, sizeof(T));                                            \
@@ -244,7 +245,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define STORE(T, value)                                                                  \
   do {                                                                                   \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
-    const uint32_t off = addr - kRamBase;                                                \
+    const uint32_t off = addr - ram_base;                                                \
     const T v = static_cast<T>(value);                                                   \
     if (IN_RAM(T)) {                                                                     \
       std::memcpy(ram + off, &v, sizeof(T));                                             \
@@ -351,7 +352,7 @@ R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
 
 L_UNDECODED: {
   uint32_t word;
-  std::memcpy(&word, ram + (PC_OF(ip) - kRamBase), 4);
+  std::memcpy(&word, ram + (PC_OF(ip) - ram_base), 4);
   code_.fill(static_cast<uint32_t>(ip - base), word);
   DISPATCH();
 }
@@ -360,7 +361,7 @@ L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
 L_SLOW_CTI: {
   // A branch or jal whose target is outside RAM or not word aligned.
   uint32_t word;
-  std::memcpy(&word, ram + (PC_OF(ip) - kRamBase), 4);
+  std::memcpy(&word, ram + (PC_OF(ip) - ram_base), 4);
   const DecodedInsn d = decode(word);
   const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
   if (!taken) {
@@ -388,7 +389,7 @@ L_JAL: {
 L_JALR: {
   const uint32_t target = (RS1 + static_cast<uint32_t>(ip->imm)) & ~1u;
   if (target & 3) FAULT(StopCause::MisalignedFetch, target);
-  if (target - kRamBase >= ram_size) FAULT(StopCause::FetchFault, target);
+  if (target - ram_base >= ram_size) FAULT(StopCause::FetchFault, target);
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
@@ -400,7 +401,7 @@ L_JALR: {
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
   }
-  ip = block = base + (target - kRamBase) / 4;
+  ip = block = base + (target - ram_base) / 4;
   if (n > limit) goto limit_reached;
   DISPATCH();
 }

@@ -19,7 +19,8 @@ class FpuApprox;
 
 class Machine {
  public:
-  explicit Machine(uint32_t ram_size) : bus_(ram_size), code_(ram_size) {}
+  explicit Machine(const MemoryMap& map) : bus_(map), code_(map.ram_size) {}
+  explicit Machine(uint32_t ram_size) : Machine(MemoryMap{kRamBase, ram_size}) {}
 
   Bus& bus() { return bus_; }
   HartState& hart() { return hart_; }

@@ -19,6 +19,8 @@
 #include "fpu_check.hpp"
 #include "fpu_model_config.hpp"
 #include "machine.hpp"
+#include "memory_map.hpp"
+#include "output_check.hpp"
 #include "profile_writers.hpp"
 #include "pty_backend.hpp"
 #include "run_report.hpp"
@@ -65,9 +67,9 @@ std::string read_text(const std::string& path, const char* what) {
 template <typename Writer>
 void write_output(const std::string& path, Writer w) {
   std::ofstream out(path);
-  if (!out) die(kExitIo, path + ": cannot write");
+  if (!out) die(kExitIo, path + ": cannot write: " + std::strerror(errno));
   w(out);
-  if (!out.flush()) die(kExitIo, path + ": write failed");
+  if (!out.flush()) die(kExitIo, path + ": write failed: " + std::strerror(errno));
 }
 
 int run(const std::vector<std::string>& argv) {
@@ -102,9 +104,30 @@ int run(const std::vector<std::string>& argv) {
   std::unique_ptr<FpuApprox> fpu_model;
   if (!fpu_cfg.is_ieee()) fpu_model = std::make_unique<FpuApprox>(fpu_cfg);
 
+  // The memory map: the board's, then the machine file, then the options.
+  MemoryMap map;
+  try {
+    if (!opt.machine_file.empty()) parse_machine_file(read_text(opt.machine_file, "machine file"), opt.machine_file, map);
+    if (!opt.ram_spec.empty()) parse_ram_spec(opt.ram_spec, map);
+    if (opt.ram_size) map.ram_size = opt.ram_size;
+    if (!opt.uart_base.empty()) map.uart_base = parse_address(opt.uart_base, "--uart");
+    if (!opt.finisher_base.empty()) map.finisher_base = parse_address(opt.finisher_base, "--finisher");
+    check_memory_map(map);
+  } catch (const std::runtime_error& e) {
+    die(kExitUsage, e.what());
+  }
+
+  // Output files are written after the run: check now that they can be.
+  for (const std::string* out : {&opt.profile_out, &opt.folded_out, &opt.flame_out}) {
+    if (out->empty()) continue;
+    const std::string problem = output_path_problem(*out);
+    if (!problem.empty()) die(kExitUsage, problem);
+  }
+
   std::unique_ptr<CycleModel> model;
   CycleModelConfig model_cfg = default_cycle_model();
-  const bool timed = !opt.cycle_model.empty() || !opt.profile_out.empty() || !opt.folded_out.empty();
+  const bool profiling = !opt.profile_out.empty() || !opt.folded_out.empty() || !opt.flame_out.empty();
+  const bool timed = !opt.cycle_model.empty() || profiling;
   try {
     if (!opt.cycle_model.empty() && opt.cycle_model != "default")
       model_cfg = parse_cycle_model(read_text(opt.cycle_model, "cycle model"), opt.cycle_model);
@@ -122,7 +145,7 @@ int run(const std::vector<std::string>& argv) {
     if (!S_ISREG(st.st_mode)) die(kExitUsage, opt.elf + ": not a regular file");
     if (::access(opt.elf.c_str(), R_OK) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
   }
-  Machine m(opt.ram_size);
+  Machine m(map);
   LoadedElf elf;
   try {
     elf = load_elf(opt.elf, m.bus());
@@ -152,7 +175,7 @@ int run(const std::vector<std::string>& argv) {
   m.bus().attach_uart(&uart);
 
   std::unique_ptr<Profiler> profiler;
-  if (!opt.profile_out.empty() || !opt.folded_out.empty())
+  if (profiling)
     profiler = std::make_unique<Profiler>(elf.symbols, elf.entry);
   m.set_cycle_model(model.get());
   m.set_profiler(profiler.get());
@@ -170,8 +193,8 @@ int run(const std::vector<std::string>& argv) {
 
   if (stop.cause != StopCause::Exit) {
     uint32_t word = 0;
-    if (m.bus().in_ram(stop.pc, 4)) std::memcpy(&word, m.bus().ram() + (stop.pc - kRamBase), 4);
-    std::fprintf(stderr, "%s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
+    if (m.bus().in_ram(stop.pc, 4)) std::memcpy(&word, m.bus().ram_at(stop.pc), 4);
+    std::fprintf(stderr, "firmware-sim: error: %s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
   }
   if (profiler) {
     profiler->finish(Cost{m.hart().instret, m.hart().cycles});

@@ -13,7 +13,7 @@ std::string describe_stop(const StopInfo& s, uint32_t word, const SymbolTable& s
                         s.cause == StopCause::FetchFault || s.cause == StopCause::MisalignedFetch;
   std::string where = syms.describe(s.pc);
   std::string insn = word ? disassemble(word, s.pc) : std::string("(no instruction)");
-  std::snprintf(buf, sizeof buf, "firmware-sim: %s at pc 0x%08x (%s): %s", describe(s.cause), s.pc,
+  std::snprintf(buf, sizeof buf, "%s at pc 0x%08x (%s): %s", describe(s.cause), s.pc,
                 where.c_str(), insn.c_str());
   std::string msg = buf;
   if (has_addr) {

@@ -4,20 +4,25 @@
  * At entry (pc = ELF entry point) the simulator has written, at the top of RAM:
  *
  *   RAM end ->  +--------------------------------------+
- *               | argument strings, NUL-terminated     |
- *               +--------------------------------------+ (aligned down to 4)
+ *               | argument strings, NUL-terminated,    |
+ *               | argv[argc-1] highest, argv[0] lowest |
+ *               | free                                 |
  *               | argv[argc] = 0                       |
- *               | argv[argc-1] ... argv[0] (pointers)  |  <- a1 = argv
- *               +--------------------------------------+ (aligned down to 16)
- *               | free                                 |  <- sp
+ *               | argv[0] ... argv[argc-1] (pointers)  |
+ *   RAM end - MINRT_BOOT_ARGS_MAX ---------+  <- a1 = argv = sp
  *
- * and set the registers:
+ * The layout does not depend on the length of argv[0] (the ELF path as the
+ * user spelled it): sp, argv and argv[1..] are at the same addresses however
+ * the path is written, so instruction counts do not change with it.
+ *
+ * The registers:
  *   a0 = argc          (argv[0] is the ELF path given on the command line,
  *                       argv[1..] are the ARGS after "--")
  *   a1 = argv
- *   a2 = RAM end       (MINRT_RAM_BASE + RAM size; useful for a heap limit)
+ *   a2 = RAM end       (RAM base + RAM size; useful for a heap limit)
  *   a3 = MINRT_BOOT_MAGIC, which says a0..a2 are valid
- *   sp = 16-byte aligned address below the block
+ *   sp = RAM end - MINRT_BOOT_ARGS_MAX (16-byte aligned; the stack grows
+ *        down from there, below the block)
  * All other registers, fcsr and the counters are 0.
  *
  * crt0 rule: if a3 == MINRT_BOOT_MAGIC keep sp as given (the block lies above

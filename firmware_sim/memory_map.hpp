@@ -1,0 +1,38 @@
+// Where RAM and the devices sit in the simulated address space. The default
+// is the board's map from include/minrt/memory_map.h (QEMU virt's layout);
+// --ram, --uart, --finisher and --machine FILE change it, like spike's -m
+// or QEMU's machines, so programs linked elsewhere (even at 0) run.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <minrt/memory_map.h>
+
+namespace fwsim {
+
+struct MemoryMap {
+  uint32_t ram_base = MINRT_RAM_BASE;
+  uint32_t ram_size = MINRT_RAM_DEFAULT_SIZE;
+  uint32_t uart_base = MINRT_UART_BASE;
+  uint32_t finisher_base = MINRT_FINISHER_BASE;
+};
+
+// Region sizes are the devices' own (memory_map.h), not configurable.
+inline constexpr uint32_t kUartSize = MINRT_UART_SIZE;
+inline constexpr uint32_t kFinisherSize = MINRT_FINISHER_SIZE;
+// RAM base and size granularity: keeps the boot block and sp 16-aligned.
+inline constexpr uint32_t kRamAlign = 4096;
+
+// "BASE:SIZE" (SIZE with K/M/G suffix) for --ram. Throws std::runtime_error.
+void parse_ram_spec(const std::string& spec, MemoryMap& map);
+// A 32-bit address (decimal or 0x hex). Throws std::runtime_error naming `what`.
+uint32_t parse_address(const std::string& text, const std::string& what);
+// Machine file: `key = value` lines (ram = BASE:SIZE, ram_base, ram_size,
+// uart, finisher); '#' comments. Errors as "FILE:LINE: reason".
+void parse_machine_file(const std::string& text, const std::string& origin, MemoryMap& map);
+// Alignment, RAM within 32 bits, no two regions overlapping. Throws.
+void check_memory_map(const MemoryMap& map);
+// One line per region, for --stats and error messages.
+std::string describe(const MemoryMap& map);
+
+}  // namespace fwsim
