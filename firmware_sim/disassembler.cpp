@@ -19,6 +19,9 @@ constexpr const char* kRmNames[8] = {"rne", "rtz", "rdn", "rup", "rmm", "rm5", "
 
 }  // namespace
 
+const char* x_reg_name(unsigned i) { return kXNames[i & 31]; }
+const char* f_reg_name(unsigned i) { return kFNames[i & 31]; }
+
 std::string disassemble(uint32_t word, uint32_t pc) {
   const DecodedInsn d = decode(word);
   const OpInfo& info = op_info(d.op);

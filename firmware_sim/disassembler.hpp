@@ -7,5 +7,8 @@
 namespace fwsim {
 
 std::string disassemble(uint32_t word, uint32_t pc);
+// ABI names: "a0", "fa0" (index 0..31).
+const char* x_reg_name(unsigned i);
+const char* f_reg_name(unsigned i);
 
 }  // namespace fwsim

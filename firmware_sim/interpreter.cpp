@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstring>
 
+#include "commit_trace.hpp"
 #include "decoder.hpp"
 #include "disassembler.hpp"
 #include "fpu.hpp"
@@ -58,7 +59,7 @@ uint32_t rem_s(uint32_t a, uint32_t b) {
 void Machine::trace_instruction(uint32_t pc) {
   uint32_t word = 0;
   std::memcpy(&word, bus_.ram_at(pc), 4);
-  std::fprintf(trace_, "%08x: %08x  %s\n", pc, word, disassemble(word, pc).c_str());
+  write_commit_trace(trace_, pc, word, hart_);
 }
 
 StopInfo Machine::run(uint64_t max_instructions) {
