@@ -43,6 +43,10 @@ class DecodeCache {
   uint32_t count() const { return count_; }
   // Fills entry `index` from the instruction word at that position.
   void fill(uint32_t index, uint32_t word);
+  // Debugger support: a breakpoint replaces the entry (the instruction in RAM
+  // stays as it is); invalidating makes the word decode again on its next run.
+  void set_breakpoint(uint32_t index) { entries_[index] = Entry{static_cast<uint8_t>(Op::BREAKPOINT), 0, 0, 0, 0}; }
+  void invalidate(uint32_t index) { entries_[index] = Entry{}; }
 
  private:
   Entry* entries_;

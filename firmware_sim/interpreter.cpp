@@ -359,6 +359,7 @@ L_UNDECODED: {
 }
 L_ILLEGAL: FAULT(StopCause::IllegalInstruction, 0);
 L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
+L_BREAKPOINT: FAULT(StopCause::Breakpoint, PC_OF(ip));
 L_SLOW_CTI: {
   // A branch or jal whose target is outside RAM or not word aligned.
   uint32_t word;

@@ -36,6 +36,7 @@ enum class Format : uint8_t {
   X(ILLEGAL, "<illegal>", Internal, None)              \
   X(FETCH_FAULT, "<fetch fault>", Internal, None)      \
   X(SLOW_CTI, "<far jump>", Internal, None)            \
+  X(BREAKPOINT, "<breakpoint>", Internal, None)        \
   X(LUI, "lui", Alu, U)                                \
   X(AUIPC, "auipc", Alu, U)                            \
   X(JAL, "jal", Jump, J)                               \

@@ -38,6 +38,21 @@ class Machine {
   // arithmetic for the ops it replaces (fpu_approx.hpp).
   void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
 
+  // Debugger support (gdb_stub.hpp). A breakpoint stops a run with
+  // StopCause::Breakpoint before the instruction at `pc` executes; false when
+  // `pc` is not a word in RAM. Code written from outside (a debugger's memory
+  // write) must be invalidated to be decoded again.
+  bool set_breakpoint(uint32_t pc) {
+    if (!bus_.in_ram(pc, 4) || (pc & 3)) return false;
+    code_.set_breakpoint((pc - bus_.ram_base()) / 4);
+    return true;
+  }
+  void clear_breakpoint(uint32_t pc) { invalidate_code(pc, 4); }
+  void invalidate_code(uint32_t addr, uint32_t len) {
+    for (uint32_t a = addr & ~3u; a - (addr & ~3u) < len + (addr & 3); a += 4)
+      if (bus_.in_ram(a, 4)) code_.invalidate((a - bus_.ram_base()) / 4);
+  }
+
   // Runs from hart().pc until the firmware stops, faults, or more than
   // `max_instructions` (total, counted from reset) have retired.
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());

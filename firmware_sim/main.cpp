@@ -18,6 +18,7 @@
 #include "fpu_approx.hpp"
 #include "fpu_check.hpp"
 #include "fpu_model_config.hpp"
+#include "gdb_stub.hpp"
 #include "machine.hpp"
 #include "memory_map.hpp"
 #include "output_check.hpp"
@@ -158,6 +159,16 @@ int run(const std::vector<std::string>& argv) {
   m.hart().pc = elf.entry;
   m.csr().set_clock_hz(model_cfg.clock_hz);
 
+  // Listen before anything slow, so a busy port fails at once.
+  std::unique_ptr<GdbStub> gdb;
+  if (opt.gdb_port >= 0) {
+    try {
+      gdb = std::make_unique<GdbStub>(opt.gdb_port);
+    } catch (const std::runtime_error& e) {
+      die(kExitIo, e.what());
+    }
+  }
+
   Uart::Config ucfg;
   if (opt.pty) {
     try {
@@ -193,7 +204,18 @@ int run(const std::vector<std::string>& argv) {
 
   const double cpu0 = cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
-  const StopInfo stop = m.run(opt.max_instructions ? opt.max_instructions : UINT64_MAX);
+  const uint64_t max_instructions = opt.max_instructions ? opt.max_instructions : UINT64_MAX;
+  StopInfo stop;
+  bool killed = false;
+  if (gdb) {
+    try {
+      stop = gdb->serve(m, max_instructions, killed);
+    } catch (const std::runtime_error& e) {
+      die(kExitIo, e.what());
+    }
+  } else {
+    stop = m.run(max_instructions);
+  }
   const auto t1 = std::chrono::steady_clock::now();
   const double cpu1 = cpu_seconds();
   uart.flush();
@@ -201,7 +223,10 @@ int run(const std::vector<std::string>& argv) {
   if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
   if (!timed) m.hart().cycles = m.hart().instret;
 
-  if (stop.cause != StopCause::Exit) {
+  if (killed) {
+    std::fprintf(stderr, "firmware-sim: error: killed by gdb at pc 0x%08x [after %llu instructions, exit status %d]\n",
+                 m.hart().pc, static_cast<unsigned long long>(m.hart().instret), kExitKilled);
+  } else if (stop.cause != StopCause::Exit) {
     uint32_t word = 0;
     if (m.bus().in_ram(stop.pc, 4)) std::memcpy(&word, m.bus().ram_at(stop.pc), 4);
     std::fprintf(stderr, "firmware-sim: error: %s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
@@ -223,7 +248,7 @@ int run(const std::vector<std::string>& argv) {
                  uart.bytes_out(), uart.bytes_in(), opt.baud, profiler.get(), describe(fpu_cfg)};
     print_stats(s, stderr);
   }
-  return exit_status(stop);
+  return killed ? kExitKilled : exit_status(stop);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ const char* describe(StopCause c) {
     case StopCause::InstructionLimit: return "instruction limit exceeded";
     case StopCause::UartStall: return "UART input at end of file and firmware keeps polling it";
     case StopCause::HostIo: return "host I/O error";
+    case StopCause::Breakpoint: return "breakpoint";
   }
   return "?";
 }

@@ -12,6 +12,7 @@ inline constexpr int kExitTrap = 4;        // illegal instruction, access fault,
 inline constexpr int kExitLimit = 5;       // --max-instructions exceeded
 inline constexpr int kExitUartStall = 6;   // firmware polls the UART forever after input EOF
 inline constexpr int kExitIo = 7;          // host I/O problem (output file, pty)
+inline constexpr int kExitKilled = 8;      // gdb killed the program (--gdb)
 
 enum class StopCause : uint8_t {
   None,
@@ -28,6 +29,7 @@ enum class StopCause : uint8_t {
   InstructionLimit,
   UartStall,
   HostIo,
+  Breakpoint,          // a debugger breakpoint (gdb_stub.hpp); the instruction has not run
 };
 
 struct StopInfo {
