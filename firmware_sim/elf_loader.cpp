@@ -51,7 +51,8 @@ void read_symbols(const std::vector<uint8_t>& f, const Elf32_Ehdr& eh, const std
       size_t max_len = strtab.sh_size - sym.st_name;
       std::string n(name, strnlen(name, max_len));
       if (n.empty() || n[0] == '$' || n.rfind(".L", 0) == 0) continue;  // mapping symbols, locals
-      out.symbols.add({n, sym.st_value, type == STT_FUNC ? sym.st_size : 0});
+      // Every report (stats, stop messages, profiles) shows the readable name.
+      out.symbols.add({demangle(n), sym.st_value, type == STT_FUNC ? sym.st_size : 0});
     }
   }
   out.symbols.finalize();

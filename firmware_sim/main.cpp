@@ -15,6 +15,7 @@
 #include "cli_options.hpp"
 #include "disassembler.hpp"
 #include "elf_loader.hpp"
+#include "flame_graph.hpp"
 #include "fpu_approx.hpp"
 #include "fpu_check.hpp"
 #include "fpu_model_config.hpp"
@@ -239,6 +240,12 @@ int run(const std::vector<std::string>& argv) {
       write_output(opt.profile_out, [&](std::ostream& o) { write_callgrind(*profiler, o, cmd, opt.elf); });
     if (!opt.folded_out.empty())
       write_output(opt.folded_out, [&](std::ostream& o) { write_folded(*profiler, o); });
+    if (!opt.flame_out.empty()) {
+      const std::string base = opt.elf.substr(opt.elf.find_last_of('/') + 1);
+      const std::string title = base + ": " + (opt.cycle_model.empty() ? "default" : opt.cycle_model) +
+                                " cycle model, " + std::to_string(m.hart().cycles) + " cycles";
+      write_output(opt.flame_out, [&](std::ostream& o) { write_flame_graph_svg(*profiler, o, title); });
+    }
   }
   if (opt.stats) {
     RunSummary s{m.hart().instret, m.hart().cycles,

@@ -75,13 +75,14 @@ void print_stats(const RunSummary& s, std::FILE* out) {
   auto totals = s.profiler->function_totals();
   std::sort(totals.begin(), totals.end(),
             [](const auto& a, const auto& b) { return a.self.cycles > b.self.cycles; });
-  std::fprintf(out, "top functions (self cycles, self instructions, inclusive cycles, calls):\n");
+  // Names last: demangled C++ names are long.
+  std::fprintf(out, "top functions:\n  %12s %12s %12s %8s  %s\n", "self cycles", "self instr", "incl cycles", "calls",
+               "function");
   for (size_t i = 0; i < totals.size() && i < 10 && totals[i].self.cycles; ++i) {
-    std::fprintf(out, "  %-32s %12llu %12llu %12llu %8llu\n", totals[i].name.c_str(),
-                 static_cast<unsigned long long>(totals[i].self.cycles),
+    std::fprintf(out, "  %12llu %12llu %12llu %8llu  %s\n", static_cast<unsigned long long>(totals[i].self.cycles),
                  static_cast<unsigned long long>(totals[i].self.ir),
                  static_cast<unsigned long long>(totals[i].inclusive.cycles),
-                 static_cast<unsigned long long>(totals[i].calls));
+                 static_cast<unsigned long long>(totals[i].calls), totals[i].name.c_str());
   }
 }
 

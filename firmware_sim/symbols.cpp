@@ -1,9 +1,22 @@
 #include "symbols.hpp"
 
+#include <cxxabi.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 namespace fwsim {
+
+std::string demangle(const std::string& name) {
+  if (name.rfind("_Z", 0) != 0) return name;  // C names pass through untouched
+  int status = 0;
+  char* readable = abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status);
+  if (status != 0 || !readable) return name;
+  std::string out(readable);
+  std::free(readable);
+  return out;
+}
 
 void SymbolTable::finalize() {
   std::stable_sort(syms_.begin(), syms_.end(), [](const Symbol& a, const Symbol& b) {

@@ -13,6 +13,10 @@ struct Symbol {
   uint32_t size;  // 0 = unknown, extends to the next symbol
 };
 
+// The readable form of a C++ symbol ("minrt::Tracer<...>::init(...)"), or
+// the name unchanged when it is not a mangled C++ name.
+std::string demangle(const std::string& name);
+
 class SymbolTable {
  public:
   void add(Symbol s) { syms_.push_back(std::move(s)); }
