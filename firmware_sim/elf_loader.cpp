@@ -89,7 +89,7 @@ LoadedElf load_elf(const std::string& path, Bus& bus) {
     if (ph.p_filesz > ph.p_memsz) fail(path, "segment file size exceeds memory size");
     if (!bus.in_ram(ph.p_paddr, ph.p_memsz)) {
       char buf[160];
-      std::snprintf(buf, sizeof buf, "segment 0x%08x..0x%08x lies outside RAM 0x%08x..0x%08x",
+      std::snprintf(buf, sizeof buf, "segment 0x%08x..0x%08x lies outside RAM 0x%08x..0x%08x (--ram BASE:SIZE moves RAM)",
                     ph.p_paddr, ph.p_paddr + ph.p_memsz, bus.ram_base(), bus.ram_base() + bus.ram_size());
       fail(path, buf);
     }
