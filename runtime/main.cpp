@@ -26,6 +26,7 @@
 #include "program_loader.hpp"
 #include "protocol/protocol_course_board.hpp"
 #include "protocol/protocol_framed_board.hpp"
+#include "protocol/raw_check.hpp"
 #include "render/minrt/render.hpp"
 #include "serial_stream.hpp"
 
@@ -167,8 +168,12 @@ extern "C" int main(int argc, char** argv) {
     return serve_course(uart, argc, argv, options, arena, error);
   if (options.protocol == minrt::fw::Protocol::kFramed) return serve_framed(uart, options, arena, error);
   minrt::fw::SerialInput input(uart, options.idle_polls);
-  minrt::fw::SerialOutput output(uart, options.footprint);
-  minrt::PeekSource scene(input.source());
+  minrt::fw::SerialOutput uart_out(uart, options.footprint);
+  // The host's request for the CRC-32 trailer comes first (protocol/raw_check.hpp).
+  minrt::PeekSource request(input.source());
+  const bool checked = request.first_nonblank() == MINRT_CHECK_REQUEST;
+  minrt::send::raw_check::CheckedSink output(uart_out.sink(), checked);
+  minrt::PeekSource scene(checked ? input.source() : request.source());
   int first = scene.first_nonblank();
   // A CS418 scene's textures, decoded by host-send, come first.
   minrt::send::textures::Table* textures = nullptr;
@@ -192,6 +197,7 @@ extern "C" int main(int argc, char** argv) {
       send_error(uart, error);
       return r == minrt::fw::JaworskiResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
     }
+    output.end();
     return MINRT_STATUS_OK;
   }
   if ((first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z')) {
@@ -201,7 +207,8 @@ extern "C" int main(int argc, char** argv) {
       send_error(uart, error);
       return r == minrt::fw::Cs418Result::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
     }
-    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
+    output.end();
+    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
     return MINRT_STATUS_OK;
   }
   const minrt::RenderStatus status = minrt::render_sld<Math>(
@@ -210,6 +217,7 @@ extern "C" int main(int argc, char** argv) {
     send_error(uart, error);
     return status_of(status);
   }
-  if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
+  output.end();
+  if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
   return MINRT_STATUS_OK;
 }

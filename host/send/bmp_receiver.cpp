@@ -30,6 +30,19 @@ std::size_t BmpReceiver::feed(const std::uint8_t* data, std::size_t size) {
     if (state_ == State::kPixels) {  // the bulk of the image: take what is there
       const std::uint64_t want = pixel_bytes_ - pixels_seen_;
       const std::size_t n = static_cast<std::size_t>(want < size - i ? want : size - i);
+      // Every pixel the firmware writes is opaque: a lost or doubled byte
+      // moves a colour byte into an alpha slot.
+      for (std::size_t k = 0; k < n; ++k)
+        if ((pixels_seen_ + k) % 4 == 3 && data[i + k] != 0xFF) {
+          char buf[128];
+          const std::uint64_t px = (pixels_seen_ + k) / 4;
+          std::snprintf(buf, sizeof buf, "BMP pixel %llu (row %llu from the bottom) is not opaque: the line damaged it",
+                        static_cast<unsigned long long>(px % static_cast<std::uint64_t>(width_)),
+                        static_cast<unsigned long long>(px / static_cast<std::uint64_t>(width_)));
+          bytes_ += k + 1;
+          fail(buf);
+          return i + k + 1;
+        }
       pixels_seen_ += n;
       bytes_ += n;
       i += n;

@@ -123,6 +123,9 @@ void print_help() {
       "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
       "                           maximum channel error, PSNR\n"
       "  --expect-sha256 HEX      refuse the image unless its bytes have this SHA-256\n"
+      "  --check                  raw: require the board's CRC-32 trailer (by default it\n"
+      "                           is asked for and checked when the board announces it)\n"
+      "  --no-check               raw: do not ask for the trailer (plain course bytes)\n"
       "  --first-byte-timeout S   wait for the reply at most S seconds (default 120)\n"
       "  --idle-timeout S         longest silence within the reply (default 30)\n"
       "  --progress               draw the progress line even when stderr is no terminal\n"
@@ -250,6 +253,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
         error = "bad --expect-sha256: expected 64 hex digits";
         return ParseResult::kError;
       }
+    } else if (a == "--check" || a == "--no-check") {
+      o.check = a == "--check" ? RawCheck::kRequire : RawCheck::kOff;
     } else if (a == "--first-byte-timeout" || a == "--idle-timeout") {
       if (!value(v)) return ParseResult::kError;
       double s = 0;
@@ -293,6 +298,10 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
   }
   if (o.protocol != Protocol::kCourse && (!o.program.empty())) {
     error = "--program only applies to --protocol course";
+    return ParseResult::kError;
+  }
+  if (o.protocol != Protocol::kRaw && o.check == RawCheck::kRequire) {
+    error = "--check applies to --protocol raw (framed checks every frame; course has no checksum)";
     return ParseResult::kError;
   }
   if (o.output.empty()) o.output = default_output(o.scene);
@@ -418,6 +427,7 @@ int run(const Options& options) {
                     paced ? o.port_settings.baud : 0);
   Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
               &progress};
+  ex.check = o.check;
   TransferResult r;
   if (jaworski) {
     r = run_raw_bmp(ex, scene);
@@ -473,7 +483,7 @@ int run(const Options& options) {
     if (r.retransmitted_rows > 0 && n > 0)
       std::snprintf(line + n, sizeof line - n, ", %d rows re-sent", r.retransmitted_rows);
     std::fprintf(stderr, "%s\n", line);
-    std::fprintf(stderr, "host-send: sha256 %s\n", digest.c_str());
+    std::fprintf(stderr, "host-send: sha256 %s%s\n", digest.c_str(), r.crc_checked ? " (CRC-32 trailer checked)" : "");
   }
   if (o.show) {
     // The image as written (PPM, PNG or BMP), in a window.

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "checked_reply.hpp"
 #include "port.hpp"
 #include "ppm_receiver.hpp"
 
@@ -29,6 +30,7 @@ struct Options {
   double idle_timeout = 30;
   std::string verify_ref;
   std::string expect_sha256;
+  RawCheck check = RawCheck::kAuto;  // raw: --check / --no-check (the CRC-32 trailer)
   std::string program;       // course: --program FILE
   bool big_endian = false;   // course: --endian
   bool list = false;

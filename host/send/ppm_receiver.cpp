@@ -124,31 +124,44 @@ bool PpmReceiver::step(std::uint8_t c) {
         }
         return true;
       }
+      // The layout the firmware writes (core/image/ppm_writer.hpp): one
+      // line "R G B\n" per pixel, decimal without leading zeros. Anything
+      // else is damage: a lost or doubled separator, a doubled 0.
       if (is_digit(c)) {
+        if (p3_digits_ == 1 && p3_value_ == 0) return fail_p3("a value with a leading zero");
         if (p3_value_ < 0) p3_value_ = 0;
         p3_value_ = p3_value_ * 10 + (c - '0');
-        if (++p3_digits_ > 3 || p3_value_ > 255) return fail("P3 value above 255");
+        if (++p3_digits_ > 3 || p3_value_ > 255) return fail_p3("a value above 255");
         return true;
       }
-      if (!is_space(c)) {
-        char buf[80];
-        std::snprintf(buf, sizeof buf, "unexpected byte 0x%02x in the P3 pixel data", c);
-        return fail(buf);
+      if (c != ' ' && c != '\n') {
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "unexpected byte 0x%02x", c);
+        return fail_p3(buf);
       }
-      if (p3_value_ >= 0) {
-        if (pixel_bytes_ >= pixels_.size()) return fail("more P3 values than the image holds");
-        pixels_[pixel_bytes_++] = static_cast<std::uint8_t>(p3_value_);
-        p3_value_ = -1;
-        p3_digits_ = 0;
-        if (pixel_bytes_ == pixels_.size()) {
-          state_ = State::kDone;
-          return false;
-        }
+      if (p3_value_ < 0) return fail_p3(c == ' ' ? "a space where a value should start" : "an empty line");
+      if (c != (pixel_bytes_ % 3 == 2 ? '\n' : ' '))
+        return fail_p3(c == ' ' ? "more than 3 values on a line" : "fewer than 3 values on a line");
+      pixels_[pixel_bytes_++] = static_cast<std::uint8_t>(p3_value_);
+      p3_value_ = -1;
+      p3_digits_ = 0;
+      if (pixel_bytes_ == pixels_.size()) {
+        state_ = State::kDone;
+        return false;
       }
       return true;
     default:
       return false;
   }
+}
+
+bool PpmReceiver::fail_p3(const char* what) {
+  const std::size_t pixel = pixel_bytes_ / 3;
+  const std::size_t width = static_cast<std::size_t>(expected_.width);
+  char buf[192];
+  std::snprintf(buf, sizeof buf, "P3 pixel data damaged: %s at row %zu, pixel %zu (one \"R G B\" line per pixel expected)",
+                what, pixel / width, pixel % width);
+  return fail(buf);
 }
 
 bool PpmReceiver::header_token_done() {

@@ -58,6 +58,7 @@ class PpmReceiver {
  private:
   bool step(std::uint8_t c);
   bool fail(std::string msg);
+  bool fail_p3(const char* what);  // damaged P3 pixel data, located
   bool header_token_done();
 
   ImageSpec expected_;

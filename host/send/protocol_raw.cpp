@@ -133,6 +133,10 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
       return fail(std::to_string(extra) + " unexpected bytes after the image: the line damaged it");
   }
   r.status = TransferResult::Status::kOk;
+  if constexpr (requires { rx.checked(); }) {
+    r.image = rx.image();
+    r.crc_checked = rx.checked();
+  }
   r.seconds = std::chrono::duration<double>(t_end - t0).count();
   r.sent = sent;
   r.received = rx.bytes();
@@ -143,25 +147,34 @@ template TransferResult exchange<PpmReceiver>(Exchange&, const std::string&, Ppm
 template TransferResult exchange<PngReceiver>(Exchange&, const std::string&, PngReceiver&);
 template TransferResult exchange<BmpReceiver>(Exchange&, const std::string&, BmpReceiver&);
 
-TransferResult run_raw_bmp(Exchange& ex, const std::string& scene) {
-  std::string out = scene;
+namespace {
+// The raw upload: the trailer request unless --no-check, the scene (with
+// any texture preamble), the end-of-input byte; the reply through
+// CheckedReply around the format's receiver.
+template <class Receiver>
+TransferResult raw_exchange(Exchange& ex, const std::string& scene, Receiver& inner) {
+  std::string out;
+  if (ex.check != RawCheck::kOff) out.push_back(static_cast<char>(MINRT_CHECK_REQUEST));
+  out += scene;
   out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
-  BmpReceiver rx;
+  CheckedReply<Receiver> rx(inner, ex.check);
   return exchange(ex, out, rx);
+}
+}  // namespace
+
+TransferResult run_raw_bmp(Exchange& ex, const std::string& scene) {
+  BmpReceiver rx;
+  return raw_exchange(ex, scene, rx);
 }
 
 TransferResult run_raw_png(Exchange& ex, const std::string& scene, int width, int height) {
-  std::string out = scene;
-  out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
   PngReceiver rx(width, height);
-  return exchange(ex, out, rx);
+  return raw_exchange(ex, scene, rx);
 }
 
 TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& spec) {
-  std::string out = scene;
-  out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
   PpmReceiver rx(spec);
-  return exchange(ex, out, rx);
+  return raw_exchange(ex, scene, rx);
 }
 
 }  // namespace minrt::send

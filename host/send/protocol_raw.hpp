@@ -9,6 +9,7 @@
 
 #include "port.hpp"
 #include "bmp_receiver.hpp"
+#include "checked_reply.hpp"
 #include "png_receiver.hpp"
 #include "ppm_receiver.hpp"
 #include "progress.hpp"
@@ -33,12 +34,14 @@ struct TransferResult {
   std::uint64_t sent = 0;
   std::uint64_t received = 0;
   int retransmitted_rows = 0;  // framed only
+  bool crc_checked = false;    // raw: the CRC-32 trailer came and matched
 };
 
 struct Exchange {
   SerialPort& port;
   Timeouts timeouts;
   Progress* progress = nullptr;
+  RawCheck check = RawCheck::kAuto;  // raw: the CRC-32 trailer (--check, --no-check)
 };
 
 // Sends `out` (may be empty), then collects the reply into `rx`. `t0` is the

@@ -20,6 +20,8 @@
  *     follows.
  *   The machine then halts with one of the MINRT_STATUS_* codes (through the
  *   test finisher, so a simulator or QEMU exits with it).
+ *   A host that asks for it first (MINRT_CHECK_REQUEST, below) gets the
+ *   image between an announce byte and a CRC-32 trailer.
  */
 #ifndef MINRT_SERIAL_PROTOCOL_H
 #define MINRT_SERIAL_PROTOCOL_H
@@ -38,6 +40,24 @@
 #define MINRT_TEXTURES_MARKER 0x01
 #define MINRT_MAX_TEXTURES 64
 #define MINRT_MAX_TEXTURE_SIDE 16384
+
+/* Raw protocol, CRC-32 trailer (host-send asks for it unless --no-check).
+ *   Host -> board: MINRT_CHECK_REQUEST as the very first byte, before the
+ *   textures marker or the scene.
+ *   Board -> host, when it was asked and has an image to send:
+ *   MINRT_CHECK_ANNOUNCE, the image exactly as without the request, then
+ *   the trailer of MINRT_CHECK_TRAILER_SIZE bytes: MINRT_CHECK_TRAILER_MAGIC
+ *   (4 bytes), the image's byte count and its CRC-32/IEEE (core/base/crc32.hpp),
+ *   each 4 bytes little-endian. The announce byte and the trailer are not
+ *   part of the image or of the CRC. An error line is sent as always, with
+ *   neither. Without the request the reply is byte for byte what it was (and
+ *   what minrt prints), so a terminal or an older host sees a plain image.
+ *   The course and framed protocols do not use this: the course defines its
+ *   own bytes, and framed has a CRC on every frame. */
+#define MINRT_CHECK_REQUEST 0x02 /* ASCII STX: no scene format starts with it */
+#define MINRT_CHECK_ANNOUNCE 0x02
+#define MINRT_CHECK_TRAILER_MAGIC "\003CRC" /* ETX, then "CRC" */
+#define MINRT_CHECK_TRAILER_SIZE 12
 
 /* ASCII EOT (Ctrl-D): optional end-of-input byte after the scene. */
 #define MINRT_END_OF_INPUT 0x04

@@ -17,7 +17,9 @@ std::string stream(int w, int h) {
   minrt::BmpWriter bmp(minrt::ByteSink{
       [](void* ctx, const uint8_t* p, size_t n) { static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n); },
       &bytes});
+  // Opaque, as every pixel the firmware writes (the receiver checks it).
   std::vector<uint8_t> row(static_cast<size_t>(w) * 4, 9);
+  for (size_t i = 3; i < row.size(); i += 4) row[i] = 255;
   bmp.begin(w, h);
   for (int y = 0; y < h; ++y) bmp.row(y, row.data());
   bmp.end();

@@ -17,6 +17,8 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "core/base/peek_source.hpp"
+#include "protocol/raw_check.hpp"
 #include "render_variants.hpp"
 #include "standin_protocols.hpp"
 
@@ -168,8 +170,14 @@ int main(int argc, char** argv) {
   };
 
   if (protocol == "raw") {
-    st = render_from(minrt::ByteSource{&Board::read_fn, &board}, sink);
+    // The CRC-32 trailer when the host asks for it, as the firmware does.
+    const minrt::ByteSource line{&Board::read_fn, &board};
+    minrt::PeekSource request(line);
+    const bool checked = request.first_nonblank() == MINRT_CHECK_REQUEST;
+    minrt::send::raw_check::CheckedSink out(sink, checked);
+    st = render_from(checked ? line : request.source(), out.sink());
     if (st != minrt::RenderStatus::kOk) send_error();
+    else out.end();
   } else {
     standin::Link link{&board, [](void* c, uint8_t* p, size_t n) { return static_cast<Board*>(c)->read_exact(p, n); },
                        [](void* c, const uint8_t* p, size_t n) { static_cast<Board*>(c)->put(p, n); },

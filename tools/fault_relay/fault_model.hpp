@@ -14,6 +14,9 @@ struct FaultRates {
   int delay_ms = 5;    // longest single-byte delay
   int stall_ms = 300;  // length of a stall
   std::uint64_t skip = 0;  // bytes passed untouched at the start
+  // One fault at a chosen byte (0-based index in its direction; -1 none),
+  // for tests that need one exact defect: `94` -> `4`, `16` -> `116`.
+  std::int64_t drop_at = -1, dup_at = -1, flip_at = -1;
 };
 
 struct FaultCounts {
@@ -40,6 +43,19 @@ class FaultModel {
     // on which faults are enabled.
     const double u_drop = uniform(), u_flip = uniform(), u_dup = uniform(), u_delay = uniform(), u_stall = uniform();
     const std::uint64_t r = bits();
+    if (static_cast<std::int64_t>(index) == rates_.drop_at) {
+      a.copies = 0;
+      ++counts_.dropped;
+      return a;
+    }
+    if (static_cast<std::int64_t>(index) == rates_.flip_at) {
+      a.value = static_cast<std::uint8_t>(byte ^ 1u);
+      ++counts_.flipped;
+    }
+    if (static_cast<std::int64_t>(index) == rates_.dup_at) {
+      a.copies = 2;
+      ++counts_.duplicated;
+    }
     if (index < rates_.skip) return a;
     if (u_stall < rates_.stall) {
       a.sleep_ms += rates_.stall_ms;

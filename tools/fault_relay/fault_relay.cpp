@@ -37,6 +37,9 @@ void usage() {
       "  --stall P         probability of stalling the line before a byte\n"
       "  --stall-ms N      stall length (default 300)\n"
       "  --skip N          pass the first N bytes untouched\n"
+      "  --drop-at N       drop board->host byte N (0-based), whatever the rates\n"
+      "  --dup-at N        send board->host byte N twice\n"
+      "  --flip-at N       flip the lowest bit of board->host byte N\n"
       "  --both-ways       damage host->board bytes too (own seed + 1)\n",
       stderr);
 }
@@ -101,6 +104,9 @@ int main(int argc, char** argv) {
     else if (a == "--delay-ms") { num(v); rates.delay_ms = v < 1 ? 1 : static_cast<int>(v); }
     else if (a == "--stall-ms") { num(v); rates.stall_ms = static_cast<int>(v); }
     else if (a == "--skip") { num(v); rates.skip = static_cast<std::uint64_t>(v); }
+    else if (a == "--drop-at") { num(v); rates.drop_at = static_cast<std::int64_t>(v); }
+    else if (a == "--dup-at") { num(v); rates.dup_at = static_cast<std::int64_t>(v); }
+    else if (a == "--flip-at") { num(v); rates.flip_at = static_cast<std::int64_t>(v); }
     else if (a == "--both-ways") both = true;
     else if (a == "-h" || a == "--help") { usage(); return 0; }
     else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "fault-relay: unknown option '%s'\n", a.c_str()); return 2; }
@@ -131,7 +137,9 @@ int main(int argc, char** argv) {
     if (!(p.revents & POLLHUP)) break;
     ::usleep(10000);
   }
-  fault_relay::FaultModel down(seed, rates), up(seed + 1, rates);
+  fault_relay::FaultRates up_rates = rates;  // the single-byte faults are board->host only
+  up_rates.drop_at = up_rates.dup_at = up_rates.flip_at = -1;
+  fault_relay::FaultModel down(seed, rates), up(seed + 1, up_rates);
   std::uint8_t buf[4096];
   bool board_open = true;
   for (;;) {
