@@ -23,6 +23,7 @@
 #include "machine.hpp"
 #include "memory_map.hpp"
 #include "output_check.hpp"
+#include "posix/output_file.hpp"
 #include "profile_writers.hpp"
 #include "pty_backend.hpp"
 #include "run_report.hpp"
@@ -66,12 +67,15 @@ std::string read_text(const std::string& path, const char* what) {
   return ss.str();
 }
 
+// Profiles go through posix/output_file.hpp: a unique temporary file next
+// to the target, renamed over it only when complete; a FIFO, device or
+// symbolic link is refused; "-" is standard output.
 template <typename Writer>
 void write_output(const std::string& path, Writer w) {
-  std::ofstream out(path);
-  if (!out) die(kExitIo, path + ": cannot write: " + std::strerror(errno));
-  w(out);
-  if (!out.flush()) die(kExitIo, path + ": write failed: " + std::strerror(errno));
+  std::ostringstream text;
+  w(text);
+  std::string error;
+  if (!minrt::host::write_file_atomically(path, text.str(), false, error)) die(kExitIo, error);
 }
 
 int run(const std::vector<std::string>& argv) {

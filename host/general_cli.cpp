@@ -10,7 +10,7 @@
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
 #include "image_window.hpp"
-#include "output_file.hpp"
+#include "posix/output_file.hpp"
 
 namespace minrt::host {
 

@@ -14,7 +14,7 @@
 #include "file_input.hpp"
 #include "image_window.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
-#include "output_file.hpp"
+#include "posix/output_file.hpp"
 #include "render/jaworski/tracer.hpp"
 
 namespace minrt::host {

@@ -16,7 +16,7 @@
 #include "image_load.hpp"
 #include "image_window.hpp"
 #include "jaworski_cli.hpp"
-#include "output_file.hpp"
+#include "posix/output_file.hpp"
 #include "scene_format.hpp"
 #include "render_variants.hpp"
 #include "stdio_stream.hpp"

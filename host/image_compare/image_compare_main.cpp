@@ -7,7 +7,7 @@
 
 #include "image_load.hpp"
 #include "image_metrics.hpp"
-#include "output_file.hpp"
+#include "posix/output_file.hpp"
 
 namespace {
 

@@ -1,7 +1,5 @@
 #include "ppm_receiver.hpp"
 
-#include "output_file.hpp"
-
 #include <cstdio>
 
 #include <minrt/serial_protocol.h>
@@ -208,42 +206,6 @@ void PpmReceiver::finish() {
                   pixel_bytes_, pixels_.size(), rows_complete(), expected_.height,
                   static_cast<unsigned long long>(bytes_));
   fail(buf);
-}
-
-}  // namespace minrt::send
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
-namespace minrt::send {
-
-namespace {
-bool write_fd(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-}  // namespace
-
-bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
-                           std::string& error) {
-  host::AtomicOutput out;
-  if (!out.open(path, write_through, error)) return false;
-  if (std::fwrite(bytes.data(), 1, bytes.size(), out.file()) != bytes.size()) {
-    error = "cannot write " + path + ": " + std::strerror(errno);
-    out.discard();
-    return false;
-  }
-  return out.commit(error);
 }
 
 }  // namespace minrt::send

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "error_line.hpp"
+#include "posix/output_file.hpp"
 #include <vector>
 
 namespace minrt::send {
@@ -85,8 +86,7 @@ namespace minrt::send {
 
 // Writes `bytes` to a temporary file next to `path` and renames it into
 // place, so `path` is either the complete image or untouched. "-" writes to
-// standard output. False with a message on failure (the temporary is removed).
-bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
-                           std::string& error);
+// standard output (posix/output_file.hpp).
+using minrt::host::write_file_atomically;
 
 }  // namespace minrt::send

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "image_diff.hpp"
+#include "posix/output_file.hpp"
 #include "variants.hpp"
 
 namespace {
@@ -93,11 +94,11 @@ int main(int argc, char** argv) {
       continue;
     }
     if (!out_dir.empty()) {
+      // Whole or not at all, never onto a FIFO, device or link (posix/output_file.hpp).
       const std::string path = out_dir + "/" + stem_of(scene_path) + "." + v->tag + ".ppm";
-      std::ofstream out(path, std::ios::binary);
-      out << r.image;
-      if (!out) {
-        std::fprintf(stderr, "accuracy-report: cannot write %s\n", path.c_str());
+      std::string why;
+      if (!minrt::host::write_file_atomically(path, r.image, false, why)) {
+        std::fprintf(stderr, "accuracy-report: %s\n", why.c_str());
         status = 1;
       }
     }

@@ -1,4 +1,4 @@
-#include "output_file.hpp"
+#include "posix/output_file.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -146,6 +146,18 @@ bool AtomicOutput::commit(std::string& error) {
   unregister_temp();
   temp_.clear();
   return ok;
+}
+
+bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
+                           std::string& error) {
+  AtomicOutput out;
+  if (!out.open(path, write_through, error)) return false;
+  if (std::fwrite(bytes.data(), 1, bytes.size(), out.file()) != bytes.size()) {
+    error = "cannot write " + path + ": " + std::strerror(errno);
+    out.discard();
+    return false;
+  }
+  return out.commit(error);
 }
 
 void AtomicOutput::discard() {

@@ -16,6 +16,11 @@ namespace minrt::host {
 // target is a directory, or a special file without `write_through`.
 bool check_output_target(const std::string& path, bool write_through, std::string& error);
 
+// The whole of `bytes` through an AtomicOutput: `path` is either the
+// complete file or untouched. False with the reason.
+bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
+                           std::string& error);
+
 class AtomicOutput {
  public:
   AtomicOutput() = default;
