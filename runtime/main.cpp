@@ -20,6 +20,7 @@
 #include "cs418_board.hpp"
 #include "jaworski_board.hpp"
 #include "firmware_args.hpp"
+#include "firmware_layout.h"
 #include "footprint.hpp"
 #include "board_math.hpp"
 #include "ns16550.hpp"
@@ -156,10 +157,12 @@ extern "C" int main(int argc, char** argv) {
 
   minrt::fw::ArenaRegion region = minrt::fw::arena_region();
   // A machine with more RAM than the board (firmware-sim --ram-size): the
-  // RAM above the linked 4 MiB, below the boot arguments, when larger.
+  // RAM above the linked 4 MiB, when larger. The simulator's sp sits just
+  // below the boot arguments at the top of that RAM, so the stack's share
+  // stays out of the arena.
   const uint32_t ram = options.ram_mib << 20;
-  if (ram > MINRT_RAM_DEFAULT_SIZE) {
-    const size_t above = ram - MINRT_RAM_DEFAULT_SIZE - MINRT_BOOT_ARGS_MAX;
+  if (ram > MINRT_RAM_DEFAULT_SIZE + MINRT_BOOT_ARGS_MAX + MINRT_FW_STACK_SIZE) {
+    const size_t above = ram - MINRT_RAM_DEFAULT_SIZE - MINRT_BOOT_ARGS_MAX - MINRT_FW_STACK_SIZE;
     if (above > region.size)
       region = {reinterpret_cast<void*>(static_cast<uintptr_t>(MINRT_RAM_BASE + MINRT_RAM_DEFAULT_SIZE)), above};
   }
