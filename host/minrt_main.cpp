@@ -56,8 +56,8 @@ void print_help(std::FILE* f) {
       "  -s, --show               show the image in a window afterwards (SLD: with -o FILE)\n"
       "                           (ESC, q or the close button quit; without a display\n"
       "                           a one-line warning, and the file is still written)\n"
-      "  --threads N              CS418, Jaworski: render rows on N threads (default:\n"
-      "                           every core; the image is the same for any N)\n"
+      "  --threads N              render rows on N threads (default: every core;\n"
+      "                           the image is the same for any N)\n"
       "CS418 only:\n"
       "  --seed N                 random numbers for aa, dof, roughness, gi (default 1)\n"
       "  --all-features           render on the path with every feature compiled in\n"
@@ -268,7 +268,8 @@ int main(int argc, char** argv) {
   if (!quiet) warnings = minrt::WarningSink{&print_warning, &wctx};
   minrt::Diagnostic error;
   const minrt::RenderStatus st =
-      minrt::host::render_variant(variant, source.source(), sink.sink(), options, error, warnings);
+      minrt::host::render_variant(variant, source.source(), sink.sink(), options, error, warnings,
+                                  general.options.threads);
   const bool read_failed = std::ferror(in) != 0;
   if (in != stdin) std::fclose(in);
   const bool write_failed = sink.failed || std::fflush(out) != 0;

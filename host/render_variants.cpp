@@ -5,6 +5,7 @@
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "minrt_parallel.hpp"
 #include "protocol/course_word_values.hpp"
 
 namespace minrt::host {
@@ -13,7 +14,7 @@ namespace {
 // `make.template operator()<R>()` gives the scene's value source for real type R.
 template <MathPolicy M, class MakeValues>
 RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions& options, Diagnostic& error,
-                 const WarningSink& warnings) {
+                 const WarningSink& warnings, int threads) {
   // The one allocation: sized from the limits and the width, before reading.
   const int width = valid_size(options.width, options.height) ? options.width : 1;
   const size_t bytes = arena_bytes_for_width<M>(width);
@@ -24,23 +25,32 @@ RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions
     return RenderStatus::kOutOfMemory;
   }
   Arena arena(buffer.get(), bytes);
-  return render_sld_rows<M>(make.template operator()<typename M::real>(), out, options, *state, arena, error,
-                            warnings);
+  const RenderStatus st =
+      prepare_sld<M>(make.template operator()<typename M::real>(), options, *state, arena, error, warnings);
+  if (st != RenderStatus::kOk) return st;
+  threads = minrt_thread_count(threads, options.height);
+  if (threads == 1) {
+    state->tracer.render(out);
+  } else if (!render_minrt_parallel<M>(state->scene, options.width, options.height, threads, out)) {
+    error.text("cannot allocate memory for ").number(threads).text(" threads");
+    return RenderStatus::kOutOfMemory;
+  }
+  return RenderStatus::kOk;
 }
 
 template <class MakeValues>
 RenderStatus dispatch(Variant v, const MakeValues& make, const RowSink& out, const RenderOptions& options,
-                      Diagnostic& error, const WarningSink& warnings) {
+                      Diagnostic& error, const WarningSink& warnings, int threads) {
   if (variant_name(v) == nullptr) {
     error.text("this precision and shim combination is not built");
     return RenderStatus::kBadOptions;
   }
-  if (v.precision == Precision::kDouble) return run<LibmDouble>(make, out, options, error, warnings);
+  if (v.precision == Precision::kDouble) return run<LibmDouble>(make, out, options, error, warnings, threads);
   switch (v.shims) {
-    case ShimSet::kLibm: return run<LibmFloat>(make, out, options, error, warnings);
-    case ShimSet::kPortable: return run<PortableFloat>(make, out, options, error, warnings);
-    case ShimSet::kPortableFast: return run<PortableFloatFast>(make, out, options, error, warnings);
-    case ShimSet::kPortableMin: return run<PortableFloatMin>(make, out, options, error, warnings);
+    case ShimSet::kLibm: return run<LibmFloat>(make, out, options, error, warnings, threads);
+    case ShimSet::kPortable: return run<PortableFloat>(make, out, options, error, warnings, threads);
+    case ShimSet::kPortableFast: return run<PortableFloatFast>(make, out, options, error, warnings, threads);
+    case ShimSet::kPortableMin: return run<PortableFloatMin>(make, out, options, error, warnings, threads);
   }
   return RenderStatus::kBadOptions;
 }
@@ -59,14 +69,14 @@ const char* variant_name(Variant v) {
 }
 
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
-                            Diagnostic& error, const WarningSink& warnings) {
+                            Diagnostic& error, const WarningSink& warnings, int threads) {
   PpmWriter ppm(out, options.format);
-  return render_variant_rows(v, in, ppm.sink(), options, error, warnings);
+  return render_variant_rows(v, in, ppm.sink(), options, error, warnings, threads);
 }
 
 RenderStatus render_variant_rows(Variant v, ByteSource in, const RowSink& out, const RenderOptions& options,
-                                 Diagnostic& error, const WarningSink& warnings) {
-  return dispatch(v, [&]<class R>() { return SldTextValues<R>(in); }, out, options, error, warnings);
+                                 Diagnostic& error, const WarningSink& warnings, int threads) {
+  return dispatch(v, [&]<class R>() { return SldTextValues<R>(in); }, out, options, error, warnings, threads);
 }
 
 RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_endian, ByteSink out,
@@ -76,7 +86,7 @@ RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_e
   PpmWriter ppm(out, options.format);
   return dispatch(
       v, [&]<class R>() { return send::course::CourseWordValues<R>(words, endian); }, ppm.sink(), options, error,
-      warnings);
+      warnings, 1);
 }
 
 }  // namespace minrt::host

@@ -19,13 +19,14 @@ struct Variant {
 // Name of the math policy behind a variant, or nullptr if not built.
 const char* variant_name(Variant v);
 
-// Allocates the arena once (sized from the limits and the width) and renders.
+// Allocates the arena once (sized from the limits and the width) and renders
+// on `threads` threads (0: every core; the bytes are the same for any count).
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
-                            Diagnostic& error, const WarningSink& warnings);
+                            Diagnostic& error, const WarningSink& warnings, int threads = 1);
 
 // The same into a row sink.
 RenderStatus render_variant_rows(Variant v, ByteSource in, const RowSink& out, const RenderOptions& options,
-                                 Diagnostic& error, const WarningSink& warnings);
+                                 Diagnostic& error, const WarningSink& warnings, int threads = 1);
 
 // The same from the course protocol's scene words (what the board does).
 RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_endian, ByteSink out,

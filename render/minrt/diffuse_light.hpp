@@ -10,22 +10,41 @@ namespace minrt {
 template <MathPolicy M>
 inline auto Tracer<M>::render(const RowSink& out) -> void {
   out.begin(width_, height_);
-  Pixel* prev = lines_[0];
-  Pixel* cur = lines_[1];
-  Pixel* next = lines_[2];
-  pretrace_line(cur, 0, 0);
-  int group_id = 2;
-  for (int y = 0; y < height_; ++y) {
-    if (y < height_ - 1) pretrace_line(next, y + 1, group_id);
-    scan_pixels(y, prev, cur, next);
-    out.row(y, row_);
-    Pixel* old_prev = prev;
-    prev = cur;
-    cur = next;
-    next = old_prev;
-    group_id = add_mod5(group_id, 2);
-  }
+  render_rows(0, height_, out);
   out.end();
+}
+
+// Row r lives in line (r + 1) % 3 and samples from group 2r mod 5 onwards,
+// as in the original's loop. A line keeps what earlier rows left in the
+// slots the latest trace did not reach (see trace_ray), so the rows before
+// y0 are replayed, geometry only, in order into this tracer's own lines.
+// Rows y0 - 1 and y0 are traced in full: row y0 reads its neighbours' 60-ray
+// sums. They are offered to `shared`, and rows below the band are taken
+// from it when another worker has traced them already.
+template <MathPolicy M>
+inline auto Tracer<M>::render_rows(int y0, int y1, const RowSink& out, const SharedRows& shared) -> void {
+  auto line = [&](int r) { return lines_[(r + 1) % 3]; };
+  auto group = [](int r) { return 2 * r % 5; };
+  const size_t line_bytes = sizeof(Pixel) * static_cast<size_t>(width_);
+  for (int r = lines_through_ + 1; r <= y0; ++r) {
+    if (r < y0 - 1) {
+      pretrace_line<false>(line(r), r, group(r));
+    } else {
+      pretrace_line<true>(line(r), r, group(r));
+      if (shared.give != nullptr && y0 > 0) shared.give(shared.ctx, r, line(r), line_bytes);
+    }
+  }
+  if (y0 > lines_through_) lines_through_ = y0;
+  for (int y = y0; y < y1; ++y) {
+    const int r = y + 1;
+    if (r < height_ && r > lines_through_) {
+      if (shared.take == nullptr || !shared.take(shared.ctx, r, line(r), line_bytes))
+        pretrace_line<true>(line(r), r, group(r));
+      lines_through_ = r;
+    }
+    scan_pixels(y, line(y - 1), line(y), line(y + 1));
+    out.row(y, row_);
+  }
 }
 
 template <MathPolicy M>
@@ -111,6 +130,7 @@ inline auto Tracer<M>::try_exploit_neighbors(int x, Pixel* prev, Pixel* cur, Pix
 }
 
 template <MathPolicy M>
+template <bool kFull>
 inline auto Tracer<M>::pretrace_line(Pixel* line, int y, int group_id) -> void {
   const R ydisp = scan_pitch_ * M::from_int(y - center_[1]);
   const R lc0 = ydisp * screeny_[0] + screenz_[0];
@@ -122,11 +142,13 @@ inline auto Tracer<M>::pretrace_line(Pixel* line, int y, int group_id) -> void {
     normalize(dir, false);
     zero3(rgb_);
     copy3(startp_, viewpoint_);
-    trace_ray(0, R(1.0), dir, line[x]);
-    copy3(line[x].rgb, rgb_);
-    line[x].group_id = group_id;
-    pretrace_diffuse_rays(line[x]);
-    group_id = add_mod5(group_id, 1);
+    trace_ray<kFull>(0, R(1.0), dir, line[x]);
+    if constexpr (kFull) {
+      copy3(line[x].rgb, rgb_);
+      line[x].group_id = group_id;
+      pretrace_diffuse_rays(line[x]);
+      group_id = add_mod5(group_id, 1);
+    }
   }
 }
 

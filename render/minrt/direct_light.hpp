@@ -35,11 +35,12 @@ inline auto Tracer<M>::trace_reflections(R diffuse, R hilight_scale, const R* di
 }
 
 template <MathPolicy M>
+template <bool kLight>
 inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> void {
   for (; nref < kMaxDepth; ++nref) {
     if (!judge_intersection(dir)) {
       pixel.surface_ids[nref] = -1;
-      if (nref != 0) {
+      if (kLight && nref != 0) {
         const R hl = -dot(dir, light_);
         if (hl > R(0)) {
           const R ihl = sqr(hl) * hl * energy * beam_;
@@ -68,12 +69,15 @@ inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> vo
     }
     const R w = R(-2.0) * dot(dir, nvector_);
     accum(dir, w, nvector_);
-    const R hilight_scale = energy * obj.hilight;
-    const R bright = -dot(nvector_, light_) * diffuse;
-    const R hilight = -dot(dir, light_);
-    if (adds_light(bright, hilight) && !in_shadow()) add_light(bright, hilight, hilight_scale);
-    setup_startp(intersection_point_);
-    trace_reflections(diffuse, hilight_scale, dir);
+    // Only the geometry the pixel keeps when replaying earlier rows (render_rows).
+    if constexpr (kLight) {
+      const R hilight_scale = energy * obj.hilight;
+      const R bright = -dot(nvector_, light_) * diffuse;
+      const R hilight = -dot(dir, light_);
+      if (adds_light(bright, hilight) && !in_shadow()) add_light(bright, hilight, hilight_scale);
+      setup_startp(intersection_point_);
+      trace_reflections(diffuse, hilight_scale, dir);
+    }
     // original: below this energy the next slot's surface id is not reset
     // and keeps whatever an earlier row left there.
     if (!(R(0.1) < energy)) return;

@@ -47,12 +47,12 @@ inline bool valid_size(int width, int height) {
          height <= limits::kMaxImageHeight;
 }
 
-// Renders the scene whose numbers `values` gives (sld_values.hpp: SLD text,
-// or the course protocol's words on the board) into a row sink.
+// Reads the scene whose numbers `values` gives (sld_values.hpp: SLD text,
+// or the course protocol's words on the board) and initialises the tracer
+// in `state` for it; nothing is rendered yet.
 template <MathPolicy M, class Values>
-RenderStatus render_sld_rows(const Values& values, const RowSink& out, const RenderOptions& options,
-                               RenderState<M>& state, Arena& arena, Diagnostic& error,
-                               const WarningSink& warnings = {}) {
+RenderStatus prepare_sld(const Values& values, const RenderOptions& options, RenderState<M>& state,
+                         Arena& arena, Diagnostic& error, const WarningSink& warnings = {}) {
   using R = typename M::real;
   if (!valid_size(options.width, options.height)) {
     error.text("image size must be between 1x1 and ")
@@ -74,8 +74,17 @@ RenderStatus render_sld_rows(const Values& values, const RowSink& out, const Ren
         .text(" available");
     return RenderStatus::kOutOfMemory;
   }
-  tracer.render(out);
   return RenderStatus::kOk;
+}
+
+// The same, then renders into a row sink.
+template <MathPolicy M, class Values>
+RenderStatus render_sld_rows(const Values& values, const RowSink& out, const RenderOptions& options,
+                               RenderState<M>& state, Arena& arena, Diagnostic& error,
+                               const WarningSink& warnings = {}) {
+  const RenderStatus st = prepare_sld<M>(values, options, state, arena, error, warnings);
+  if (st == RenderStatus::kOk) state.tracer.render(out);
+  return st;
 }
 
 // The same as a PPM image (options.format) on a byte sink.

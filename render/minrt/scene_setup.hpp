@@ -22,16 +22,18 @@ inline auto Tracer<M>::init(const Scene<R>& scene, int width, int height, Arena&
 
   const int stride = consts_total(scene);
   R* consts = arena.alloc_zeroed<R>(size_t{kDirvecCount} * stride);
+  // Zeroed like the original's fresh arrays, whose stale slots are read.
   Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<size_t>(width));
   row_ = arena.alloc_zeroed<uint8_t>(3 * static_cast<size_t>(width));
   if (consts == nullptr || pixels == nullptr || row_ == nullptr) return false;
+  for (int l = 0; l < 3; ++l) lines_[l] = pixels + l * width;
+  lines_through_ = -1;
   for (int g = 0; g < kDirvecGroups; ++g)
     for (int i = 0; i < kDirvecsPerGroup; ++i)
       dirvecs_[g][i].c = consts + (g * kDirvecsPerGroup + i) * stride;
   light_dirvec_.c = consts + kLightDirvec * stride;
   for (int r = 0; r < kMaxReflections; ++r)
     reflections_[r].dvec.c = consts + (kLightDirvec + 1 + r) * stride;
-  for (int l = 0; l < 3; ++l) lines_[l] = pixels + l * width;
 
   init_dirvecs();
   copy3(light_dirvec_.v, light_);

@@ -41,6 +41,16 @@ int pixel_channel(typename M::real x) {
   return M::to_int(x);
 }
 
+// Rows traced in full that workers rendering bands of one image hand to
+// each other (Tracer::render_rows): give offers a row's pixel state, take
+// copies it into `pixels` if some worker gave it. The bytes are what any
+// worker computes for that row, so taking only saves the work.
+struct SharedRows {
+  void* ctx = nullptr;
+  void (*give)(void* ctx, int row, const void* pixels, size_t bytes) = nullptr;
+  bool (*take)(void* ctx, int row, void* pixels, size_t bytes) = nullptr;
+};
+
 template <MathPolicy M>
 class Tracer : private TracerState<M> {
   using S = TracerState<M>;
@@ -78,6 +88,12 @@ class Tracer : private TracerState<M> {
   // Renders the whole image, handing each row to `out` as it is finished.
   void render(const RowSink& out);
 
+  // Rows y0..y1-1 to `out` (no begin/end), the same bytes as render gives
+  // them. Calls on one tracer must go down the image (y0 above the previous
+  // y1 - 1): a tracer replays what it has not traced of the rows above.
+  // Workers rendering in parallel each initialise a tracer of their own.
+  void render_rows(int y0, int y1, const RowSink& out, const SharedRows& shared = {});
+
   int reflection_count() const { return n_reflections_; }
 
  private:
@@ -108,6 +124,7 @@ class Tracer : private TracerState<M> {
   using S::reflections_;
   using S::n_reflections_;
   using S::lines_;
+  using S::lines_through_;
   using S::row_;
   using S::solver_dist_;
   using S::intsec_rectside_;
@@ -305,6 +322,9 @@ class Tracer : private TracerState<M> {
   void trace_reflections(R diffuse, R hilight_scale, const R* dir);
 
   // Follows the eye ray and its mirror reflections, filling `pixel`.
+  // kLight false: only what the pixel keeps (surfaces, points, normals,
+  // energies), no light; for replaying rows (render_rows).
+  template <bool kLight = true>
   void trace_ray(int nref, R energy, R* dir, Pixel& pixel);
 
   // --- diffuse light ------------------------------------------------------
@@ -325,6 +345,8 @@ class Tracer : private TracerState<M> {
 
   // --- rows ---------------------------------------------------------------
 
+  // kFull false: the pixels' geometry only (trace_ray<false>).
+  template <bool kFull>
   void pretrace_line(Pixel* line, int y, int group_id);
   void scan_pixels(int y, Pixel* prev, Pixel* cur, Pixel* next);
 

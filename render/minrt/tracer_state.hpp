@@ -113,6 +113,7 @@ struct TracerState {
   Reflection reflections_[kMaxReflections];
   int n_reflections_ = 0;
   Pixel* lines_[3] = {};
+  int lines_through_ = -1;  // the last row traced into lines_
   uint8_t* row_ = nullptr;  // the finished row, 3 bytes a pixel
 
   R solver_dist_ = 0;

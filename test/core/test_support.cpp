@@ -55,7 +55,7 @@ void collect_warning(void* ctx, const Diagnostic& d) {
 }  // namespace
 
 RenderResult render_bytes(const std::string& sld, int width, int height, PpmFormat format,
-                          host::Variant variant) {
+                          host::Variant variant, int threads) {
   RenderResult r;
   MemorySource src{reinterpret_cast<const uint8_t*>(sld.data()), sld.size()};
   RenderOptions options;
@@ -63,7 +63,7 @@ RenderResult render_bytes(const std::string& sld, int width, int height, PpmForm
   options.height = height;
   options.format = format;
   r.status = host::render_variant(variant, src.source(), ByteSink{&append, &r.image}, options,
-                                  r.error, WarningSink{&collect_warning, &r.warnings});
+                                  r.error, WarningSink{&collect_warning, &r.warnings}, threads);
   return r;
 }
 

@@ -31,8 +31,9 @@ struct RenderResult {
   std::vector<std::string> warnings;
 };
 
+// threads: as minrt --threads (0: every core).
 RenderResult render_bytes(const std::string& sld, int width, int height,
                           PpmFormat format = PpmFormat::kP3,
-                          host::Variant variant = host::Variant{});
+                          host::Variant variant = host::Variant{}, int threads = 1);
 
 }  // namespace minrt::test
