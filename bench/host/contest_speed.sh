@@ -1,58 +1,119 @@
 #!/usr/bin/env bash
-# Render time and instruction count of the host build (double/libm) on
-# contest.sld at 512x512, optionally side by side with a native build of the
-# original program (pass its path; build it yourself, outside this repo).
-#   bench/host/contest_speed.sh [--runs N] [--size N] [--original PATH] [--no-callgrind]
-# Runs alternate between the two programs so machine noise hits both alike;
-# the ratio is of the medians.
+# contest.sld side by side: minrt (double/libm, the exact mode) on one thread
+# and on every core, the original min-rt and, when given, a C port of it.
+# Nothing of the originals is built here: build them yourself outside this
+# repository and pass their paths (docs/performance.md has the exact flags).
+#
+#   bench/host/contest_speed.sh [--runs N] [--size N] [--original PATH]
+#                               [--c-port PATH --c-port-conv PATH] [--no-callgrind]
+#
+# --original: a native build of the original program; it reads the SLD text
+#   on standard input and renders the size compiled into it (rt W H), which
+#   must be --size (checked on the output's header).
+# --c-port: keiichiw/min-rt-c's min-rt, which reads the scene as converted by
+#   that project's conv (--c-port-conv); the conversion is done once, untimed.
+# Runs alternate between the programs so machine noise hits all alike; the
+# ratios are of the medians. Every output is checked to be the same bytes as
+# minrt's. callgrind counts are for single runs (one thread).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-runs=5 size=512 original="" callgrind=1
+runs=5 size=512 original="" cport="" cconv="" callgrind=1
+usage() {
+  echo "usage: $0 [--runs N] [--size N] [--original PATH] [--c-port PATH --c-port-conv PATH] [--no-callgrind]" >&2
+  exit 2
+}
 while (($#)); do
   case $1 in
-    --runs) runs=$2; shift 2 ;;
-    --size) size=$2; shift 2 ;;
-    --original) original=$2; shift 2 ;;
+    --runs) runs=${2:?}; shift 2 ;;
+    --size) size=${2:?}; shift 2 ;;
+    --original) original=${2:?}; shift 2 ;;
+    --c-port) cport=${2:?}; shift 2 ;;
+    --c-port-conv) cconv=${2:?}; shift 2 ;;
     --no-callgrind) callgrind=0; shift ;;
-    *) echo "usage: $0 [--runs N] [--size N] [--original PATH] [--no-callgrind]" >&2; exit 2 ;;
+    *) usage ;;
   esac
 done
+[[ $runs =~ ^[1-9][0-9]*$ && $size =~ ^[1-9][0-9]*$ ]] || usage
+[[ -n $cport && -z $cconv ]] && { echo "--c-port needs --c-port-conv (its scene converter)" >&2; exit 2; }
 minrt=$root/build/release/host/minrt
 scene=${MINRT_SHARED_DIR:-$root/../shared}/scenes/contest.sld
 [[ -x $minrt ]] || { echo "build first: scripts/setup.sh" >&2; exit 1; }
 [[ -f $scene ]] || { echo "missing $scene" >&2; exit 1; }
+for p in "$original" "$cport" "$cconv"; do
+  [[ -z $p || -x $p ]] || { echo "not an executable: $p" >&2; exit 1; }
+done
 
-seconds() {  # stdin-file command... ; prints wall seconds
-  local input=$1 t0 t1; shift
-  t0=$(date +%s.%N); "$@" <"$input" >/dev/null; t1=$(date +%s.%N)
-  awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.3f\n", b - a}'
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cores=$(nproc)
+
+# name | input file | command...
+names=(minrt-1 "minrt-$cores") inputs=("$scene" "$scene")
+cmds=("$minrt --threads 1 --size ${size}x${size}" "$minrt --size ${size}x${size}")
+if [[ -n $original ]]; then names+=(original); inputs+=("$scene"); cmds+=("$original"); fi
+if [[ -n $cport ]]; then
+  "$cconv" <"$scene" >"$tmp/contest.bin"
+  names+=(c-port); inputs+=("$tmp/contest.bin"); cmds+=("$cport")
+fi
+
+# Same bytes from everyone (the comparison is void otherwise).
+"$minrt" --threads 1 --size "${size}x${size}" <"$scene" >"$tmp/ref.ppm"
+for i in "${!names[@]}"; do
+  ${cmds[$i]} <"${inputs[$i]}" >"$tmp/out.ppm"
+  cmp -s "$tmp/ref.ppm" "$tmp/out.ppm" || {
+    echo "${names[$i]}: output differs from minrt's at ${size}x${size} ($(head -c 20 "$tmp/out.ppm" | head -2 | tr '\n' ' '))" >&2
+    exit 1
+  }
+done
+
+seconds() {  # input-file command... ; prints "wall cpu" seconds (cpu: user + system)
+  local input=$1; shift
+  /usr/bin/time -f '%e %U %S' -o "$tmp/time" "$@" <"$input" >/dev/null
+  awk '{printf "%.3f %.3f\n", $1, $2 + $3}' "$tmp/time"
 }
 median() { sort -g | awk '{a[NR]=$1} END{print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 
-ours=() theirs=()
-for ((i = 0; i < runs; i++)); do
-  ours+=("$(seconds "$scene" "$minrt" --size "${size}x${size}")")
-  # The original reads the scene on stdin; as published it renders 512x512.
-  [[ -n $original ]] && theirs+=("$(seconds "$scene" "$original")")
+declare -A times cpus
+for ((r = 0; r < runs; r++)); do
+  for i in "${!names[@]}"; do
+    # shellcheck disable=SC2086
+    read -r w c < <(seconds "${inputs[$i]}" ${cmds[$i]})
+    times[$i]+="$w " cpus[$i]+="$c "
+  done
 done
-m_ours=$(printf '%s\n' "${ours[@]}" | median)
-printf 'contest.sld %sx%s, %d runs\n' "$size" "$size" "$runs"
-printf 'minrt (double/libm)  median %.3f s  [%s]\n' "$m_ours" "${ours[*]}"
-if [[ -n $original ]]; then
-  m_theirs=$(printf '%s\n' "${theirs[@]}" | median)
-  printf 'original             median %.3f s  [%s]\n' "$m_theirs" "${theirs[*]}"
-  awk -v a="$m_theirs" -v b="$m_ours" 'BEGIN{printf "speed-up             %.2fx\n", a / b}'
-fi
+
+cpu=$(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo)
+printf 'cpu: %s, %d cores; load average %s\n' "$cpu" "$cores" "$(cut -d' ' -f1-3 /proc/loadavg)"
+printf 'contest.sld %sx%s, same bytes (sha256 %s), medians of %d interleaved runs:\n' \
+  "$size" "$size" "$(sha256sum "$tmp/ref.ppm" | cut -c1-16)" "$runs"
+declare -A med cmed
+printf '  %-12s %8s %8s   %s\n' program wall cpu 'wall times of the runs'
+for i in "${!names[@]}"; do
+  med[$i]=$(tr ' ' '\n' <<<"${times[$i]}" | grep . | median)
+  cmed[$i]=$(tr ' ' '\n' <<<"${cpus[$i]}" | grep . | median)
+  printf '  %-12s %7.3fs %7.3fs   [%s]\n' "${names[$i]}" "${med[$i]}" "${cmed[$i]}" "${times[$i]% }"
+done
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN{printf "%.2fx", a / b}'; }
+printf 'speed-ups (wall; cpu for one thread):\n'
+printf '  minrt-%d against minrt-1     %s\n' "$cores" "$(ratio "${med[0]}" "${med[1]}")"
+for i in "${!names[@]}"; do
+  ((i >= 2)) || continue
+  printf '  minrt-1 against %-12s %s (cpu %s)\n' "${names[$i]}" "$(ratio "${med[$i]}" "${med[0]}")" \
+    "$(ratio "${cmed[$i]}" "${cmed[0]}")"
+  printf '  minrt-%d against %-12s %s\n' "$cores" "${names[$i]}" "$(ratio "${med[$i]}" "${med[1]}")"
+done
+
 if ((callgrind)); then
-  count() {  # stdin-file command...
-    local input=$1 out; shift
-    out=$(mktemp)
-    valgrind --tool=callgrind --callgrind-out-file="$out" "$@" <"$input" 2>&1 >/dev/null |
-      awk '/Collected/ {print $NF}'
-    rm -f "$out"
-  }
-  printf 'minrt instructions     %s\n' "$(count "$scene" "$minrt" --size "${size}x${size}")"
-  if [[ -n $original ]]; then
-    printf 'original instructions  %s\n' "$(count "$scene" "$original")"
-  fi
+  printf 'instructions (callgrind, one run each):\n'
+  declare -A ir
+  for i in "${!names[@]}"; do
+    ((i == 1)) && continue
+    # shellcheck disable=SC2086
+    ir[$i]=$(valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" ${cmds[$i]} <"${inputs[$i]}" 2>&1 >/dev/null |
+      awk '/Collected/ {print $NF}')
+    printf '  %-12s %15s\n' "${names[$i]}" "${ir[$i]}"
+  done
+  for i in "${!ir[@]}"; do
+    ((i >= 2)) && printf '  %s / minrt-1: %s\n' "${names[$i]}" "$(ratio "${ir[$i]}" "${ir[0]}")"
+  done
 fi
