@@ -4,9 +4,10 @@
 # Nothing of the originals is built here: build them yourself outside this
 # repository and pass their paths (docs/performance.md has the exact flags).
 #
-#   bench/host/contest_speed.sh [--runs N] [--size N] [--original PATH]
+#   bench/host/contest_speed.sh [--runs N] [--size N] [--minrt PATH] [--original PATH]
 #                               [--c-port PATH --c-port-conv PATH] [--no-callgrind]
 #
+# --minrt: the minrt binary (default build/release/host/minrt).
 # --original: a native build of the original program; it reads the SLD text
 #   on standard input and renders the size compiled into it (rt W H), which
 #   must be --size (checked on the output's header).
@@ -17,15 +18,16 @@
 # minrt's. callgrind counts are for single runs (one thread).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-runs=5 size=512 original="" cport="" cconv="" callgrind=1
+runs=5 size=512 minrt=$root/build/release/host/minrt original="" cport="" cconv="" callgrind=1
 usage() {
-  echo "usage: $0 [--runs N] [--size N] [--original PATH] [--c-port PATH --c-port-conv PATH] [--no-callgrind]" >&2
+  echo "usage: $0 [--runs N] [--size N] [--minrt PATH] [--original PATH] [--c-port PATH --c-port-conv PATH] [--no-callgrind]" >&2
   exit 2
 }
 while (($#)); do
   case $1 in
     --runs) runs=${2:?}; shift 2 ;;
     --size) size=${2:?}; shift 2 ;;
+    --minrt) minrt=${2:?}; shift 2 ;;
     --original) original=${2:?}; shift 2 ;;
     --c-port) cport=${2:?}; shift 2 ;;
     --c-port-conv) cconv=${2:?}; shift 2 ;;
@@ -35,7 +37,6 @@ while (($#)); do
 done
 [[ $runs =~ ^[1-9][0-9]*$ && $size =~ ^[1-9][0-9]*$ ]] || usage
 [[ -n $cport && -z $cconv ]] && { echo "--c-port needs --c-port-conv (its scene converter)" >&2; exit 2; }
-minrt=$root/build/release/host/minrt
 scene=${MINRT_SHARED_DIR:-$root/../shared}/scenes/contest.sld
 [[ -x $minrt ]] || { echo "build first: scripts/setup.sh" >&2; exit 1; }
 [[ -f $scene ]] || { echo "missing $scene" >&2; exit 1; }
