@@ -145,6 +145,8 @@ const char* general_path_name(uint32_t path) {
   switch (path) {
     case general::kPathBasic: return "basic (spheres, suns)";
     case general::kPathDirect: return "direct (planes, triangles, bulbs, lenses, exposure)";
+    case general::kPathPhong: return "phong (miniRT: spheres, planes)";
+    case general::kPathPhongFull: return "phong-full (miniRT: every element)";
     default: return "full (every feature)";
   }
 }

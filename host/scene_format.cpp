@@ -6,6 +6,7 @@ bool parse_scene_format(const std::string& name, SceneFormat& out) {
   if (name == "sld") out = SceneFormat::kSld;
   else if (name == "cs418") out = SceneFormat::kCs418;
   else if (name == "jaworski") out = SceneFormat::kJaworski;
+  else if (name == "minirt") out = SceneFormat::kMinirt;
   else return false;
   return true;
 }
@@ -16,6 +17,7 @@ SceneFormat detect_scene_format(const std::string& path, const std::string& head
     return path.size() >= t.size() && path.compare(path.size() - t.size(), t.size(), t) == 0;
   };
   if (ends_with(".sld") || ends_with(".SLD")) return SceneFormat::kSld;
+  if (ends_with(".rt")) return SceneFormat::kMinirt;
   std::size_t i = 0;
   for (;;) {  // blanks, and Jaworski's # comments (CS418 and SLD have none)
     while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;
@@ -45,6 +47,8 @@ SceneFormat detect_scene_format(const std::string& path, const std::string& head
       "dof", "gi"};
   for (const char* k : kCs418Words)
     if (word == k) return SceneFormat::kCs418;
+  for (const char* k : {"A", "C", "L", "sp", "pl", "cy", "co", "plc", "spt"})
+    if (word == k) return SceneFormat::kMinirt;
   return SceneFormat::kSld;
 }
 

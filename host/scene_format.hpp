@@ -1,16 +1,18 @@
 // Which reader a scene file goes to: --scene-format when given, else the
 // file's extension, else its first word (SPEC.md 5.2: `png` starts a CS418
 // file, a header field such as `imWidth` a Jaworski one (after `#`
-// comments); SLD starts with numbers).
+// comments); SLD starts with numbers; a `.rt` name or a miniRT element
+// identifier (A, C, L, sp, ...) means miniRT, whose reader then insists on
+// the `.rt` name).
 #pragma once
 
 #include <string>
 
 namespace minrt::host {
 
-enum class SceneFormat { kAuto, kSld, kCs418, kJaworski };
+enum class SceneFormat { kAuto, kSld, kCs418, kJaworski, kMinirt };
 
-// "sld", "cs418", "jaworski" -> format; false for an unknown name.
+// "sld", "cs418", "jaworski", "minirt" -> format; false for an unknown name.
 bool parse_scene_format(const std::string& name, SceneFormat& out);
 
 // Decides from the path and the first bytes of the file.

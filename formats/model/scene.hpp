@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "core/math/vec3.hpp"
+#include "formats/model/solid.hpp"
 
 namespace minrt::model {
 
@@ -22,6 +23,8 @@ struct Material {
   R ior = R(1.458);
   R roughness = R(0);      // sigma of the Gaussian normal perturbation
   int32_t texture = kNoTexture;
+  int32_t bump = kNoTexture;  // height map perturbing the normal (miniRT spt)
+  bool checker = false;       // checkerboard of the colour and its complement (miniRT plc)
 };
 
 template <class R>
@@ -58,7 +61,8 @@ struct Triangle {
   uint32_t order;
 };
 
-enum class LightKind : uint8_t { kSun, kBulb };
+// kPoint: a bulb without falloff (miniRT).
+enum class LightKind : uint8_t { kSun, kBulb, kPoint };
 
 template <class R>
 struct Light {
@@ -89,8 +93,9 @@ struct Texture {
 };
 
 // How the tracer turns linear light into bytes and what it does at the depth
-// limit: per format (SPEC.md 5.1). Only CS418's rules exist so far.
-enum class Finish : uint8_t { kCs418 };
+// limit: per format (SPEC.md 5.1). kMinirt: ambient, Lambert and Phong
+// terms, clamp and floor to bytes (render/general/phong_shading.hpp).
+enum class Finish : uint8_t { kCs418, kMinirt };
 
 template <class R>
 struct Scene {
@@ -102,6 +107,7 @@ struct Scene {
   bool exposure = false;
   R exposure_value = R(0);
   Finish finish = Finish::kCs418;
+  Vec3<R> ambient{};  // kMinirt: ratio * colour / 255
   Camera<R> camera;
 
   const Material<R>* materials = nullptr;
@@ -112,6 +118,8 @@ struct Scene {
   uint32_t plane_count = 0;
   const Triangle<R>* triangles = nullptr;
   uint32_t triangle_count = 0;
+  const Solid<R>* solids = nullptr;
+  uint32_t solid_count = 0;
   const Light<R>* lights = nullptr;
   uint32_t light_count = 0;
   const Texture* textures = nullptr;

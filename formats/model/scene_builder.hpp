@@ -44,6 +44,15 @@ class SceneBuilder {
     ++planes_;
     return true;
   }
+  bool add_solid(const Solid<R>& solid) {
+    Record* r = push(Kind::kSolid);
+    if (r == nullptr) return false;
+    r->solid = solid;
+    r->solid.material = current_material();
+    r->solid.order = objects_++;
+    ++solids_;
+    return true;
+  }
   bool add_vertex(const Vec3<R>& position, R u, R v) {
     Record* r = push(Kind::kVertex);
     if (r == nullptr) return false;
@@ -79,15 +88,16 @@ class SceneBuilder {
     auto* planes = arena_.alloc_zeroed<Plane<R>>(planes_);
     auto* triangles = arena_.alloc_zeroed<Triangle<R>>(triangles_);
     auto* lights = arena_.alloc_zeroed<Light<R>>(lights_);
+    auto* solids = arena_.alloc_zeroed<Solid<R>>(solids_);
     // Vertices are needed only to build the triangles: scratch at the top.
     auto* vertices = arena_.alloc_top<Vertex<R>>(vertices_ > 0 ? vertices_ : 1);
     if (materials == nullptr || spheres == nullptr || planes == nullptr || triangles == nullptr ||
-        lights == nullptr || vertices == nullptr) {
+        lights == nullptr || solids == nullptr || vertices == nullptr) {
       arena_.release_top(mark_);
       return false;
     }
     materials[0] = Material<R>{};
-    uint32_t nm = 1, ns = 0, np = 0, nt = 0, nl = 0, nv = 0;
+    uint32_t nm = 1, ns = 0, np = 0, nt = 0, nl = 0, nv = 0, nc = 0;
     for (uint32_t i = 0; i < count_; ++i) {
       const Record& r = first_[-static_cast<ptrdiff_t>(i)];
       switch (r.kind) {
@@ -97,6 +107,7 @@ class SceneBuilder {
         case Kind::kVertex: vertices[nv++] = r.vertex; break;
         case Kind::kTriangle: triangles[nt++] = make_triangle(r.tri, vertices); break;
         case Kind::kLight: lights[nl++] = r.light; break;
+        case Kind::kSolid: solids[nc++] = r.solid; break;
       }
     }
     arena_.release_top(mark_);
@@ -111,12 +122,14 @@ class SceneBuilder {
     scene.triangle_count = triangles_;
     scene.lights = lights;
     scene.light_count = lights_;
+    scene.solids = solids;
+    scene.solid_count = solids_;
     return true;
   }
 
 
  private:
-  enum class Kind : uint8_t { kMaterial, kSphere, kPlane, kVertex, kTriangle, kLight };
+  enum class Kind : uint8_t { kMaterial, kSphere, kPlane, kVertex, kTriangle, kLight, kSolid };
   struct TriangleRef {
     uint32_t index[3];
     uint32_t material;
@@ -131,6 +144,7 @@ class SceneBuilder {
       Vertex<R> vertex;
       TriangleRef tri;
       Light<R> light;
+      Solid<R> solid;
     };
   };
 
@@ -174,7 +188,7 @@ class SceneBuilder {
   size_t mark_;
   Record* first_ = nullptr;
   uint32_t count_ = 0;
-  uint32_t materials_ = 0, spheres_ = 0, planes_ = 0, vertices_ = 0, triangles_ = 0, lights_ = 0;
+  uint32_t materials_ = 0, spheres_ = 0, planes_ = 0, vertices_ = 0, triangles_ = 0, lights_ = 0, solids_ = 0;
   uint32_t objects_ = 0;
 
  public:

@@ -17,6 +17,7 @@ inline constexpr int kBvhStack = kBvhMaxDepth + 4;
 inline constexpr int kBvhLeafSize = 4;
 inline constexpr int kBvhBins = 12;
 inline constexpr uint32_t kTriangleBit = 0x80000000u;  // in a primitive reference
+inline constexpr uint32_t kSolidBit = 0x40000000u;     // a cylinder or cone
 
 template <class R>
 struct Bounds {
@@ -53,7 +54,7 @@ struct BvhNode {
 template <class R>
 struct Bvh {
   const BvhNode<R>* nodes = nullptr;
-  const uint32_t* refs = nullptr;  // sphere index, or triangle index | kTriangleBit
+  const uint32_t* refs = nullptr;  // sphere index, triangle index | kTriangleBit, solid index | kSolidBit
   uint32_t node_count = 0;
 };
 
@@ -83,7 +84,18 @@ Bounds<R> padded(Bounds<R> b) {
 template <class R>
 Bounds<R> bounds_of(const model::Scene<R>& s, uint32_t ref) {
   Bounds<R> b = Bounds<R>::empty();
-  if ((ref & kTriangleBit) != 0) {
+  if ((ref & kSolidBit) != 0) {
+    // Both end discs inside cubes of the larger radius.
+    const model::Solid<R>& c = s.solids[ref & ~kSolidBit];
+    const R top = c.radius + c.slope * c.height;
+    R r = c.radius > top ? c.radius : top;
+    if (r < R(0)) r = -r;
+    const Vec3<R> e{r, r, r}, tip = c.base + c.axis * c.height;
+    b.grow(c.base - e);
+    b.grow(c.base + e);
+    b.grow(tip - e);
+    b.grow(tip + e);
+  } else if ((ref & kTriangleBit) != 0) {
     const model::Triangle<R>& t = s.triangles[ref & ~kTriangleBit];
     b.grow(t.p0);
     b.grow(t.p1);
@@ -106,12 +118,12 @@ constexpr size_t bvh_footprint(uint32_t n) {
          Arena::footprint<Bounds<R>>(n) + Arena::footprint<Vec3<R>>(n);
 }
 
-// Builds over every sphere and triangle. False when the arena is too small
+// Builds over every sphere, triangle and solid. False when the arena is too small
 // (or, for a pathological scene, the tree would be deeper than the stack).
 template <class M>
 bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<typename M::real>& out) {
   using R = typename M::real;
-  const uint32_t n = scene.sphere_count + scene.triangle_count;
+  const uint32_t n = scene.sphere_count + scene.triangle_count + scene.solid_count;
   out = Bvh<R>{};
   if (n == 0) return true;
   auto* nodes = arena.alloc_zeroed<BvhNode<R>>(2 * static_cast<size_t>(n));
@@ -124,7 +136,10 @@ bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<ty
     return false;
   }
   for (uint32_t i = 0; i < n; ++i) {
-    refs[i] = i < scene.sphere_count ? i : (i - scene.sphere_count) | kTriangleBit;
+    const uint32_t polys = scene.sphere_count + scene.triangle_count;
+    refs[i] = i < scene.sphere_count ? i
+              : i < polys            ? (i - scene.sphere_count) | kTriangleBit
+                                     : (i - polys) | kSolidBit;
     boxes[i] = bvh_detail::bounds_of(scene, refs[i]);
     centers[i] = (boxes[i].lo + boxes[i].hi) * R(0.5);
   }

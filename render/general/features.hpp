@@ -21,17 +21,21 @@ enum Feature : uint32_t {
   kLensOrAa = 1u << 7,   // several samples per pixel or depth of field
   kLenses = 1u << 8,     // fisheye or panorama
   kExposure = 1u << 9,
+  kSolids = 1u << 10,  // cylinders and cones (miniRT)
+  kPhong = 1u << 11,   // miniRT's finish: ambient, Lambert, Phong, clamp
 };
-inline constexpr uint32_t kAllFeatures = (1u << 10) - 1;
+inline constexpr uint32_t kAllFeatures = (1u << 12) - 1;
 
 template <class R>
 uint32_t features_of(const model::Scene<R>& s) {
   uint32_t f = 0;
   if (s.plane_count > 0) f |= kPlanes;
   if (s.triangle_count > 0) f |= kTriangles;
+  if (s.solid_count > 0) f |= kSolids;
+  if (s.finish == model::Finish::kMinirt) f |= kPhong;
   for (uint32_t i = 0; i < s.material_count; ++i) {
     const model::Material<R>& m = s.materials[i];
-    if (m.texture != model::kNoTexture) f |= kTextures;
+    if (m.texture != model::kNoTexture || m.bump != model::kNoTexture) f |= kTextures;
     const Vec3<R> z{};
     auto nonzero = [&](const Vec3<R>& v) { return v.x != z.x || v.y != z.y || v.z != z.z; };
     if (nonzero(m.shininess) || nonzero(m.transparency)) f |= kSecondary;

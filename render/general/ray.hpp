@@ -14,7 +14,7 @@ struct Ray {
 };
 
 // What a hit is on: an index into the scene's array of that kind.
-enum class HitKind : uint8_t { kNone, kSphere, kPlane, kTriangle };
+enum class HitKind : uint8_t { kNone, kSphere, kPlane, kTriangle, kSolid };
 
 template <class R>
 struct Hit {
@@ -23,6 +23,7 @@ struct Hit {
   uint32_t index = 0;
   uint32_t order = 0;  // file order: on equal t the later object wins
   R b1 = R(0), b2 = R(0);  // triangle barycentrics
+  uint8_t part = 0;        // solid: side or which cap (solid_intersect.hpp)
 
   // CS418's tie rule (SPEC.md 1.3): equal distance, later object.
   bool closer(R t2, uint32_t order2) const {

@@ -23,6 +23,9 @@ namespace minrt::general {
 inline constexpr uint32_t kPathBasic = 0;  // spheres and suns
 inline constexpr uint32_t kPathDirect = kPlanes | kTriangles | kBulbs | kExposure | kLenses;
 inline constexpr uint32_t kPathFull = kAllFeatures;
+// miniRT's: spheres and planes, then everything the format has.
+inline constexpr uint32_t kPathPhong = kPlanes | kPhong;
+inline constexpr uint32_t kPathPhongFull = kPlanes | kPhong | kSolids | kTextures;
 
 // Reflected, refracted and GI rays whose weight (the product of the
 // shininess, transparency and colour factors on the way to the pixel) is
@@ -52,6 +55,8 @@ class Renderer {
     light_dirs_ = dirs;
     features_ = features_of(scene);
     if (force_full) path_ = kPathFull;
+    else if ((features_ & ~kPathPhong) == 0 && (features_ & kPhong) != 0) path_ = kPathPhong;
+    else if ((features_ & ~kPathPhongFull) == 0 && (features_ & kPhong) != 0) path_ = kPathPhongFull;
     else if ((features_ & ~kPathBasic) == 0) path_ = kPathBasic;
     else if ((features_ & ~kPathDirect) == 0) path_ = kPathDirect;
     else path_ = kPathFull;
@@ -67,6 +72,8 @@ class Renderer {
     switch (path_) {
       case kPathBasic: row<kPathBasic>(y, rgba); break;
       case kPathDirect: row<kPathDirect>(y, rgba); break;
+      case kPathPhong: row<kPathPhong>(y, rgba); break;
+      case kPathPhongFull: row<kPathPhongFull>(y, rgba); break;
       default: row<kPathFull>(y, rgba); break;
     }
   }
@@ -112,6 +119,16 @@ class Renderer {
         ++hits;
       }
       uint8_t* px_out = out + 4 * x;
+      if constexpr ((F & kPhong) != 0) {
+        if (s.finish == model::Finish::kMinirt) {  // opaque, black where nothing is hit
+          const Vec3<R> c = hits == 0 ? Vec3<R>{} : sum;
+          px_out[0] = minirt_byte<M>(c.x);
+          px_out[1] = minirt_byte<M>(c.y);
+          px_out[2] = minirt_byte<M>(c.z);
+          px_out[3] = 255;
+          continue;
+        }
+      }
       if (hits == 0) {
         px_out[0] = px_out[1] = px_out[2] = px_out[3] = 0;
         continue;

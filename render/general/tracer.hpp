@@ -14,6 +14,7 @@
 #include "render/general/features.hpp"
 #include "render/general/intersect.hpp"
 #include "render/general/sampling.hpp"
+#include "render/general/solid_intersect.hpp"
 
 namespace minrt::general {
 
@@ -118,6 +119,15 @@ class Tracer {
   void leaf(const BvhNode<R>& node, const Ray<R>& ray, R eps, Hit<R>& h) const {
     for (uint32_t k = 0; k < node.count; ++k) {
       const uint32_t ref = bvh_.refs[node.index + k];
+      if constexpr ((F & kSolids) != 0) {
+        if ((ref & kSolidBit) != 0) {
+          const uint32_t i = ref & ~kSolidBit;
+          uint8_t part = 0;
+          const R t = hit_solid<M>(s_.solids[i], ray, eps, part);
+          if (t > eps && h.offer(t, HitKind::kSolid, i, s_.solids[i].order)) h.part = part;
+          continue;
+        }
+      }
       if constexpr ((F & kTriangles) != 0) {
         if ((ref & kTriangleBit) != 0) {
           const uint32_t i = ref & ~kTriangleBit;
@@ -139,6 +149,13 @@ class Tracer {
   // Does the primitive `ref` (a BVH reference) block the ray before `limit`?
   bool blocks(uint32_t ref, const Ray<R>& ray, R eps, R limit) const {
     R t;
+    if constexpr ((F & kSolids) != 0) {
+      if ((ref & kSolidBit) != 0) {
+        uint8_t part = 0;
+        t = hit_solid<M>(s_.solids[ref & ~kSolidBit], ray, eps, part);
+        return t > eps && t < limit;
+      }
+    }
     if constexpr ((F & kTriangles) != 0) {
       if ((ref & kTriangleBit) != 0) {
         R b1, b2;
@@ -195,6 +212,9 @@ class Tracer {
   }
 
   Vec3<R> shade(const Ray<R>& ray, const Hit<R>& h, int depth, int gi_level, R weight, CounterRng& rng) const {
+    if constexpr ((F & kPhong) != 0) {
+      if (s_.finish == model::Finish::kMinirt) return shade_phong(ray, h);
+    }
     const Vec3<R> p = ray.origin + ray.dir * h.t;
     Vec3<R> n;
     uint32_t mat_index;
@@ -294,6 +314,9 @@ class Tracer {
     }
   }
 
+  // miniRT's shading (phong_shading.hpp).
+  Vec3<R> shade_phong(const Ray<R>& ray, const Hit<R>& h) const;
+
   // Nearest texel, rounding to the closest one (SPEC.md 1.3), decoded from
   // sRGB by table.
   Vec3<R> texel(const Hit<R>& h, const Vec3<R>& p, int32_t id) const {
@@ -343,3 +366,5 @@ class Tracer {
 };
 
 }  // namespace minrt::general
+
+#include "render/general/phong_shading.hpp"

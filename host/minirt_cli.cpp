@@ -1,0 +1,120 @@
+#include "minirt_cli.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "file_input.hpp"
+#include "image_window.hpp"
+#include "minirt_render.hpp"
+#include "posix/output_file.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
+
+bool ends_with(const std::string& s, const char* tail) {
+  const std::size_t n = std::strlen(tail);
+  return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
+}
+
+bool write_ppm(std::FILE* f, const RgbaImage& img) {
+  std::fprintf(f, "P6\n%d %d\n255\n", img.width, img.height);
+  std::vector<uint8_t> row(static_cast<std::size_t>(img.width) * 3);
+  for (int y = 0; y < img.height; ++y) {
+    const uint8_t* src = img.rgba.data() + static_cast<std::size_t>(y) * img.width * 4;
+    for (int x = 0; x < img.width; ++x)
+      for (int c = 0; c < 3; ++c) row[3 * x + c] = src[4 * x + c];
+    if (std::fwrite(row.data(), 1, row.size(), f) != row.size()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void print_minirt_error(const std::string& line) { std::fprintf(stderr, "Error\n%s\n", line.c_str()); }
+
+bool has_rt_extension(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  return base.size() > 3 && ends_with(base, ".rt");
+}
+
+int run_minirt_cli(MinirtCli& cli) {
+  const std::string& path = cli.scene_path;
+  if (path == "-" || path.empty()) {
+    print_minirt_error("minrt: a miniRT scene is read from a file whose name ends in .rt, not from standard input");
+    return kMinirtExitError;
+  }
+  if (!has_rt_extension(path)) {
+    print_minirt_error(path + ": a miniRT scene file's name must end in .rt");
+    return kMinirtExitError;
+  }
+  std::string text, why;
+  if (!read_whole_file(path, text, why, kMaxSceneBytes)) {
+    print_minirt_error(path + ": cannot read the scene: " + why);
+    return kMinirtExitError;
+  }
+  std::string base_dir;
+  const std::size_t slash = path.rfind('/');
+  if (slash != std::string::npos) base_dir = path.substr(0, slash + 1);
+
+  // Where the image goes, checked before the render.
+  const bool write = cli.output_path != nullptr;
+  const std::string out_path = write ? cli.output_path : "";
+  if (write) {
+    if (!ends_with(out_path, ".png") && !ends_with(out_path, ".ppm") && out_path != "-") {
+      print_minirt_error("minrt: the output " + out_path + " must end in .png or .ppm");
+      return kMinirtExitError;
+    }
+    if (!check_output_target(out_path, cli.write_through, why)) {
+      print_minirt_error("minrt: " + why);
+      return kMinirtExitError;
+    }
+  }
+  const int width = cli.width > 0 ? cli.width : kMinirtDefaultWidth;
+  const int height = cli.height > 0 ? cli.height : kMinirtDefaultHeight;
+  GeneralResult result;
+  std::string error;
+  if (!render_minirt(text, path, base_dir, width, height, cli.options, result, error)) {
+    print_minirt_error(error);
+    return kMinirtExitError;
+  }
+  if (cli.stats)
+    std::fprintf(stderr, "minrt: %s: %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d thread%s\n",
+                 path.c_str(), width, height, result.path, result.features, result.parse_seconds, result.build_seconds,
+                 result.render_seconds, result.threads, result.threads == 1 ? "" : "s");
+  if (write) {
+    AtomicOutput output;
+    if (!output.open(out_path, cli.write_through, why)) {
+      print_minirt_error("minrt: " + why);
+      return kMinirtExitError;
+    }
+    bool ok;
+    if (ends_with(out_path, ".ppm")) {
+      ok = write_ppm(output.file(), result.image);
+      if (!ok) why = std::strerror(errno);
+    } else {
+      ok = write_png(output.file(), result.image, why);
+    }
+    if (!ok || !output.commit(why)) {
+      output.discard();
+      print_minirt_error("minrt: cannot write " + out_path + ": " + why);
+      return kMinirtExitError;
+    }
+    if (!cli.show) return 0;
+  }
+  if (!show_image(result.image, "minrt: " + path, why)) {
+    if (write) {
+      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+      return 0;
+    }
+    print_minirt_error("minrt: cannot open a window: " + why + " (give -o FILE.png to write the image instead)");
+    return kMinirtExitError;
+  }
+  return 0;
+}
+
+}  // namespace minrt::host

@@ -1,0 +1,175 @@
+#include "minirt_render.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "core/base/arena.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "formats/minirt/minirt_camera.hpp"
+#include "formats/minirt/minirt_reader.hpp"
+#include "formats/model/scene_builder.hpp"
+#include "ppm_texture.hpp"
+#include "render/general/render.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+// Texture files, decoded once per name.
+class TextureFiles {
+ public:
+  explicit TextureFiles(std::string base_dir) : base_(std::move(base_dir)) {}
+
+  static int32_t resolve(void* ctx, const char* name, Diagnostic& error) {
+    return static_cast<TextureFiles*>(ctx)->find(name, error);
+  }
+
+  int32_t find(const std::string& name, Diagnostic& error) {
+    auto it = ids_.find(name);
+    if (it != ids_.end()) return it->second;
+    if (textures_.size() >= static_cast<size_t>(minirt::kMaxTextures)) {
+      error.text("more than ").number(minirt::kMaxTextures).text(" texture files");
+      return -1;
+    }
+    std::string why, tried;
+    auto tex = std::make_unique<RgbTexture>();
+    bool ok = false;
+    for (const std::string& path : minirt_texture_candidates(base_, name)) {
+      std::string reason;
+      if (read_ppm(path, *tex, reason)) {
+        ok = true;
+        break;
+      }
+      // A file that exists but is not a good PPM is the error to report.
+      if (why.empty() || reason.find("No such file") == std::string::npos) {
+        why = path + ": " + reason;
+        if (reason.find("No such file") == std::string::npos) break;
+      }
+    }
+    if (!ok) {
+      error.text(why.c_str());
+      return -1;
+    }
+    model::Texture t;
+    t.width = tex->width;
+    t.height = tex->height;
+    t.rgb = tex->rgb.data();
+    data_.push_back(std::move(tex));
+    textures_.push_back(t);
+    const auto id = static_cast<int32_t>(textures_.size() - 1);
+    ids_[name] = id;
+    return id;
+  }
+
+  const model::Texture* table() const { return textures_.empty() ? nullptr : textures_.data(); }
+  uint32_t count() const { return static_cast<uint32_t>(textures_.size()); }
+
+ private:
+  std::string base_;
+  std::map<std::string, int32_t> ids_;
+  std::vector<std::unique_ptr<RgbTexture>> data_;
+  std::vector<model::Texture> textures_;
+};
+
+template <class M>
+bool render_with(const std::string& text, const std::string& name, const std::string& base_dir, int width,
+                 int height, const GeneralOptions& options, GeneralResult& out, std::string& error) {
+  using R = typename M::real;
+  size_t lines = 1;
+  for (char c : text) lines += c == '\n';
+  const size_t record = model::SceneBuilder<R>::record_bytes();
+  const size_t bytes =
+      lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  const Clock::time_point t_parse = Clock::now();
+  model::SceneBuilder<R> builder(arena);
+  TextureFiles textures(base_dir);
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, &textures});
+  model::Scene<R> scene;
+  minirt::View<R> view;
+  Diagnostic d;
+  if (reader.read(scene, view, d) != minirt::ReadStatus::kOk) {
+    error = d.has_pos ? name + ":" + std::to_string(d.pos.line) + ": " + d.message : name + ": " + d.message;
+    return false;
+  }
+  if (!builder.finish(scene)) {
+    error = name + ": the scene does not fit in memory";
+    return false;
+  }
+  scene.width = width;
+  scene.height = height;
+  scene.camera = minirt::place_camera<M>(view, width, height);
+  scene.textures = textures.table();
+  scene.texture_count = textures.count();
+  out.parse_seconds = seconds_since(t_parse);
+  const Clock::time_point t_build = Clock::now();
+  general::Renderer<M> renderer;
+  if (!renderer.setup(scene, arena, options.seed, options.force_full, options.full_tree)) {
+    error = name + ": the scene does not fit in memory (BVH)";
+    return false;
+  }
+  out.build_seconds = seconds_since(t_build);
+  out.features = renderer.features();
+  out.path = general_path_name(renderer.path());
+  out.image.width = width;
+  out.image.height = height;
+  out.image.rgba.assign(static_cast<size_t>(width) * height * 4, 0);
+  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  if (threads < 1) threads = 1;
+  if (threads > height) threads = height;
+  const Clock::time_point t_render = Clock::now();
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int y; (y = next.fetch_add(1)) < height;)
+      renderer.render_row(y, out.image.rgba.data() + static_cast<size_t>(y) * width * 4);
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  out.render_seconds = seconds_since(t_render);
+  out.threads = threads;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::string> minirt_texture_candidates(const std::string& base_dir, const std::string& name) {
+  if (!name.empty() && name[0] == '/') return {name};
+  std::vector<std::string> c{base_dir + name};
+  const std::size_t slash = name.rfind('/');
+  if (slash != std::string::npos) c.push_back(base_dir + name.substr(slash + 1));
+  return c;
+}
+
+bool render_minirt(const std::string& text, const std::string& name, const std::string& base_dir, int width,
+                   int height, const GeneralOptions& options, GeneralResult& out, std::string& error) {
+  const Variant v = options.variant;
+  if (v.precision == Precision::kDouble && v.shims == ShimSet::kLibm)
+    return render_with<LibmDouble>(text, name, base_dir, width, height, options, out, error);
+  if (v.precision == Precision::kFloat) {
+    switch (v.shims) {
+      case ShimSet::kLibm: return render_with<LibmFloat>(text, name, base_dir, width, height, options, out, error);
+      case ShimSet::kPortable:
+        return render_with<PortableFloat>(text, name, base_dir, width, height, options, out, error);
+      case ShimSet::kPortableFast:
+        return render_with<PortableFloatFast>(text, name, base_dir, width, height, options, out, error);
+      case ShimSet::kPortableMin:
+        return render_with<PortableFloatMin>(text, name, base_dir, width, height, options, out, error);
+    }
+  }
+  error = name + ": this combination of --precision and --shims is not built";
+  return false;
+}
+
+}  // namespace minrt::host
