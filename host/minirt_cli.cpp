@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "file_input.hpp"
@@ -73,6 +74,17 @@ int run_minirt_cli(MinirtCli& cli) {
       print_minirt_error("minrt: " + why);
       return kMinirtExitError;
     }
+  }
+  // Without -o the image can only go to a window: with no display at all,
+  // say so before the render (and before SDL prints its own complaints).
+  auto set = [](const char* name) {
+    const char* v = std::getenv(name);
+    return v != nullptr && *v != 0;
+  };
+  if (!write && !set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
+    print_minirt_error("minrt: no display to show the image on (DISPLAY is not set); give -o FILE.png to write "
+                       "the image instead");
+    return kMinirtExitError;
   }
   const int width = cli.width > 0 ? cli.width : kMinirtDefaultWidth;
   const int height = cli.height > 0 ? cli.height : kMinirtDefaultHeight;
