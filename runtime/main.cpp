@@ -2,7 +2,8 @@
 // portable float math and streams the PPM back, row by row. A scene whose
 // first word starts with a letter is a CS418 file (cs418_board.hpp): its
 // image goes back as a streamed PNG; one that starts with `#` or a header
-// field of Jaworski's format (jaworski_board.hpp) gets a streamed BMP. On a bad scene
+// field of Jaworski's format (jaworski_board.hpp) gets a streamed BMP; one
+// that starts with a miniRT element (minirt_board.hpp) a streamed PNG. On a bad scene
 // or bad arguments it sends one MINRT_ERROR_MARKER line instead and returns
 // a non-zero status, which crt0 hands to the test finisher.
 //
@@ -19,6 +20,7 @@
 #include "core/base/peek_source.hpp"
 #include "cs418_board.hpp"
 #include "jaworski_board.hpp"
+#include "minirt_board.hpp"
 #include "firmware_args.hpp"
 #include "firmware_layout.h"
 #include "footprint.hpp"
@@ -201,6 +203,17 @@ extern "C" int main(int argc, char** argv) {
       return r == minrt::fw::JaworskiResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
     }
     output.end();
+    return MINRT_STATUS_OK;
+  }
+  if (minrt::fw::is_minirt_start(word)) {  // a miniRT scene: PNG at the board's --size
+    const minrt::fw::MinirtResult r =
+        minrt::fw::render_minirt(text.source(), output.sink(), arena, options.render.width, options.render.height,
+                                 options.all_features, textures, error);
+    if (r != minrt::fw::MinirtResult::kOk) {
+      send_error(uart, error);
+      return r == minrt::fw::MinirtResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
+    }
+    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
     return MINRT_STATUS_OK;
   }
   if ((first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z')) {

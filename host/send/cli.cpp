@@ -6,6 +6,8 @@
 #include "image_load.hpp"
 #include "image_window.hpp"
 #include "jaworski_cli.hpp"
+#include "minirt_cli.hpp"
+#include "minirt_render.hpp"
 #include "posix/output_file.hpp"
 #include "scene_format.hpp"
 
@@ -222,6 +224,7 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
         error = "bad --size '" + v + "': expected WxH, each 1..4096";
         return ParseResult::kError;
       }
+      o.size_given = true;
     } else if (a == "--format") {
       if (!value(v)) return ParseResult::kError;
       if (v == "p3" || v == "P3") o.spec.kind = PpmKind::kP3;
@@ -336,7 +339,35 @@ int run(const Options& options) {
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   int png_width = 0, png_height = 0;
-  std::string texture_preamble;  // CS418: decoded textures, sent ahead of the scene
+  std::string texture_preamble;  // CS418, miniRT: decoded textures, sent ahead of the scene
+  // A miniRT scene: the board answers with a PNG at --size (default 800x600,
+  // as minrt), written by default to the scene's stem with .png.
+  const bool minirt = format == minrt::host::SceneFormat::kMinirt;
+  if (minirt) {
+    if (o.protocol != Protocol::kRaw)
+      return fail(kExitUsage, "miniRT scenes go over --protocol raw; course and framed carry SLD only, for now");
+    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to miniRT scenes");
+    if (!minrt::host::has_rt_extension(o.scene))
+      return fail(kExitFirmware, "scene rejected before sending: " + o.scene + ": a miniRT scene file's name must end in .rt");
+    if (!o.size_given) {
+      o.spec.width = minrt::host::kMinirtDefaultWidth;
+      o.spec.height = minrt::host::kMinirtDefaultHeight;
+    }
+    png_width = o.spec.width;
+    png_height = o.spec.height;
+    if (!o.output_given) {
+      o.output = default_output(o.scene);
+      o.output.replace(o.output.size() - 4, 4, ".png");
+    }
+    const std::size_t slash = o.scene.rfind('/');
+    const std::string base_dir = slash == std::string::npos ? "" : o.scene.substr(0, slash + 1);
+    const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
+    if (!build_minirt_texture_preamble(scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
+      return fail(kExitFirmware, "scene rejected before sending: " + why);
+    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
+  }
+  const bool png_reply = cs418 || minirt;
   if (cs418) {
     if (o.protocol != Protocol::kRaw)
       return fail(kExitUsage, "CS418 scenes go over --protocol raw; course and framed carry SLD only, for now");
@@ -362,7 +393,7 @@ int run(const Options& options) {
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
   // refuses such a scene with minrt's message, so nothing is sent.
-  if (!cs418 && !jaworski && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
+  if (!png_reply && !jaworski && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
     std::string words;
     if (!sld_to_course_words(scene, false, words, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
@@ -421,9 +452,9 @@ int run(const Options& options) {
   // pseudo-terminal (the simulator's, or any other) has no baud rate.
   const bool paced = !use_sim && !is_pseudo_terminal(port.fd());
   const std::uint64_t expected_bytes =
-      cs418 ? static_cast<std::uint64_t>(png_width) * png_height * 4 + static_cast<std::uint64_t>(png_height) * 18 + 64
-            : expected_image_bytes(o.spec);
-  Progress progress(o.progress_forced || ::isatty(2) != 0, expected_bytes, cs418 ? png_height : o.spec.height,
+      png_reply ? static_cast<std::uint64_t>(png_width) * png_height * 4 + static_cast<std::uint64_t>(png_height) * 18 + 64
+                : expected_image_bytes(o.spec);
+  Progress progress(o.progress_forced || ::isatty(2) != 0, expected_bytes, png_reply ? png_height : o.spec.height,
                     paced ? o.port_settings.baud : 0);
   Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
               &progress};
@@ -431,7 +462,7 @@ int run(const Options& options) {
   TransferResult r;
   if (jaworski) {
     r = run_raw_bmp(ex, scene);
-  } else if (cs418) {
+  } else if (png_reply) {
     r = run_raw_png(ex, texture_preamble + scene, png_width, png_height);
   } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);

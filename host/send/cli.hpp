@@ -22,6 +22,7 @@ struct Options {
   PortSettings port_settings;
   Protocol protocol = Protocol::kRaw;
   ImageSpec spec{512, 512, PpmKind::kP3};
+  bool size_given = false;   // miniRT's default size differs (800x600, as minrt)
   std::string scene;
   std::string output;        // -o; default SCENE's stem + ".ppm" (CS418: the png line's name)
   bool output_given = false;

@@ -6,23 +6,58 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "minirt_render.hpp"
 #include "png_io.hpp"
+#include "ppm_texture.hpp"
 
 namespace minrt::send {
 
-bool build_texture_preamble(const std::string& scene, const std::string& base_dir, std::uint64_t board_bytes,
-                            std::string& out, std::string& error) {
-  out.clear();
-  std::vector<std::string> names;
-  std::set<std::string> seen;
-  std::istringstream lines(scene);
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::istringstream words(line);
-    std::string kw, name;
-    if (!(words >> kw) || kw != "texture" || !(words >> name) || name == "none") continue;
-    if (seen.insert(name).second) names.push_back(name);
+namespace {
+
+// A decoded texture: width, height, RGB8 rows top first.
+struct Texels {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+};
+using Loader = bool (*)(const std::string& base_dir, const std::string& name, Texels& out, std::string& error);
+
+bool load_png(const std::string& base_dir, const std::string& name, Texels& out, std::string& error) {
+  const std::string path = name[0] == '/' ? name : base_dir + name;
+  minrt::host::RgbaImage img;
+  std::string why;
+  if (!minrt::host::read_png(path, img, why)) {
+    error = "texture " + path + ": " + why;
+    return false;
   }
+  out.width = img.width;
+  out.height = img.height;
+  out.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
+  for (std::size_t i = 0, n = static_cast<std::size_t>(img.width) * img.height; i < n; ++i)
+    for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = img.rgba[4 * i + c];
+  return true;
+}
+
+// miniRT's PPM textures, found where minrt finds them.
+bool load_ppm(const std::string& base_dir, const std::string& name, Texels& out, std::string& error) {
+  std::string first;
+  for (const std::string& path : minrt::host::minirt_texture_candidates(base_dir, name)) {
+    minrt::host::RgbTexture tex;
+    std::string why;
+    if (minrt::host::read_ppm(path, tex, why)) {
+      out.width = tex.width;
+      out.height = tex.height;
+      out.rgb = std::move(tex.rgb);
+      return true;
+    }
+    if (first.empty()) first = "texture " + path + ": " + why;
+  }
+  error = first;
+  return false;
+}
+
+bool assemble(const std::vector<std::string>& names, const std::string& base_dir, Loader load,
+              std::uint64_t board_bytes, std::string& out, std::string& error) {
+  out.clear();
   if (names.empty()) return true;
   if (names.size() > MINRT_MAX_TEXTURES) {
     error = "more than " + std::to_string(MINRT_MAX_TEXTURES) + " textures";
@@ -35,15 +70,10 @@ bool build_texture_preamble(const std::string& scene, const std::string& base_di
       error = "texture name longer than 255 bytes";
       return false;
     }
-    const std::string path = name[0] == '/' ? name : base_dir + name;
-    minrt::host::RgbaImage img;
-    std::string why;
-    if (!minrt::host::read_png(path, img, why)) {
-      error = "texture " + path + ": " + why;
-      return false;
-    }
+    Texels img;
+    if (!load(base_dir, name, img, error)) return false;
     if (img.width > MINRT_MAX_TEXTURE_SIDE || img.height > MINRT_MAX_TEXTURE_SIDE) {
-      error = "texture " + path + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
+      error = "texture " + name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
       return false;
     }
     texel_bytes += static_cast<std::uint64_t>(img.width) * img.height * 3;
@@ -53,8 +83,7 @@ bool build_texture_preamble(const std::string& scene, const std::string& base_di
       body.push_back(static_cast<char>(v & 0xff));
       body.push_back(static_cast<char>(v >> 8));
     }
-    for (std::size_t i = 0, n = static_cast<std::size_t>(img.width) * img.height; i < n; ++i)
-      body.append(reinterpret_cast<const char*>(&img.rgba[4 * i]), 3);
+    body.append(reinterpret_cast<const char*>(img.rgb.data()), img.rgb.size());
   }
   if (texel_bytes > board_bytes) {
     error = "the textures need " + std::to_string(texel_bytes) + " bytes of the board's memory and at most " +
@@ -65,6 +94,40 @@ bool build_texture_preamble(const std::string& scene, const std::string& base_di
   out.push_back(static_cast<char>(names.size()));
   out += body;
   return true;
+}
+
+}  // namespace
+
+bool build_texture_preamble(const std::string& scene, const std::string& base_dir, std::uint64_t board_bytes,
+                            std::string& out, std::string& error) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  std::istringstream lines(scene);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string kw, name;
+    if (!(words >> kw) || kw != "texture" || !(words >> name) || name == "none") continue;
+    if (seen.insert(name).second) names.push_back(name);
+  }
+  return assemble(names, base_dir, &load_png, board_bytes, out, error);
+}
+
+bool build_minirt_texture_preamble(const std::string& scene, const std::string& base_dir,
+                                   std::uint64_t board_bytes, std::string& out, std::string& error) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  std::istringstream lines(scene);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string x; words >> x;) w.push_back(x);
+    if (w.empty() || w[0] != "spt") continue;
+    for (std::size_t i = 4; i < w.size() && i < 6; ++i)  // texture, then the optional bump map
+      if (seen.insert(w[i]).second) names.push_back(w[i]);
+  }
+  return assemble(names, base_dir, &load_ppm, board_bytes, out, error);
 }
 
 }  // namespace minrt::send

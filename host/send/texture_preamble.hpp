@@ -1,6 +1,7 @@
 // host-send's side of the texture preamble (include/minrt/serial_protocol.h):
-// finds the textures a CS418 scene names, decodes them with libpng and lays
-// them out ahead of the scene text, so the board needs no PNG decoder.
+// finds the textures a CS418 scene (PNG) or a miniRT scene (PPM) names,
+// decodes them and lays them out ahead of the scene text, so the board needs
+// no decoder.
 #pragma once
 
 #include <cstdint>
@@ -14,5 +15,10 @@ namespace minrt::send {
 // texel bytes than `board_bytes` (then the message says how much is needed).
 bool build_texture_preamble(const std::string& scene, const std::string& base_dir, std::uint64_t board_bytes,
                             std::string& out, std::string& error);
+
+// The same for a miniRT scene: the PPM files its `spt` lines name, found
+// where minrt finds them (host/minirt_render.hpp).
+bool build_minirt_texture_preamble(const std::string& scene, const std::string& base_dir,
+                                   std::uint64_t board_bytes, std::string& out, std::string& error);
 
 }  // namespace minrt::send

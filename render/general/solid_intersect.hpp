@@ -44,9 +44,8 @@ typename M::real hit_solid(const model::Solid<typename M::real>& s, const Ray<ty
     const R disc = b * b - R(4) * a * c;
     if (disc >= R(0)) {
       const R sq = M::sqrt(disc);
-      const R t1 = (-b - sq) / (R(2) * a);
-      const R t2 = (-b + sq) / (R(2) * a);
-      for (const R t : {t1, t2}) {
+      const R roots[2] = {(-b - sq) / (R(2) * a), (-b + sq) / (R(2) * a)};
+      for (const R t : roots) {
         const R m = xv + dv * t;
         if (m >= R(0) && m <= s.height) offer(t, kSolidSide);
       }

@@ -1,0 +1,24 @@
+// The board's path for miniRT scenes (.rt): the text from the line, the
+// image back as a streamed stored-deflate PNG, rendered in float with the
+// portable shims like the host's `--precision float --shims portable`. The
+// file has no image size: the board renders at its --size (host-send passes
+// its own). Textures arrive decoded ahead of the scene (texture preamble).
+#pragma once
+
+#include "core/base/arena.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "protocol/texture_blobs.hpp"
+
+namespace minrt::fw {
+
+enum class MinirtResult { kOk, kSceneError, kOutOfMemory };
+
+MinirtResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
+                           const send::textures::Table* textures, Diagnostic& error);
+
+// True when a scene's first word (lower case, letters only) is a miniRT
+// element identifier: a, c, l, sp, pl, cy, co, plc, spt.
+bool is_minirt_start(const char* first_word);
+
+}  // namespace minrt::fw
