@@ -155,14 +155,16 @@ int main(int argc, char** argv) {
         usage_error("bad --scene-format '" + v + "': expected sld, cs418, jaworski or minirt");
     } else if (arg == "--threads") {
       const char* v = value("--threads");
+      const char* rest = v;  // parse_decimal moves it
       uint32_t n = 0;
-      if (!minrt::parse_decimal(v, 0, 1024, n) || n == 0)
+      if (!minrt::parse_decimal(rest, 0, 1024, n) || n == 0)
         usage_error(std::string("bad --threads '") + v + "': expected 1..1024");
       general.options.threads = static_cast<int>(n);
     } else if (arg == "--seed") {
       const char* v = value("--seed");
+      const char* rest = v;
       uint32_t n = 0;
-      if (!minrt::parse_decimal(v, 0, 0xffffffffu, n))
+      if (!minrt::parse_decimal(rest, 0, 0xffffffffu, n))
         usage_error(std::string("bad --seed '") + v + "': expected 0..4294967295");
       general.options.seed = n;
     } else if (arg == "-s" || arg == "--show") {

@@ -198,3 +198,26 @@ TEST_CASE("minrt: unknown codes warn on stderr and still render", "[cli]") {
   CHECK(quiet.err.empty());
   std::remove(path);
 }
+
+TEST_CASE("minrt: --threads renders SLD rows on several threads with the same bytes", "[cli][threads]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  const std::string scene = minrt::test::shared_dir() + "/scenes/tsu3.sld";
+  const auto one = run("--threads 1 --size 40x33 '" + scene + "'");
+  REQUIRE(one.status == 0);
+  REQUIRE(one.out.compare(0, 13, "P3\n40 33 255\n") == 0);
+  for (const char* threads : {"2", "4"}) {
+    CAPTURE(threads);
+    const auto r = run(std::string("--threads ") + threads + " --size 40x33 '" + scene + "'");
+    CHECK(r.status == 0);
+    CHECK(r.out == one.out);
+  }
+  const auto every_core = run("--size 40x33 '" + scene + "'");  // the default
+  CHECK(every_core.out == one.out);
+  const auto bad = run("--threads 0 '" + scene + "'");
+  CHECK(bad.status == 2);
+  CHECK(bad.out.empty());
+  CHECK(bad.err.find("bad --threads '0'") != std::string::npos);
+}
