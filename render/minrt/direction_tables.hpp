@@ -73,6 +73,19 @@ inline auto Tracer<M>::setup_startp(const R* p) -> void {
         for (int k = 0; k < 3; ++k)
           mask |= uint32_t{s[k] >= m.slab[k]} << (2 * k) | uint32_t{s[k] <= -m.slab[k]} << (2 * k + 1);
       m.fwd = mask;
+      // Face k of a box is at d = fl(c - s_k) / v_k with c = -abc_k for
+      // v_k > 0 (abc_k inverted) and +abc_k for v_k < 0 (-abc_k inverted):
+      // once s_k is past it, fl(c - s_k) has the other sign (or is 0) and
+      // d <= 0, or NaN, which fails the face test. A ray whose code avoids
+      // every bit here gets no positive distance from the box.
+      if (m.form == kFormBox) {
+        uint32_t ahead = 0;
+        for (int k = 0; k < 3; ++k) {
+          const R pos = m.inverted ? m.abc[k] : -m.abc[k];
+          ahead |= uint32_t{!(s[k] >= pos)} << (2 * k) | uint32_t{!(s[k] <= -pos)} << (2 * k + 1);
+        }
+        m.ahead = ahead;
+      }
     }
     if (m.form == kFormPlane) {
       s[3] = dot(m.abc, s[0], s[1], s[2]);

@@ -182,6 +182,9 @@ inline auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
       const ObjectList net = row.nets[k];
       for (ObjectList e = net; *e != nullptr; ++e) {
         const Object& m = **e;
+        // A box the ray can only meet behind its start records nothing; as
+        // the network's last member nothing else depends on its result.
+        if (kCull && (m.ahead & code) == 0 && e[1] == nullptr) break;
         const int t0 = solver_fast2<true>(m, dv);
         if (t0 != 0)
           record_hit(net, m, t0, dv.v, startp_fast_);

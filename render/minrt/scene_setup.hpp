@@ -101,6 +101,7 @@ inline auto Tracer<M>::load_objects(const Scene<R>& s) -> void {
     // original: the rotation is applied to every form, boxes and planes too.
     if (o.rotated != 0) rotate_quadratic_form(o.abc, o.rot);
     setup_slab(o);
+    o.ahead = ~0u;
     o.consts_offset = offset * static_cast<int>(sizeof(R));
     o.index = i;
     offset += consts_count(o.form);

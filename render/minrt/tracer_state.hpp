@@ -48,6 +48,10 @@ struct TracerState {
     R slab[3];
     bool slab_bounded;
     uint32_t fwd;  // forward-culling mask from the current start point
+    // Boxes: the direction-code bits (see direction_code) along which a face
+    // the fast solver can return may lie ahead of the current start point;
+    // all bits for other forms (see setup_startp).
+    uint32_t ahead;
   };
   struct Reflection {
     int surface_id;
