@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # minrt --show under Xvfb: what the window shows (MINRT_SHOW_SNAPSHOT reads
 # it back after the first frame) equals the rendered image, for a Jaworski
-# and a CS418 scene; without a display it warns in one line, exits 0 and
+# and a CS418 scene and a miniRT one (window only, as its subject wants); without a display it warns in one line, exits 0 and
 # still writes the file.
 # SLD with -o and host-send --show (the board's image) are checked the same way.
 # Usage: window_check.sh MINRT IMAGE_COMPARE SHARED_DIR WORKDIR [HOST_SEND]
@@ -23,6 +23,11 @@ if [ -n "$host_send" ]; then
   MINRT_SHOW_SNAPSHOT=$work/board-window.ppm xvfb-run -a "$host_send" -q --sim --show "$jw" -o "$work/board.bmp"
   "$compare" --identical "$work/board-window.ppm" "$work/board.bmp" >/dev/null
 fi
+# miniRT: the subject's mode, the window without -o, shows the rendered image.
+rt=$shared/formats/minirt/valid/showcase.rt
+MINRT_SHOW_SNAPSHOT=$work/rt-window.ppm xvfb-run -a "$minrt" --size 160x120 "$rt"
+"$minrt" --size 160x120 "$rt" -o "$work/rt.ppm"
+"$compare" --identical "$work/rt-window.ppm" "$work/rt.ppm" >/dev/null
 rm -f "$work/nodisplay.bmp"
 err=$(env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$minrt" --show "$jw" -o "$work/nodisplay.bmp" 2>&1)
 [ "$err" = "minrt: warning: not showing the image: no display (DISPLAY is not set)" ] || { echo "unexpected: $err"; exit 1; }

@@ -101,7 +101,7 @@ std::string shared_minirt() { return minrt::test::shared_dir() + "/formats/minir
 
 }  // namespace
 
-TEST_CASE("minrt miniRT: every shared valid scene renders to its reviewed golden image", "[minirt][golden]") {
+TEST_CASE("minrt miniRT: every shared valid scene renders to its reviewed golden image, on its path and on the full one", "[minirt][golden]") {
   if (!minrt::test::shared_available()) {
     WARN("shared/ test data not found: skipped");
     return;
@@ -116,6 +116,9 @@ TEST_CASE("minrt miniRT: every shared valid scene renders to its reviewed golden
     CHECK(run.status == 0);
     CHECK(run.err.empty());
     CHECK(minrt::host::sha256_hex(minrt::test::read_file(out + "/image.ppm")) == r.rule);
+    // The path with every feature compiled in gives the same bytes.
+    CHECK(run_in(out, "--all-features '" + shared_minirt() + "/valid/" + r.file + "' -o all.ppm").status == 0);
+    CHECK(minrt::host::sha256_hex(minrt::test::read_file(out + "/all.ppm")) == r.rule);
   }
   CHECK(listed == rt_files(shared_minirt() + "/valid"));
 }
