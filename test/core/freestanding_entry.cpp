@@ -1,4 +1,4 @@
-// One render through the core for the freestanding link check: the byte I/O
+// One render of each path through the core for the freestanding link check: the byte I/O
 // is a pair of function pointers, so the only external symbols left are
 // those of the math policy and the compiler's memory routines.
 #include "core/math/math_libm.hpp"
@@ -8,6 +8,8 @@
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "render/jaworski/tracer.hpp"
 #include "formats/cs418/cs418_reader.hpp"
+#include "formats/minirt/minirt_camera.hpp"
+#include "formats/minirt/minirt_reader.hpp"
 #include "render/general/render.hpp"
 #include "render/minrt/render.hpp"
 
@@ -37,6 +39,28 @@ int general_entry() {
   return 0;
 }
 
+// miniRT's path as the board runs it: .rt text in, PNG rows out.
+int minirt_entry() {
+  minrt::Arena arena(g_arena, sizeof g_arena);
+  minrt::model::SceneBuilder<POLICY::real> builder(arena);
+  minrt::minirt::Reader<POLICY> reader(minrt::ByteSource{&read_byte, nullptr}, builder, {});
+  minrt::model::Scene<POLICY::real> scene;
+  minrt::minirt::View<POLICY::real> view;
+  minrt::Diagnostic error;
+  if (reader.read(scene, view, error) != minrt::minirt::ReadStatus::kOk) return 1;
+  if (!builder.finish(scene)) return 2;
+  scene.width = 16;
+  scene.height = 12;
+  scene.camera = minrt::minirt::place_camera<POLICY>(view, scene.width, scene.height);
+  minrt::general::Renderer<POLICY> renderer;
+  if (!renderer.setup(scene, arena, 1)) return 3;
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (row == nullptr) return 4;
+  minrt::PngStoredWriter png(minrt::ByteSink{&write_bytes, nullptr});
+  renderer.render(minrt::rgba_row_sink_of(png), row);
+  return 0;
+}
+
 // Jaworski's path: keyword scene in, BMP rows out.
 int jaworski_entry() {
   minrt::Arena arena(g_arena, sizeof g_arena);
@@ -53,7 +77,7 @@ int jaworski_entry() {
 }
 
 extern "C" int minrt_entry() {
-  if (general_entry() != 0 || jaworski_entry() != 0) return 1;
+  if (general_entry() != 0 || minirt_entry() != 0 || jaworski_entry() != 0) return 1;
   minrt::Arena arena(g_arena, sizeof g_arena);
   minrt::Diagnostic error;
   return static_cast<int>(minrt::render_sld<POLICY>(minrt::ByteSource{&read_byte, nullptr},
