@@ -84,7 +84,15 @@ void print_help(std::FILE* f) {
       f);
 }
 
+// Set when an argument names a .rt file: the miniRT subject wants every
+// misconfiguration, the command line's too, reported as "Error" + a line.
+bool g_minirt_command = false;
+
 [[noreturn]] void usage_error(const std::string& msg) {
+  if (g_minirt_command) {
+    minrt::host::print_minirt_error("minrt: " + msg + " (see minrt --help)");
+    std::exit(minrt::host::kMinirtExitError);
+  }
   std::fprintf(stderr, "minrt: %s (see minrt --help)\n", msg.c_str());
   std::exit(kExitUsage);
 }
@@ -101,6 +109,7 @@ void print_warning(void* ctx, const minrt::Diagnostic& d) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) g_minirt_command = g_minirt_command || minrt::host::has_rt_extension(argv[i]);
   minrt::RenderOptions options;
   minrt::host::Variant variant;
   const char* scene_path = nullptr;
