@@ -95,13 +95,31 @@ std::set<std::string> rt_files(const std::string& dir) {
   return out;
 }
 
+// Pixels of two same-size P6 images (maxval 255, single-space headers as
+// minrt writes them) differing by more than 1 in a channel; -1 on a size or
+// header mismatch.
+long pixels_off(const std::string& a, const std::string& b) {
+  if (a.size() != b.size() || a.size() < 16) return -1;
+  std::size_t header = 0;
+  for (int newlines = 0; header < a.size() && newlines < 3; ++header) newlines += a[header] == '\n';
+  if (a.compare(0, header, b, 0, header) != 0) return -1;
+  long off = 0;
+  for (std::size_t i = header; i + 2 < a.size(); i += 3) {
+    bool far = false;
+    for (int c = 0; c < 3; ++c)
+      far = far || std::abs(static_cast<unsigned char>(a[i + c]) - static_cast<unsigned char>(b[i + c])) > 1;
+    off += far;
+  }
+  return off;
+}
+
 const std::string kOwnBad = std::string(MINRT_SOURCE_DIR) + "/test/minirt/bad";
 const std::string kTables = std::string(MINRT_SOURCE_DIR) + "/test/minirt";
 std::string shared_minirt() { return minrt::test::shared_dir() + "/formats/minirt"; }
 
 }  // namespace
 
-TEST_CASE("minrt miniRT: every shared valid scene renders to its reviewed golden image, on its path and on the full one", "[minirt][golden]") {
+TEST_CASE("minrt miniRT: every shared valid scene renders to its reviewed golden image, on its path and on the full one, and float is within rounding", "[minirt][golden]") {
   if (!minrt::test::shared_available()) {
     WARN("shared/ test data not found: skipped");
     return;
@@ -116,6 +134,11 @@ TEST_CASE("minrt miniRT: every shared valid scene renders to its reviewed golden
     CHECK(run.status == 0);
     CHECK(run.err.empty());
     CHECK(minrt::host::sha256_hex(minrt::test::read_file(out + "/image.ppm")) == r.rule);
+    // The board's arithmetic (float, portable shims) is within rounding of
+    // the double image: at most 0.01 % of the pixels off by more than 1.
+    CHECK(run_in(out, "--precision float --shims portable '" + shared_minirt() + "/valid/" + r.file + "' -o f.ppm")
+              .status == 0);
+    CHECK(pixels_off(minrt::test::read_file(out + "/image.ppm"), minrt::test::read_file(out + "/f.ppm")) <= 48);
     // The path with every feature compiled in gives the same bytes.
     CHECK(run_in(out, "--all-features '" + shared_minirt() + "/valid/" + r.file + "' -o all.ppm").status == 0);
     CHECK(minrt::host::sha256_hex(minrt::test::read_file(out + "/all.ppm")) == r.rule);
