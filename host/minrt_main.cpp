@@ -18,6 +18,7 @@
 #include "jaworski_cli.hpp"
 #include "minirt_cli.hpp"
 #include "posix/output_file.hpp"
+#include "eastray_cli.hpp"
 #include "scene_format.hpp"
 #include "render_variants.hpp"
 #include "stdio_stream.hpp"
@@ -44,7 +45,11 @@ void print_help(std::FILE* f) {
       "800x600; --size, --threads, --precision and --shims apply). Errors print\n"
       "'Error' and one line naming what and where; exit status 1.\n"
       "\n"
-      "  --scene-format sld|cs418|jaworski|minirt  the scene's format (default: from the\n"
+      "Renders an EASTRAY scene (.ray; #include and #define expanded first): the\n"
+      "image goes to -o FILE, else the scene's output name (.tif is TIFF, else PNG),\n"
+      "else the scene's name with .png (docs/eastray.md).\n"
+      "\n"
+      "  --scene-format sld|cs418|jaworski|minirt|eastray  the scene's format (default: from the\n"
       "                           extension, then the first word: 'png' means CS418,\n"
       "                           a header field such as imWidth means Jaworski)\n"
       "  --size WxH               image size (default 512x512, at most 4096x4096)\n"
@@ -58,7 +63,7 @@ void print_help(std::FILE* f) {
       "                           FIFO, device or symbolic link is refused; - is stdout)\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
-      "  -n, --no-save            Jaworski: render without saving the image\n"
+      "  -n, --no-save            Jaworski, EASTRAY: render without saving the image\n"
       "  -s, --show               show the image in a window afterwards (SLD: with -o FILE)\n"
       "                           (ESC, q or the close button quit; without a display\n"
       "                           a one-line warning, and the file is still written)\n"
@@ -164,7 +169,7 @@ int main(int argc, char** argv) {
     } else if (arg == "--scene-format") {
       const std::string v = value("--scene-format");
       if (!minrt::host::parse_scene_format(v, scene_format))
-        usage_error("bad --scene-format '" + v + "': expected sld, cs418, jaworski or minirt");
+        usage_error("bad --scene-format '" + v + "': expected sld, cs418, jaworski, minirt or eastray");
     } else if (arg == "--threads") {
       const char* v = value("--threads");
       const char* rest = v;  // parse_decimal moves it
@@ -265,6 +270,17 @@ int main(int argc, char** argv) {
     m.options = general.options;
     m.options.variant = variant;
     return minrt::host::run_minirt_cli(m);
+  }
+  if (scene_format == minrt::host::SceneFormat::kEastray) {
+    minrt::host::EastrayCli e;
+    e.scene_path = scene_path != nullptr ? scene_path : "-";
+    e.scene_text = std::move(stdin_text);
+    e.output_path = output_path;
+    e.save = !no_save;
+    e.quiet = quiet;
+    e.write_through = write_through;
+    e.variant = variant;
+    return minrt::host::run_eastray_cli(e);
   }
   if (scene_format == minrt::host::SceneFormat::kCs418) {
     general.scene_path = scene_path != nullptr ? scene_path : "-";

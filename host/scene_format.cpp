@@ -7,9 +7,35 @@ bool parse_scene_format(const std::string& name, SceneFormat& out) {
   else if (name == "cs418") out = SceneFormat::kCs418;
   else if (name == "jaworski") out = SceneFormat::kJaworski;
   else if (name == "minirt") out = SceneFormat::kMinirt;
+  else if (name == "eastray") out = SceneFormat::kEastray;
   else return false;
   return true;
 }
+
+namespace {
+
+// EASTRAY: a comment or a preprocessor line first, or a statement name
+// (`color` only with its '[': CS418 has a `color` keyword too).
+bool looks_like_eastray(const std::string& head) {
+  std::size_t i = 0;
+  while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;
+  const std::string rest = head.substr(i, 16);
+  if (rest.rfind("/*", 0) == 0 || rest.rfind("#include", 0) == 0 || rest.rfind("#define", 0) == 0) return true;
+  std::size_t end = i;
+  while (end < head.size() && head[end] != ' ' && head[end] != '\t' && head[end] != '\r' && head[end] != '\n') ++end;
+  const std::string word = head.substr(i, end - i);
+  for (const char* k : {"display", "condition", "anti", "camera", "mist", "sky", "env", "shadow", "voxel", "output",
+                        "rmode", "e_light", "p_light", "s_light", "map_data", "obj", "input", "back_mode", "output_mode"})
+    if (word == k) return true;
+  if (word == "color") {
+    std::size_t j = end;
+    while (j < head.size() && (head[j] == ' ' || head[j] == '\t' || head[j] == '\r' || head[j] == '\n')) ++j;
+    return j < head.size() && head[j] == '[';
+  }
+  return false;
+}
+
+}  // namespace
 
 SceneFormat detect_scene_format(const std::string& path, const std::string& head) {
   auto ends_with = [&](const char* tail) {
@@ -18,6 +44,8 @@ SceneFormat detect_scene_format(const std::string& path, const std::string& head
   };
   if (ends_with(".sld") || ends_with(".SLD")) return SceneFormat::kSld;
   if (ends_with(".rt")) return SceneFormat::kMinirt;
+  if (ends_with(".ray") || ends_with(".RAY")) return SceneFormat::kEastray;
+  if (looks_like_eastray(head)) return SceneFormat::kEastray;
   std::size_t i = 0;
   for (;;) {  // blanks, and Jaworski's # comments (CS418 and SLD have none)
     while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;

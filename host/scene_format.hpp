@@ -3,16 +3,17 @@
 // file, a header field such as `imWidth` a Jaworski one (after `#`
 // comments); SLD starts with numbers; a `.rt` name or a miniRT element
 // identifier (A, C, L, sp, ...) means miniRT, whose reader then insists on
-// the `.rt` name).
+// the `.rt` name); `/*`, `#include`, `#define` or a statement name an
+// EASTRAY one (.ray).
 #pragma once
 
 #include <string>
 
 namespace minrt::host {
 
-enum class SceneFormat { kAuto, kSld, kCs418, kJaworski, kMinirt };
+enum class SceneFormat { kAuto, kSld, kCs418, kJaworski, kMinirt, kEastray };
 
-// "sld", "cs418", "jaworski", "minirt" -> format; false for an unknown name.
+// "sld", "cs418", "jaworski", "minirt", "eastray" -> format; false for an unknown name.
 bool parse_scene_format(const std::string& name, SceneFormat& out);
 
 // Decides from the path and the first bytes of the file.

@@ -1,0 +1,1059 @@
+// Reader for EASTRAY scenes (the 1995 manual v1.98; SPEC.md 4 and
+// ../shared/formats/eastray/AMBIGUITIES.md; docs/eastray.md says what is
+// implemented and every reading chosen). It reads text that the host's
+// preprocessor has expanded (no #include / #define left).
+//
+// Three walks over the text: (1) every statement once, obj bodies checked
+// for syntax only and their places remembered; (2) each named part walked
+// with its calls followed, which resolves every name and finds recursive
+// calls; (3) the unnamed objs walked again with their moves and calls,
+// which places the primitives, nodes, triangles and object lights.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/diagnostic.hpp"
+#include "core/base/number_parse.hpp"
+#include "core/math/math_policy.hpp"
+#include "formats/eastray/eastray_lexer.hpp"
+#include "formats/eastray/eastray_scene.hpp"
+
+namespace minrt::eastray {
+
+inline constexpr int kMaxParts = 1024;
+inline constexpr int kMaxMainObjs = 64;
+inline constexpr int kMaxNesting = 64;        // blocks inside blocks, calls inside calls
+inline constexpr int kMaxImageWidth = 2048;   // manual line 68
+inline constexpr int kMaxImageHeight = 4096;  // the project's image limit
+inline constexpr int64_t kMaxCalls = 1000000; // part calls placed in one scene
+inline constexpr int kMaxFaceVertices = 256;
+
+template <class M>
+class Reader {
+  using R = typename M::real;
+  using V = Vec3<R>;
+
+ public:
+  Reader(const char* text, size_t size, Scene<R>& scene, WarningSink warnings = {})
+      : lex_(text, size), scene_(scene), warnings_(warnings) {}
+
+  bool read(Diagnostic& error) {
+    error_ = &error;
+    advance();
+    while (!tok_.end()) {
+      if (!statement()) return false;
+    }
+    if (tok_.bad_comment) return fail_here("unterminated comment (no '*/' before the end of the scene)");
+    if (main_count_ == 0) return fail_here("no main object: the scene needs an 'obj [ ... ]' without a name");
+    // Walk 2: names and recursion, part by part.
+    for (int i = 0; i < part_count_; ++i)
+      if (parts_[i].state == 0 && !visit_part(i)) return false;
+    // Walk 3: place everything.
+    scene_.root = new_node(NodeKind::kTop, NodeKind::kTop, kNone);
+    if (scene_.root == kNone) return false;
+    for (int i = 0; i < main_count_; ++i) {
+      lex_.seek(mains_[i]);
+      advance();
+      Walk w;
+      w.emit = true;
+      w.follow = true;
+      w.resolve = true;
+      if (!items(w, Affine<R>{}, scene_.root, ']', mains_[i].pos, 0)) return false;
+    }
+    finish_vertex_normals();
+    return true;
+  }
+
+ private:
+  struct Part {
+    char name[kNameBytes];
+    Lexer::Mark body;  // just after its '['
+    int state;         // 0 unvisited, 1 being visited, 2 done
+  };
+  struct Walk {
+    bool emit = false;    // place primitives, nodes, lights
+    bool follow = false;  // read the bodies of called parts
+    bool resolve = false; // names must exist (walks 2 and 3)
+  };
+
+  // --------------------------------------------------------------- basics
+  void advance() { tok_ = lex_.next(); }
+
+  bool fail_at(const SourcePos& at, const char* msg) {
+    error_->pos = at;
+    error_->has_pos = true;
+    error_->text(msg);
+    return false;
+  }
+  bool fail_here(const char* msg) {
+    if (tok_.bad_comment) {
+      error_->pos = tok_.pos;
+      error_->has_pos = true;
+      error_->text("unterminated comment (no '*/' before the end of the scene)");
+      return false;
+    }
+    fail_at(tok_.pos, msg);
+    if (tok_.end()) error_->text(", found the end of the scene");
+    else error_->text(", found ").quoted(tok_.s, tok_.length);
+    return false;
+  }
+  void warn(const char* msg) {
+    Diagnostic d;
+    d.pos = tok_.pos;
+    d.has_pos = true;
+    d.text(msg);
+    warnings_.emit(d);
+  }
+
+  static bool number_syntax(const Token& t) {
+    int i = 0;
+    if (i < t.length && (t.s[i] == '+' || t.s[i] == '-')) ++i;
+    int digits = 0;
+    while (i < t.length && t.s[i] >= '0' && t.s[i] <= '9') ++i, ++digits;
+    if (i < t.length && t.s[i] == '.') {
+      ++i;
+      while (i < t.length && t.s[i] >= '0' && t.s[i] <= '9') ++i, ++digits;
+    }
+    if (digits == 0) return false;
+    if (i < t.length && (t.s[i] == 'e' || t.s[i] == 'E')) {
+      ++i;
+      if (i < t.length && (t.s[i] == '+' || t.s[i] == '-')) ++i;
+      int e = 0;
+      while (i < t.length && t.s[i] >= '0' && t.s[i] <= '9') ++i, ++e;
+      if (e == 0) return false;
+    }
+    return i == t.length;
+  }
+  bool is_number() const { return number_syntax(tok_); }
+  static bool is_name_token(const Token& t) {
+    if (t.length == 0) return false;
+    const char c = t.s[0];
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+  }
+
+  // Reads a number; `what` names it in the message.
+  bool number(R& out, const char* what) {
+    if (!is_number()) {
+      char msg[128] = "expected a number (";
+      int n = 19;
+      for (const char* p = what; *p != 0 && n < 120; ++p) msg[n++] = *p;
+      msg[n++] = ')';
+      msg[n] = 0;
+      return fail_here(msg);
+    }
+    if (parse_real<R>(tok_.s, tok_.length, out) != NumberStatus::kOk) {
+      fail_at(tok_.pos, "number out of range: ");
+      error_->quoted(tok_.s, tok_.length);
+      return false;
+    }
+    advance();
+    skip_mapping();
+    return ok_;
+  }
+  bool vec(V& out, const char* what) {
+    return number(out.x, what) && number(out.y, what) && number(out.z, what);
+  }
+  bool integer(int32_t& out, const char* what, int32_t lo, int32_t hi) {
+    const SourcePos at = tok_.pos;
+    R v;
+    if (!number(v, what)) return false;
+    if (!(v >= R(lo) && v <= R(hi)) || M::from_int(M::to_int(v)) != v) {
+      fail_at(at, "expected a whole number from ");
+      error_->number(lo).text(" to ").number(hi).text(" (").text(what).text(")");
+      return false;
+    }
+    out = M::to_int(v);
+    return true;
+  }
+  bool expect(char c, const char* what) {
+    if (!tok_.is(c)) {
+      char msg[128] = "expected '";
+      int n = 10;
+      msg[n++] = c;
+      msg[n++] = '\'';
+      msg[n++] = ' ';
+      for (const char* p = what; *p != 0 && n < 120; ++p) msg[n++] = *p;
+      msg[n] = 0;
+      return fail_here(msg);
+    }
+    advance();
+    return true;
+  }
+
+  // A mapping `< ... >` after a value: read over, ignored with a warning.
+  void skip_mapping() {
+    if (!tok_.is('<') || in_polygon_) return;
+    if (!mapping_warned_) {
+      warn("warning: mappings '< ... >' are not supported yet; ignored");
+      mapping_warned_ = true;
+    }
+    const SourcePos at = tok_.pos;
+    advance();
+    while (!tok_.end() && !tok_.is('>')) advance();
+    if (tok_.end()) {
+      fail_at(at, "unterminated mapping: no '>' before the end of the scene");
+      ok_ = false;
+      return;
+    }
+    advance();
+  }
+
+  // ----------------------------------------------------------- statements
+  bool end_statement(const char* name) {
+    if (!tok_.is(';')) {
+      char msg[96] = "expected ';' to end '";
+      int n = 21;
+      for (const char* p = name; *p != 0 && n < 90; ++p) msg[n++] = *p;
+      msg[n++] = '\'';
+      msg[n] = 0;
+      return fail_here(msg);
+    }
+    advance();
+    return true;
+  }
+
+  bool statement() {
+    if (tok_.bad_comment) return fail_here("");
+    const Token st = tok_;
+    advance();
+    if (st.is("display")) {
+      R aspect;
+      if (!integer(scene_.width, "display width", 1, kMaxImageWidth) ||
+          !integer(scene_.height, "display height", 1, kMaxImageHeight) ||
+          !integer(scene_.x0, "display x0", -1000000, 1000000) || !integer(scene_.y0, "display y0", -1000000, 1000000) ||
+          !integer(scene_.x1, "display x1", -1000000, 1000000) || !integer(scene_.y1, "display y1", -1000000, 1000000) ||
+          !integer(scene_.step_x, "display step x", 1, 65536) || !integer(scene_.step_y, "display step y", 1, 65536))
+        return false;
+      const SourcePos at = tok_.pos;
+      if (!number(aspect, "display dot aspect")) return false;
+      if (!(aspect > R(0))) return fail_at(at, "display dot aspect must be above 0");
+      scene_.aspect = aspect;
+      return end_statement("display");
+    }
+    if (st.is("condition")) {
+      R inner;
+      if (!integer(scene_.max_depth, "condition depth", 0, 64) || !number(scene_.min_weight, "condition minimum weight") ||
+          !number(scene_.eps, "condition eps") || !number(inner, "condition inner"))
+        return false;
+      if (scene_.eps < R(0)) scene_.eps = -scene_.eps;
+      scene_.inner = inner != R(0);
+      return end_statement("condition");
+    }
+    if (st.is("anti")) {
+      if (!integer(scene_.anti, "anti flag", -1, 16) || !number(scene_.anti_level, "anti level")) return false;
+      return end_statement("anti");
+    }
+    if (st.is("camera")) {
+      const SourcePos at = tok_.pos;
+      if (!vec(scene_.eye, "camera eye") || !vec(scene_.look, "camera look-at") ||
+          !vec(scene_.up_point, "camera sub-look-at point"))
+        return false;
+      const SourcePos fov_at = tok_.pos;
+      if (!number(scene_.fov, "camera half angle") || !number(scene_.parallax, "camera parallax")) return false;
+      if (!(scene_.fov > R(0) && scene_.fov < R(90))) return fail_at(fov_at, "camera half angle must be between 0 and 90 degrees");
+      const V f = scene_.look - scene_.eye, u = scene_.up_point - scene_.look;
+      const V c = cross(f, u);
+      if (dot(f, f) == R(0)) return fail_at(at, "camera eye and look-at point are the same");
+      if (dot(c, c) == R(0)) return fail_at(at, "camera sub-look-at point lies on the line of sight");
+      return end_statement("camera");
+    }
+    if (st.is("mist")) {
+      R sw;
+      if (!number(scene_.mist_half, "mist half distance") || !number(sw, "mist switch")) return false;
+      scene_.mist_to_sky = sw != R(0);
+      return end_statement("mist");
+    }
+    if (st.is("sky")) return vec(scene_.sky, "sky colour") && end_statement("sky");
+    if (st.is("env")) return vec(scene_.env, "env colour") && end_statement("env");
+    if (st.is("shadow")) {
+      R v;
+      if (!number(v, "shadow switch")) return false;
+      scene_.shadows = v != R(0);
+      if (tok_.is(';')) advance();  // the manual's syntax line has none (line 246)
+      return true;
+    }
+    if (st.is("voxel")) return integer(scene_.voxel, "voxel count", 0, 1024) && end_statement("voxel");
+    if (st.is("rmode")) {
+      R v;
+      if (!number(v, "rmode")) return false;
+      if (v != R(0)) warn("warning: rmode 1 (stereo) is not supported; one image is rendered");
+      return end_statement("rmode");
+    }
+    if (st.is("output")) {
+      if (tok_.end() || tok_.length == 1) return fail_here("expected a file name after 'output'");
+      if (tok_.length >= kOutputNameBytes) return fail_here("output file name too long");
+      for (int i = 0; i < tok_.length; ++i) scene_.output[i] = tok_.s[i];
+      scene_.output[tok_.length] = 0;
+      advance();
+      return end_statement("output");
+    }
+    if (st.is("output_mode")) {
+      R bits, dither;
+      if (!number(bits, "output_mode bits") || !number(dither, "output_mode dither")) return false;
+      if (bits != R(24)) warn("warning: output_mode 16 is not supported; 24-bit colour is written");
+      return end_statement("output_mode");
+    }
+    if (st.is("input")) {
+      if (tok_.end() || tok_.length == 1) return fail_here("expected a file name after 'input'");
+      warn("warning: input (background compositing) is not supported; ignored");
+      advance();
+      return end_statement("input");
+    }
+    if (st.is("back_mode")) {
+      R v[4];
+      for (R& x : v)
+        if (!number(x, "back_mode")) return false;
+      if (v[0] != R(0)) warn("warning: back_mode with an input image is not supported; the sky is the background");
+      return end_statement("back_mode");
+    }
+    if (st.is("e_light") || st.is("p_light") || st.is("s_light")) {
+      const LightKind kind = st.is("e_light") ? LightKind::kInfinite : st.is("p_light") ? LightKind::kPoint : LightKind::kSpot;
+      if (!expect('[', "to open the light list")) return false;
+      while (!tok_.is(']')) {
+        if (tok_.end()) return fail_at(st.pos, "unterminated light list: no ']' before the end of the scene");
+        if (!light(kind, Affine<R>{}, true)) return false;
+      }
+      advance();
+      return true;
+    }
+    if (st.is("color")) return colors(st);
+    if (st.is("map_data")) return map_data(st);
+    if (st.is("obj")) return obj(st);
+    fail_at(st.pos, "unknown statement ");
+    error_->quoted(st.s, st.length);
+    return false;
+  }
+
+  // One light entry (statement list or object light), ending with ';'.
+  bool light(LightKind kind, const Affine<R>& to_world, bool emit) {
+    Light<R> l{};
+    l.kind = kind;
+    l.shadow_range = R(-1);
+    const SourcePos at = tok_.pos;
+    if (kind == LightKind::kInfinite) {
+      if (!vec(l.direction, "e_light direction") || !vec(l.color, "e_light colour") ||
+          !number(l.size_deg, "e_light apparent size") || !number(l.concentration, "e_light concentration"))
+        return false;
+      if (dot(l.direction, l.direction) == R(0)) return fail_at(at, "e_light direction is the zero vector");
+    } else if (kind == LightKind::kPoint) {
+      if (!vec(l.position, "p_light position") || !vec(l.color, "p_light colour") ||
+          !number(l.half_distance, "p_light half distance"))
+        return false;
+    } else {
+      V target;
+      if (!vec(l.position, "s_light position") || !vec(target, "s_light target") || !vec(l.color, "s_light colour") ||
+          !number(l.spread, "s_light spread") || !number(l.half_distance, "s_light half distance"))
+        return false;
+      l.direction = target - l.position;
+      if (dot(l.direction, l.direction) == R(0)) return fail_at(at, "s_light target is its own position");
+    }
+    for (;;) {
+      if (tok_.is("n")) {
+        l.no_shadow = true;
+        advance();
+      } else if (tok_.is("r") && kind != LightKind::kInfinite) {
+        advance();
+        if (!number(l.shadow_range, "shadow range after 'r'")) return false;
+      } else {
+        break;
+      }
+    }
+    if (!end_statement("the light")) return false;
+    if (!emit) return true;
+    // Into world space: positions and directions through the moves in force.
+    l.position = to_world.point(l.position);
+    l.direction = to_world.vector(l.direction);
+    if (dot(l.direction, l.direction) != R(0)) l.direction = normalize<M>(l.direction);
+    if (scene_.light_count >= scene_.light_capacity) return fail_at(at, "too many lights for the memory");
+    scene_.lights[scene_.light_count++] = l;
+    return true;
+  }
+
+  bool colors(const Token& st) {
+    if (!expect('[', "to open the colour list")) return false;
+    while (!tok_.is(']')) {
+      if (tok_.end()) return fail_at(st.pos, "unterminated colour list: no ']' before the end of the scene");
+      if (!color()) return false;
+    }
+    advance();
+    return true;
+  }
+
+  bool color() {
+    Material<R> m{};
+    const SourcePos at = tok_.pos;
+    if (is_name_token(tok_)) {
+      if (tok_.length >= kNameBytes) return fail_here("colour name too long");
+      for (int i = 0; i < tok_.length; ++i) m.name[i] = tok_.s[i];
+      for (int i = 0; i < scene_.material_count; ++i)
+        if (tok_.is(scene_.materials[i].name)) return fail_here("colour name defined twice");
+      advance();
+    }
+    R alg;
+    if (!vec(m.diffuse, "diffuse colour") || !vec(m.reflect, "reflectance") || !vec(m.transmit, "transmittance") ||
+        !number(m.ior, "index of refraction") || !number(m.half_distance, "transparency half distance") ||
+        !number(m.bump, "bump"))
+      return false;
+    const SourcePos alg_at = tok_.pos;
+    if (!number(alg, "specular algorithm 0 to 5")) return false;
+    int count = 0;
+    if (alg == R(0)) m.specular = Specular::kBlinn, count = 2;
+    else if (alg == R(1)) m.specular = Specular::kBlinnGauss, count = 5;
+    else if (alg == R(2)) m.specular = Specular::kAniso1, count = 12;
+    else if (alg == R(3)) m.specular = Specular::kAniso2, count = 9;
+    else if (alg == R(4)) m.specular = Specular::kCookTorrance, count = 6;
+    else if (alg == R(5)) m.specular = Specular::kConstant, count = 7;
+    else return fail_at(alg_at, "specular algorithm must be 0, 1, 2, 3, 4 or 5");
+    R extra[12];
+    for (int i = 0; i < count; ++i) {
+      if (!number(extra[i], "specular parameter")) return false;
+      if (i < 8) m.p[i] = extra[i];
+    }
+    if (m.specular == Specular::kAniso1 || m.specular == Specular::kAniso2) {
+      warn("warning: anisotropic specular (algorithms 2 and 3) is not supported; drawn as Blinn with its reflectance");
+      m.p[0] = (extra[0] + extra[1] + extra[2]) / R(3);
+      m.p[1] = R(20);
+      m.specular = Specular::kBlinn;
+    }
+    if (m.bump != R(0)) warn("warning: bump needs a mapping, which is not supported; ignored");
+    if (!end_statement("the colour")) return false;
+    if (scene_.material_count >= scene_.material_capacity) return fail_at(at, "too many colours for the memory");
+    scene_.materials[scene_.material_count++] = m;
+    return true;
+  }
+
+  bool map_data(const Token& st) {
+    warn("warning: map_data (texture maps) is not supported; the maps are not read");
+    if (!expect('[', "to open the map list")) return false;
+    while (!tok_.is(']')) {
+      if (tok_.end()) return fail_at(st.pos, "unterminated map_data list: no ']' before the end of the scene");
+      advance();
+    }
+    advance();
+    return true;
+  }
+
+  // ------------------------------------------------------------------ obj
+  bool obj(const Token& st) {
+    if (tok_.is('[')) {
+      if (main_count_ >= kMaxMainObjs) return fail_here("too many unnamed objs");
+      advance();
+      mains_[main_count_] = Lexer::at(tok_);
+      ++main_count_;
+    } else {
+      if (!is_name_token(tok_)) return fail_here("expected '[' or a part name after 'obj'");
+      if (tok_.length >= kNameBytes) return fail_here("part name too long");
+      if (find_part(tok_) != kNone) return fail_here("part defined twice");
+      if (part_count_ >= kMaxParts) return fail_here("too many named objs");
+      Part& p = parts_[part_count_];
+      for (int i = 0; i < tok_.length; ++i) p.name[i] = tok_.s[i];
+      p.name[tok_.length] = 0;
+      p.state = 0;
+      advance();
+      if (!expect('[', "to open the part's body")) return false;
+      p.body = Lexer::at(tok_);
+      ++part_count_;
+    }
+    Walk w;  // syntax only
+    return items(w, Affine<R>{}, kNone, ']', st.pos, 0);
+  }
+
+  int32_t find_part(const Token& t) const {
+    for (int i = 0; i < part_count_; ++i)
+      if (t.is(parts_[i].name)) return i;
+    return kNone;
+  }
+  int32_t find_material(const Token& t) const {
+    for (int i = 0; i < scene_.material_count; ++i)
+      if (scene_.materials[i].name[0] != 0 && t.is(scene_.materials[i].name)) return i;
+    return kNone;
+  }
+
+  bool visit_part(int i) {
+    parts_[i].state = 1;
+    const Lexer::Mark back = lex_.mark();
+    const Token saved = tok_;
+    lex_.seek(parts_[i].body);
+    advance();
+    Walk w;
+    w.follow = true;
+    w.resolve = true;
+    if (!items(w, Affine<R>{}, kNone, ']', parts_[i].body.pos, 0)) return false;
+    lex_.seek(back);
+    tok_ = saved;
+    parts_[i].state = 2;
+    return true;
+  }
+
+  int32_t new_node(NodeKind kind, NodeKind mode, int32_t parent) {
+    if (scene_.node_count >= scene_.node_capacity) {
+      fail_at(tok_.pos, "too many objects for the memory");
+      return kNone;
+    }
+    const int32_t id = scene_.node_count++;
+    Node& n = scene_.nodes[id];
+    n.kind = kind;
+    n.mode = mode;
+    n.parent = parent;
+    n.first_child = n.last_child = n.next = kNone;
+    n.primitive = kNone;
+    if (parent != kNone) {
+      Node& p = scene_.nodes[parent];
+      if (p.last_child == kNone) p.first_child = id;
+      else scene_.nodes[p.last_child].next = id;
+      p.last_child = id;
+    }
+    return id;
+  }
+
+  // A move command; composes it after `m` (nearest the object first).
+  bool move(Affine<R>& m) {
+    const Token t = tok_;
+    advance();
+    Affine<R> x;
+    R v;
+    auto axis_rot = [&](int axis, R deg) {
+      const R rad = deg * R(3.14159265358979323846 / 180.0);
+      const R c = M::cos(rad), s = M::sin(rad);
+      const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // right-handed: a -> b
+      x.m[a * 3 + a] = c;
+      x.m[a * 3 + b] = -s;
+      x.m[b * 3 + a] = s;
+      x.m[b * 3 + b] = c;
+    };
+    if (t.is(":mx") || t.is(":my") || t.is(":mz")) {
+      if (!number(v, "move distance")) return false;
+      const int a = t.s[2] - 'x';
+      if (a == 0) x.t.x = v;
+      else if (a == 1) x.t.y = v;
+      else x.t.z = v;
+    } else if (t.is(":rx") || t.is(":ry") || t.is(":rz")) {
+      if (!number(v, "rotation angle in degrees")) return false;
+      axis_rot(t.s[2] - 'x', v);
+    } else if (t.is(":sx") || t.is(":sy") || t.is(":sz")) {
+      if (!number(v, "scale factor")) return false;
+      const int a = t.s[2] - 'x';
+      x.m[a * 4] = v;
+    } else if (t.is(":mtx")) {
+      R a[16];
+      for (R& e : a)
+        if (!number(e, ":mtx element")) return false;
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) x.m[r * 3 + c] = a[r * 4 + c];
+      }
+      x.t = V{a[3], a[7], a[11]};
+      if (a[12] != R(0) || a[13] != R(0) || a[14] != R(0) || a[15] != R(1))
+        warn("warning: the :mtx bottom row is taken as 0 0 0 1 (affine moves only)");
+    } else {
+      fail_at(t.pos, "unknown move command ");
+      error_->quoted(t.s, t.length).text(" (expected :mx :my :mz :rx :ry :rz :sx :sy :sz or :mtx)");
+      return false;
+    }
+    m = m.then_after(x);
+    return true;
+  }
+
+  // Items up to `close`; `parent` is the node they join (kNone when not
+  // placing). `opened` is where the block began, for the unterminated message.
+  bool items(const Walk& w, Affine<R> m, int32_t parent, char close, const SourcePos& opened, int depth) {
+    if (depth > kMaxNesting) return fail_here("blocks or part calls nested too deeply");
+    for (;;) {
+      if (tok_.bad_comment) return fail_here("");
+      if (tok_.end()) {
+        fail_at(opened, "unterminated block: no '");
+        const char c[2] = {close, 0};
+        error_->text(c).text("' before the end of the scene");
+        return false;
+      }
+      if (tok_.is(close)) {
+        advance();
+        return true;
+      }
+      if (tok_.is('[') || tok_.is('{')) {
+        const bool is_and = tok_.is('{');
+        const SourcePos at = tok_.pos;
+        advance();
+        int32_t node = kNone;
+        if (w.emit && (node = new_node(is_and ? NodeKind::kAnd : NodeKind::kOr, is_and ? NodeKind::kAnd : NodeKind::kOr,
+                                       parent)) == kNone)
+          return false;
+        if (!items(w, m, node, is_and ? '}' : ']', at, depth + 1)) return false;
+      } else if (tok_.is('(')) {
+        if (!range(w, m, parent, depth)) return false;
+      } else if (tok_.s[0] == ':') {
+        if (!move(m)) return false;
+      } else if (is_number()) {
+        if (!object(w, m, parent)) return false;
+      } else if (is_name_token(tok_)) {
+        if (!call(w, m, parent, depth)) return false;
+      } else {
+        return fail_here("expected an object, a move, a block or a part call");
+      }
+    }
+  }
+
+  bool call(const Walk& w, const Affine<R>& m, int32_t parent, int depth) {
+    const Token name = tok_;
+    advance();
+    if (!end_statement("the part call")) return false;
+    if (!w.resolve) return true;
+    const int32_t p = find_part(name);
+    if (p == kNone) {
+      fail_at(name.pos, "undefined part ");
+      error_->quoted(name.s, name.length);
+      return false;
+    }
+    if (!w.follow) return true;
+    if (parts_[p].state == 1) {
+      fail_at(name.pos, "recursive call of part ");
+      error_->quoted(name.s, name.length).text(" (a part may not call itself, directly or through others)");
+      return false;
+    }
+    if (!w.emit && parts_[p].state == 2) return true;  // already checked
+    if (w.emit && ++calls_ > kMaxCalls) return fail_at(name.pos, "too many part calls placed (more than 1000000)");
+    const Lexer::Mark back = lex_.mark();
+    const Token saved = tok_;
+    if (!w.emit) parts_[p].state = 1;
+    lex_.seek(parts_[p].body);
+    advance();
+    // A part's body joins the caller's block: its items combine as the
+    // caller's items do (so a call equals its objects written inline).
+    if (!items(w, m, parent, ']', parts_[p].body.pos, depth + 1)) return false;
+    if (!w.emit) parts_[p].state = 2;
+    lex_.seek(back);
+    tok_ = saved;
+    return true;
+  }
+
+  // Parameter counts of kinds 1..16 after the colour and sign.
+  static int param_count(int kind) {
+    switch (kind) {
+      case 1: return 6;
+      case 2: return 4;
+      case 3: return 6;
+      case 4: case 5: return 7;
+      case 6: case 7: case 8: case 10: case 11: case 15: return 8;
+      case 12: case 13: case 14: return 9;
+      case 16: return 6;
+      default: return -1;
+    }
+  }
+
+  bool range(const Walk& w, const Affine<R>& m, int32_t parent, int depth) {
+    const SourcePos at = tok_.pos;
+    advance();
+    const SourcePos kind_at = tok_.pos;
+    int32_t kind;
+    if (!integer(kind, "RANGE primitive kind 0 to 8", -1000, 1000)) return false;
+    if (kind < 0 || kind > 8) {
+      fail_at(kind_at, "RANGE primitive must be of kind 0 to 8, found kind ");
+      error_->number(kind);
+      return false;
+    }
+    R p[13];
+    int n = 0;
+    if (kind == 0) {
+      while (is_number() && n < 13)
+        if (!number(p[n++], "quadric coefficient")) return false;
+      if (n != 10 && n != 13) return fail_here("RANGE quadric needs 10 coefficients (or l m n and 10)");
+    } else {
+      const int count = param_count(kind);
+      for (; n < count; ++n)
+        if (!number(p[n], "RANGE primitive parameter")) return false;
+    }
+    if (!end_statement("the RANGE primitive")) return false;
+    int32_t node = kNone;
+    if (w.emit) {
+      // A bound combines its items as its parent does.
+      const NodeKind mode = scene_.nodes[parent].mode;
+      if ((node = new_node(NodeKind::kRange, mode, parent)) == kNone) return false;
+      int32_t prim;
+      if (!place(kind, m, p, n, kind_at, prim)) return false;
+      scene_.primitives[prim].inverted = false;
+      scene_.nodes[node].primitive = prim;
+    }
+    return items(w, m, node, ')', at, depth + 1);
+  }
+
+  // Object light (-1, -2, -3) or primitive.
+  bool object(const Walk& w, Affine<R> m, int32_t parent) {
+    const SourcePos at = tok_.pos;
+    int32_t kind;
+    if (!integer(kind, "object kind", -3, 20)) return false;
+    if (kind < 0)
+      return light(kind == -1 ? LightKind::kInfinite : kind == -2 ? LightKind::kPoint : LightKind::kSpot, m, w.emit);
+    if (kind == 9 || (kind > 16 && kind != 20)) {
+      fail_at(at, "unknown object kind ");
+      error_->number(kind).text(" (expected 0 to 8, 10 to 16 or 20)");
+      return false;
+    }
+    // Moves for this object only, nearest first like block moves.
+    while (tok_.length > 0 && tok_.s[0] == ':')
+      if (!move(m)) return false;
+    int32_t mat = kNone;
+    if (!material_ref(w, mat)) return false;
+    R sign;
+    in_polygon_ = kind == 20;  // the '<' after its sign opens the mesh, not a mapping
+    const bool sign_ok = number(sign, "sign 1 or -1");
+    in_polygon_ = false;
+    if (!sign_ok) return false;
+    if (kind == 20) return polygon(w, m, mat, sign < R(0), at);
+    R p[13];
+    int n = 0;
+    if (kind == 0) {
+      while (is_number() && n < 13)
+        if (!number(p[n++], "quadric coefficient")) return false;
+      if (n != 10 && n != 13) return fail_here("quadric (kind 0) needs 10 coefficients a0..a9 (or l m n and a0..a9)");
+    } else {
+      const int count = param_count(kind);
+      for (; n < count; ++n)
+        if (!number(p[n], "object parameter")) return false;
+    }
+    int32_t faces[kFaceCount];
+    for (int32_t& f : faces) f = mat;
+    bool no_shadow = false;
+    for (;;) {
+      if (tok_.is("n")) {
+        no_shadow = true;
+        advance();
+        continue;
+      }
+      int face = -1;
+      if (tok_.is("r") && kind >= 10 && kind <= 15) face = kFaceSide;
+      else if (tok_.is("t") && kind >= 10 && kind <= 15) face = kFaceTop;
+      else if (tok_.is("b") && kind >= 10 && kind <= 15) face = kFaceBottom;
+      else if (kind == 16 && tok_.length == 1 && tok_.s[0] >= '1' && tok_.s[0] <= '6') face = kFaceBox + tok_.s[0] - '1';
+      if (face < 0) break;
+      advance();
+      int32_t fm = kNone;
+      if (!material_ref(w, fm)) return false;
+      faces[face] = fm;
+    }
+    if (!end_statement("the object")) return false;
+    if (!w.emit) return true;
+    int32_t prim;
+    if (!place(kind, m, p, n, at, prim)) return false;
+    Primitive<R>& q = scene_.primitives[prim];
+    q.inverted = sign < R(0);
+    q.no_shadow = no_shadow;
+    for (int i = 0; i < kFaceCount; ++i) q.material[i] = faces[i];
+    const int32_t node = new_node(NodeKind::kLeaf, NodeKind::kLeaf, parent);
+    if (node == kNone) return false;
+    scene_.nodes[node].primitive = prim;
+    return true;
+  }
+
+  // A colour by number or name (walk 1 only checks the form).
+  bool material_ref(const Walk& w, int32_t& out) {
+    if (is_number()) {
+      const SourcePos at = tok_.pos;
+      int32_t i;
+      if (!integer(i, "colour number", 0, 1 << 30)) return false;
+      if (w.resolve && i >= scene_.material_count) {
+        fail_at(at, "undefined colour number ");
+        error_->number(i).text(" (the colour list has ").number(scene_.material_count).text(")");
+        return false;
+      }
+      out = i;
+      return true;
+    }
+    if (!is_name_token(tok_)) return fail_here("expected a colour number or name");
+    if (w.resolve) {
+      out = find_material(tok_);
+      if (out == kNone) {
+        fail_at(tok_.pos, "undefined colour ");
+        error_->quoted(tok_.s, tok_.length);
+        return false;
+      }
+    }
+    advance();
+    skip_mapping();
+    return ok_;
+  }
+
+  // Local frame whose z is `axis` (need not be unit), origin `c`.
+  static Affine<R> frame(const V& c, V axis) {
+    Affine<R> f;
+    const V w = normalize<M>(axis);
+    const V helper = (w.x < R(0) ? -w.x : w.x) < R(0.9) ? V{R(1), R(0), R(0)} : V{R(0), R(1), R(0)};
+    const V u = normalize<M>(cross(helper, w));
+    const V v = cross(w, u);
+    f.m[0] = u.x, f.m[1] = v.x, f.m[2] = w.x;
+    f.m[3] = u.y, f.m[4] = v.y, f.m[5] = w.y;
+    f.m[6] = u.z, f.m[7] = v.z, f.m[8] = w.z;
+    f.t = c;
+    return f;
+  }
+
+  // Builds the primitive of `kind` with parameters p[0..n) under the moves m.
+  bool place(int kind, const Affine<R>& m, const R* p, int n, const SourcePos& at, int32_t& out) {
+    if (scene_.primitive_count >= scene_.primitive_capacity) return fail_at(at, "too many objects for the memory");
+    Primitive<R>& q = scene_.primitives[scene_.primitive_count];
+    q = Primitive<R>{};
+    q.kind = static_cast<uint8_t>(kind);
+    q.shape = kind == 16 ? Shape::kBox : Shape::kQuadric;
+    for (R& a : q.q) a = R(0);
+    Affine<R> placement;
+    const V c{p[0], p[1], p[2]};
+    const V axis{p[3], p[4], p[5]};
+    auto need_axis = [&]() {
+      if (dot(axis, axis) == R(0)) {
+        fail_at(at, "the object's axis vector is zero");
+        return false;
+      }
+      placement = frame(c, axis);
+      return true;
+    };
+    auto positive = [&](R v, const char* what) {
+      if (v > R(0)) return true;
+      fail_at(at, what);
+      return false;
+    };
+    switch (kind) {
+      case 0: {
+        const R* a = n == 13 ? p + 3 : p;
+        if (n == 13) placement.t = c;
+        for (int i = 0; i < 10; ++i) q.q[i] = a[i];
+        break;
+      }
+      case 1:
+        if (!need_axis()) return false;
+        q.q[8] = R(1);  // z < 0 inside: the normal side is outside
+        break;
+      case 2:
+        if (!positive(p[3], "sphere radius must be above 0")) return false;
+        placement.t = c;
+        q.q[0] = q.q[1] = q.q[2] = R(1);
+        q.q[9] = -p[3] * p[3];
+        break;
+      case 3:
+        if (!positive(p[3], "ellipsoid semi-axes must be above 0") || !positive(p[4], "ellipsoid semi-axes must be above 0") ||
+            !positive(p[5], "ellipsoid semi-axes must be above 0"))
+          return false;
+        placement.t = c;
+        q.q[0] = R(1) / (p[3] * p[3]);
+        q.q[1] = R(1) / (p[4] * p[4]);
+        q.q[2] = R(1) / (p[5] * p[5]);
+        q.q[9] = R(-1);
+        break;
+      case 16:
+        if (!positive(p[3], "box half sizes must be above 0") || !positive(p[4], "box half sizes must be above 0") ||
+            !positive(p[5], "box half sizes must be above 0"))
+          return false;
+        placement.t = c;
+        q.q[0] = p[3], q.q[1] = p[4], q.q[2] = p[5];
+        break;
+      default: {
+        if (!need_axis()) return false;
+        const R s = p[6];  // r/t slope, or the radius (5, 15), or q (6)
+        switch (kind) {
+          case 4: case 10: case 11:  // cone: x2 + y2 - s2 z2
+            if (!positive(s, "cone slope r/t must be above 0")) return false;
+            q.q[0] = q.q[1] = R(1);
+            q.q[2] = -s * s;
+            if (kind == 10) q.clip_low = q.clip_high = true, q.z_low = R(0), q.z_high = p[7];
+            if (kind == 11) q.clip_low = q.clip_high = true, q.z_low = -p[7], q.z_high = p[7];
+            if (kind != 4 && !positive(p[7], "cone height h must be above 0")) return false;
+            break;
+          case 5: case 15:  // cylinder
+            if (!positive(s, "cylinder radius must be above 0")) return false;
+            q.q[0] = q.q[1] = R(1);
+            q.q[9] = -s * s;
+            if (kind == 15) {
+              if (!positive(p[7], "cylinder half length h must be above 0")) return false;
+              q.clip_low = q.clip_high = true, q.z_low = -p[7], q.z_high = p[7];
+            }
+            break;
+          case 6:  // spheroid: q along the axis, r across
+            if (!positive(p[6], "spheroid semi-axes must be above 0") || !positive(p[7], "spheroid semi-axes must be above 0"))
+              return false;
+            q.q[0] = q.q[1] = R(1) / (p[7] * p[7]);
+            q.q[2] = R(1) / (p[6] * p[6]);
+            q.q[9] = R(-1);
+            break;
+          case 7: case 14:  // one sheet: x2 + y2 - s2 z2 - d2
+            if (!positive(s, "hyperboloid slope r/t must be above 0") || !positive(p[7], "hyperboloid waist radius must be above 0"))
+              return false;
+            q.q[0] = q.q[1] = R(1);
+            q.q[2] = -s * s;
+            q.q[9] = -p[7] * p[7];
+            if (kind == 14) {
+              if (!positive(p[8], "hyperboloid half length h must be above 0")) return false;
+              q.clip_low = q.clip_high = true, q.z_low = -p[8], q.z_high = p[8];
+            }
+            break;
+          case 8: case 12: case 13:  // two sheets: x2 + y2 - s2 (z2 - d2), vertices at +-d
+            if (!positive(s, "hyperboloid slope r/t must be above 0") || !positive(p[7], "hyperboloid vertex distance must be above 0"))
+              return false;
+            q.q[0] = q.q[1] = R(1);
+            q.q[2] = -s * s;
+            q.q[9] = s * s * p[7] * p[7];
+            if (kind == 12) {
+              if (!(p[8] > p[7])) return fail_at(at, "hyperboloid cut h must lie beyond the vertex d");
+              q.clip_low = q.clip_high = true, q.z_low = R(0), q.z_high = p[8];
+            }
+            if (kind == 13) {
+              if (!(p[8] > p[7])) return fail_at(at, "hyperboloid cut h must lie beyond the vertex d");
+              q.clip_low = q.clip_high = true, q.z_low = -p[8], q.z_high = p[8];
+            }
+            break;
+          default: break;
+        }
+      }
+    }
+    const Affine<R> to_world = m.then_after(placement);
+    if (!to_world.inverse(q.to_local)) return fail_at(at, "the moves make this object flat (a singular transform)");
+    out = scene_.primitive_count++;
+    return true;
+  }
+
+  // Kind 20: `< p id x y z ... P i j k ... ; [c col] [s] [k w] [n] ... >` then ';'.
+  bool polygon(const Walk& w, const Affine<R>& m, int32_t mat, bool /*inverted*/, const SourcePos& at) {
+    if (!tok_.is('<')) return fail_here("expected '<' to open the polygon's vertices and faces");
+    const SourcePos open = tok_.pos;
+    in_polygon_ = true;
+    advance();
+    const int32_t first_vertex = scene_.vertex_count;
+    const int32_t first_triangle = scene_.triangle_count;
+    int32_t mesh_vertices = 0;  // walk 1 counts only
+    bool faces_started = false;
+    while (!tok_.is('>')) {
+      if (tok_.end()) {
+        in_polygon_ = false;
+        return fail_at(open, "unterminated polygon: no '>' before the end of the scene");
+      }
+      if (tok_.is("p")) {
+        if (faces_started) return fail_here("polygon vertices ('p') must all come before the faces ('P')");
+        advance();
+        const SourcePos id_at = tok_.pos;
+        int32_t id;
+        V pos;
+        if (!integer(id, "vertex number", 0, 0x7fffffff) || !vec(pos, "vertex position")) return false;
+        // Stored in every walk, so faces are checked everywhere; a walk
+        // that places nothing drops them again at the end.
+        for (int32_t i = first_vertex; i < scene_.vertex_count; ++i)
+          if (scene_.vertex_ids[i] == id) return fail_at(id_at, "polygon vertex number defined twice");
+        if (scene_.vertex_count >= scene_.vertex_capacity) return fail_at(id_at, "too many vertices for the memory");
+        scene_.vertex_ids[scene_.vertex_count] = id;
+        scene_.vertices[scene_.vertex_count] = m.point(pos);
+        scene_.vertex_normals[scene_.vertex_count] = V{};
+        ++scene_.vertex_count;
+        ++mesh_vertices;
+      } else if (tok_.is("P")) {
+        faces_started = true;
+        if (!face(w, mat, first_vertex)) return false;
+      } else {
+        in_polygon_ = false;
+        return fail_here("expected 'p' (vertex), 'P' (face) or '>' in the polygon");
+      }
+    }
+    in_polygon_ = false;
+    advance();
+    if (mesh_vertices == 0) return fail_at(at, "polygon has no vertices");
+    if (!w.emit) scene_.vertex_count = first_vertex;
+    bool no_shadow = false;
+    while (tok_.is("n")) {
+      no_shadow = true;
+      advance();
+    }
+    if (no_shadow)
+      for (int32_t i = first_triangle; i < scene_.triangle_count; ++i) scene_.triangles[i].no_shadow = true;
+    return end_statement("the polygon object");
+  }
+
+  bool face(const Walk& w, int32_t mat, int32_t first_vertex) {
+    advance();  // 'P'
+    int32_t idx[kMaxFaceVertices];
+    int count = 0;
+    const SourcePos at = tok_.pos;
+    while (!tok_.is(';')) {
+      const SourcePos id_at = tok_.pos;
+      int32_t id;
+      if (!integer(id, "vertex number of the face", 0, 0x7fffffff)) return false;
+      if (count >= kMaxFaceVertices) return fail_at(id_at, "polygon face has too many vertices");
+      int32_t found = kNone;
+      for (int32_t i = first_vertex; i < scene_.vertex_count; ++i)
+        if (scene_.vertex_ids[i] == id) found = i;
+      if (found == kNone) {
+        fail_at(id_at, "polygon face uses undefined vertex ");
+        error_->number(id);
+        return false;
+      }
+      idx[count++] = found;
+    }
+    if (count < 3) return fail_at(at, "polygon face needs at least 3 vertices");
+    advance();  // ';'
+    int32_t fmat = mat;
+    bool smooth = false, no_shadow = false;
+    R weight = R(1);
+    for (;;) {
+      if (tok_.is("c")) {
+        advance();
+        if (!material_ref(w, fmat)) return false;
+      } else if (tok_.is("s")) {
+        smooth = true;
+        advance();
+      } else if (tok_.is("k")) {
+        advance();
+        if (!number(weight, "smoothing weight after 'k'")) return false;
+      } else if (tok_.is("n")) {
+        no_shadow = true;
+        advance();
+      } else {
+        break;
+      }
+    }
+    if (!w.emit) return true;
+    // A fan from the first vertex; the face normal (for smoothing) from
+    // Newell's sum, so a slightly non-planar face still gets one normal.
+    V nsum{};
+    for (int i = 0; i < count; ++i) {
+      const V& a = scene_.vertices[idx[i]];
+      const V& b = scene_.vertices[idx[(i + 1) % count]];
+      nsum += V{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+    }
+    if (dot(nsum, nsum) > R(0) && smooth) {
+      const V fn = normalize<M>(nsum) * weight;
+      for (int i = 0; i < count; ++i) scene_.vertex_normals[idx[i]] += fn;
+    }
+    for (int i = 1; i + 1 < count; ++i) {
+      if (scene_.triangle_count >= scene_.triangle_capacity) return fail_at(at, "too many polygons for the memory");
+      Triangle<R>& t = scene_.triangles[scene_.triangle_count];
+      t.p0 = scene_.vertices[idx[0]];
+      t.e1 = scene_.vertices[idx[i]] - t.p0;
+      t.e2 = scene_.vertices[idx[i + 1]] - t.p0;
+      const V n = cross(t.e1, t.e2);
+      if (dot(n, n) == R(0)) continue;  // a degenerate sliver hides nothing
+      t.n = normalize<M>(n);
+      t.v[0] = idx[0], t.v[1] = idx[i], t.v[2] = idx[i + 1];
+      t.material = fmat;
+      t.smooth = smooth;
+      t.no_shadow = no_shadow;
+      ++scene_.triangle_count;
+    }
+    return true;
+  }
+
+  void finish_vertex_normals() {
+    for (int32_t i = 0; i < scene_.vertex_count; ++i) {
+      const V n = scene_.vertex_normals[i];
+      if (dot(n, n) > R(0)) scene_.vertex_normals[i] = normalize<M>(n);
+    }
+  }
+
+  Lexer lex_;
+  Token tok_;
+  Scene<R>& scene_;
+  WarningSink warnings_;
+  Diagnostic* error_ = nullptr;
+  bool ok_ = true;
+  bool mapping_warned_ = false;
+  bool in_polygon_ = false;
+  Part parts_[kMaxParts];
+  int part_count_ = 0;
+  Lexer::Mark mains_[kMaxMainObjs];
+  int main_count_ = 0;
+  int64_t calls_ = 0;
+};
+
+}  // namespace minrt::eastray

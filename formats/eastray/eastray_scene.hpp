@@ -1,0 +1,207 @@
+// An EASTRAY scene as the reader leaves it (SPEC.md 4, docs/eastray.md):
+// global settings, lights, colours (materials), primitives in their local
+// frames with the world-to-local transform, the CSG tree of OR / AND /
+// RANGE blocks over them, and the triangles of polygon meshes. Plain arrays
+// in the arena with capacities fixed before parsing: parts called many
+// times multiply the items, so the capacities come from the arena's size,
+// not from the text's.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/arena.hpp"
+#include "core/math/vec3.hpp"
+
+namespace minrt::eastray {
+
+inline constexpr int32_t kNone = -1;
+inline constexpr int kNameBytes = 32;
+inline constexpr int kOutputNameBytes = 256;
+
+// An affine map x -> m * x + t (3x3 row-major and a translation).
+template <class R>
+struct Affine {
+  R m[9] = {R(1), R(0), R(0), R(0), R(1), R(0), R(0), R(0), R(1)};
+  Vec3<R> t{};
+
+  Vec3<R> point(const Vec3<R>& p) const {
+    return {m[0] * p.x + m[1] * p.y + m[2] * p.z + t.x, m[3] * p.x + m[4] * p.y + m[5] * p.z + t.y,
+            m[6] * p.x + m[7] * p.y + m[8] * p.z + t.z};
+  }
+  Vec3<R> vector(const Vec3<R>& v) const {
+    return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[3] * v.x + m[4] * v.y + m[5] * v.z,
+            m[6] * v.x + m[7] * v.y + m[8] * v.z};
+  }
+  // The transpose of the linear part times v (normals through an inverse).
+  Vec3<R> transposed(const Vec3<R>& v) const {
+    return {m[0] * v.x + m[3] * v.y + m[6] * v.z, m[1] * v.x + m[4] * v.y + m[7] * v.z,
+            m[2] * v.x + m[5] * v.y + m[8] * v.z};
+  }
+  // this * o (o applied first).
+  Affine then_after(const Affine& o) const {
+    Affine r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        r.m[i * 3 + j] = m[i * 3] * o.m[j] + m[i * 3 + 1] * o.m[3 + j] + m[i * 3 + 2] * o.m[6 + j];
+    r.t = vector(o.t) + t;
+    return r;
+  }
+  R det() const {
+    return m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+           m[2] * (m[3] * m[7] - m[4] * m[6]);
+  }
+  // False when singular.
+  bool inverse(Affine& out) const {
+    const R d = det();
+    if (d == R(0)) return false;
+    const R inv = R(1) / d;
+    out.m[0] = (m[4] * m[8] - m[5] * m[7]) * inv;
+    out.m[1] = (m[2] * m[7] - m[1] * m[8]) * inv;
+    out.m[2] = (m[1] * m[5] - m[2] * m[4]) * inv;
+    out.m[3] = (m[5] * m[6] - m[3] * m[8]) * inv;
+    out.m[4] = (m[0] * m[8] - m[2] * m[6]) * inv;
+    out.m[5] = (m[2] * m[3] - m[0] * m[5]) * inv;
+    out.m[6] = (m[3] * m[7] - m[4] * m[6]) * inv;
+    out.m[7] = (m[1] * m[6] - m[0] * m[7]) * inv;
+    out.m[8] = (m[0] * m[4] - m[1] * m[3]) * inv;
+    out.t = -out.vector(t);
+    return true;
+  }
+};
+
+enum class LightKind : uint8_t { kInfinite, kPoint, kSpot };
+
+template <class R>
+struct Light {
+  LightKind kind;
+  bool no_shadow;
+  Vec3<R> position;   // point, spot
+  Vec3<R> direction;  // infinite: toward the light; spot: where it shines (both unit)
+  Vec3<R> color;
+  R size_deg, concentration;  // infinite: the visible disc
+  R spread, half_distance;    // spot spread; point and spot fall-off (<= 0: none)
+  R shadow_range;             // < 0: shadows at any distance
+};
+
+// Specular algorithms of the manual (lines 402-531).
+enum class Specular : uint8_t { kBlinn = 0, kBlinnGauss = 1, kAniso1 = 2, kAniso2 = 3, kCookTorrance = 4, kConstant = 5 };
+
+template <class R>
+struct Material {
+  char name[kNameBytes];
+  Vec3<R> diffuse, reflect, transmit;
+  R ior, half_distance, bump;
+  Specular specular;
+  // kBlinn: p[0] intensity, p[1] exponent. kBlinnGauss: rgb, p[3] spread,
+  // p[4] Fresnel constant. kCookTorrance: rgb, p[3] ratio, p[4] spread 1,
+  // p[5] spread 2. kConstant: color1 p[0..2], color2 p[3..5], p[6] k.
+  R p[8];
+};
+
+// Primitive kinds after placement (the manual's numbers map onto these).
+enum class Shape : uint8_t { kQuadric, kBox };
+
+// Faces that may carry their own colour.
+enum Face : uint8_t { kFaceSide = 0, kFaceTop = 1, kFaceBottom = 2, kFaceBox = 3 /* +x -x +y -y +z -z: 3..8 */ };
+inline constexpr int kFaceCount = 9;
+
+template <class R>
+struct Primitive {
+  Shape shape;
+  uint8_t kind;       // the manual's kind number (messages, docs)
+  bool no_shadow;
+  bool inverted;      // sign -1
+  bool clip_low, clip_high;  // the slab on local z
+  Affine<R> to_local;        // world -> local
+  // Local quadric a0 x2 + a1 y2 + a2 z2 + a3 xy + a4 yz + a5 zx + a6 x + a7 y
+  // + a8 z + a9 (< 0 inside); box: half extents in q[0..2].
+  R q[10];
+  R z_low, z_high;
+  int32_t material[kFaceCount];
+};
+
+enum class NodeKind : uint8_t { kLeaf, kOr, kAnd, kRange, kTop };
+
+// The CSG tree: the main obj is a kTop node whose children are independent
+// objects; OR and AND combine their children; a RANGE node is a bound and
+// combines its children as its parent does (it changes no image).
+struct Node {
+  NodeKind kind;
+  NodeKind mode;        // how the children combine: kOr, kAnd or kTop
+  int32_t parent;
+  int32_t first_child, last_child, next;
+  int32_t primitive;    // leaf: the primitive; range: its bounding primitive
+};
+
+template <class R>
+struct Triangle {
+  Vec3<R> p0, e1, e2;  // p1 = p0 + e1, p2 = p0 + e2
+  Vec3<R> n;           // unit geometric normal (counter-clockwise = outward)
+  int32_t v[3];        // vertex indices (smooth normals)
+  int32_t material;
+  bool smooth, no_shadow;
+};
+
+template <class R>
+struct Scene {
+  // display (lines 63-80)
+  int32_t width = 256, height = 240, x0 = 0, y0 = 0, x1 = 255, y1 = 239, step_x = 1, step_y = 1;
+  R aspect = R(1);
+  // condition (84-92)
+  int32_t max_depth = 4;
+  R min_weight = R(0.01), eps = R(0.00001);
+  bool inner = false;
+  // anti (94-103)
+  int32_t anti = 0;
+  R anti_level = R(0);
+  // camera (105-117)
+  Vec3<R> eye{R(0), R(0), R(10)}, look{}, up_point{R(0), R(10), R(0)};
+  R fov = R(30), parallax = R(0);
+  // mist, sky, env, shadow, voxel
+  R mist_half = R(0);
+  bool mist_to_sky = false;
+  Vec3<R> sky{}, env{};
+  bool shadows = true;
+  int32_t voxel = 0;
+  char output[kOutputNameBytes] = {};
+
+  Light<R>* lights = nullptr;
+  int32_t light_count = 0, light_capacity = 0;
+  Material<R>* materials = nullptr;
+  int32_t material_count = 0, material_capacity = 0;
+  Primitive<R>* primitives = nullptr;
+  int32_t primitive_count = 0, primitive_capacity = 0;
+  Node* nodes = nullptr;
+  int32_t node_count = 0, node_capacity = 0;
+  Triangle<R>* triangles = nullptr;
+  int32_t triangle_count = 0, triangle_capacity = 0;
+  Vec3<R>* vertices = nullptr;         // world positions of mesh vertices
+  Vec3<R>* vertex_normals = nullptr;   // weighted sums of smooth faces' normals
+  int32_t* vertex_ids = nullptr;       // the ids as written
+  int32_t vertex_count = 0, vertex_capacity = 0;
+  int32_t root = kNone;                // the main obj's kTop node
+
+  static constexpr size_t bytes_per_item() {
+    return sizeof(Light<R>) + sizeof(Material<R>) + sizeof(Primitive<R>) + sizeof(Node) + sizeof(Triangle<R>) +
+           2 * sizeof(Vec3<R>) + sizeof(int32_t);
+  }
+
+  // Every array gets `capacity` items.
+  bool allocate(Arena& arena, int32_t capacity) {
+    const size_t n = static_cast<size_t>(capacity);
+    lights = arena.alloc_zeroed<Light<R>>(n);
+    materials = arena.alloc_zeroed<Material<R>>(n);
+    primitives = arena.alloc_zeroed<Primitive<R>>(n);
+    nodes = arena.alloc_zeroed<Node>(n);
+    triangles = arena.alloc_zeroed<Triangle<R>>(n);
+    vertices = arena.alloc_zeroed<Vec3<R>>(n);
+    vertex_normals = arena.alloc_zeroed<Vec3<R>>(n);
+    vertex_ids = arena.alloc_zeroed<int32_t>(n);
+    light_capacity = material_capacity = primitive_capacity = node_capacity = triangle_capacity = vertex_capacity =
+        capacity;
+    return lights != nullptr && materials != nullptr && primitives != nullptr && nodes != nullptr &&
+           triangles != nullptr && vertices != nullptr && vertex_normals != nullptr && vertex_ids != nullptr;
+  }
+};
+
+}  // namespace minrt::eastray

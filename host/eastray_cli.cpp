@@ -1,0 +1,168 @@
+#include "eastray_cli.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "core/base/arena.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "eastray_preprocess.hpp"
+#include "file_input.hpp"
+#include "formats/eastray/eastray_reader.hpp"
+#include "posix/output_file.hpp"
+#include "png_io.hpp"
+#include "render/general/eastray_tracer.hpp"
+#include "tiff_io.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+constexpr int kExitSceneError = 2;
+constexpr int kExitIoError = 1;
+constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
+constexpr std::size_t kMinItems = 16384;  // capacity of every scene array, at least
+
+bool ends_with_nocase(const std::string& s, const char* tail) {
+  const std::string t(tail);
+  if (s.size() < t.size()) return false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    char c = s[s.size() - t.size() + i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != t[i]) return false;
+  }
+  return true;
+}
+
+std::string replace_extension(const std::string& path, const char* ext) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ext;
+  return path.substr(0, dot) + ext;
+}
+
+struct WarningContext {
+  const ExpandedEastray* expanded;
+  bool quiet;
+};
+
+void print_warning(void* ctx, const Diagnostic& d) {
+  const auto* w = static_cast<const WarningContext*>(ctx);
+  if (w->quiet) return;
+  std::fprintf(stderr, "%s:%d: %s\n", w->expanded->where(d.pos.line).c_str(), d.pos.col, d.message);
+}
+
+template <class M>
+bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::vector<uint8_t>& rgb,
+            std::string& output_statement, std::string& error) {
+  using R = typename M::real;
+  const std::size_t items = kMinItems + x.text.size() / 4;
+  const std::size_t bytes = items * eastray::Scene<R>::bytes_per_item() + 4096;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  eastray::Scene<R> scene;
+  if (!scene.allocate(arena, static_cast<int32_t>(items))) {
+    error = "error: scene does not fit in memory";
+    return false;
+  }
+  WarningContext wc{&x, quiet};
+  auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene,
+                                                     WarningSink{&print_warning, &wc});
+  Diagnostic d;
+  if (!reader->read(d)) {
+    error = x.where(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
+    return false;
+  }
+  output_statement = scene.output;
+  width = scene.width;
+  height = scene.height;
+  std::vector<R> linear(static_cast<std::size_t>(width) * height * 3);
+  const eastray::Tracer<M> tracer(scene);
+  tracer.render(linear.data());
+  rgb.resize(linear.size());
+  for (std::size_t i = 0; i < linear.size(); ++i) rgb[i] = eastray::Tracer<M>::to_byte(linear[i]);
+  return true;
+}
+
+}  // namespace
+
+std::string eastray_output_name(const std::string& option, const std::string& statement,
+                                const std::string& scene_path, bool& tiff, std::string& warning) {
+  std::string name = !option.empty() ? option : !statement.empty() ? statement
+                                              : scene_path == "-" ? std::string("-")
+                                                                  : replace_extension(scene_path, ".png");
+  for (char& c : name)
+    if (c == '\\') c = '/';
+  tiff = ends_with_nocase(name, ".tif") || ends_with_nocase(name, ".tiff");
+  if (option.empty() && (ends_with_nocase(name, ".fal") || ends_with_nocase(name, ".ipr") || ends_with_nocase(name, ".hpi"))) {
+    const std::string png = replace_extension(name, ".png");
+    warning = "output format of '" + name + "' is not supported; writing PNG to '" + png + "'";
+    name = png;
+  }
+  return name;
+}
+
+int run_eastray_cli(EastrayCli& cli) {
+  const bool from_stdin = cli.scene_path == "-";
+  const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
+  if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
+  ExpandedEastray x;
+  std::string error;
+  if (!preprocess_eastray(cli.scene_path, shown, cli.scene_text, x, error)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitSceneError;
+  }
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;
+  std::string statement;
+  bool ok;
+  const Variant v = cli.variant;
+  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(x, cli.quiet, width, height, rgb, statement, error);
+  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(x, cli.quiet, width, height, rgb, statement, error);
+  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(x, cli.quiet, width, height, rgb, statement, error);
+  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(x, cli.quiet, width, height, rgb, statement, error);
+  else ok = render<PortableFloat>(x, cli.quiet, width, height, rgb, statement, error);
+  if (!ok) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitSceneError;
+  }
+  if (!cli.save) return 0;
+  bool tiff = false;
+  std::string warning;
+  const std::string out_path =
+      eastray_output_name(cli.output_path != nullptr ? cli.output_path : "", statement, cli.scene_path, tiff, warning);
+  if (!warning.empty() && !cli.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
+  std::string why;
+  if (!check_output_target(out_path, cli.write_through, why)) {
+    std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
+    return kExitIoError;
+  }
+  AtomicOutput output;
+  bool written = output.open(out_path, cli.write_through, why);
+  if (written) {
+    if (tiff) {
+      written = write_tiff_rgb(output.file(), width, height, rgb, why);
+    } else {
+      RgbaImage image;
+      image.width = width;
+      image.height = height;
+      image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+      for (std::size_t i = 0, n = static_cast<std::size_t>(width) * height; i < n; ++i) {
+        image.rgba[i * 4] = rgb[i * 3];
+        image.rgba[i * 4 + 1] = rgb[i * 3 + 1];
+        image.rgba[i * 4 + 2] = rgb[i * 3 + 2];
+        image.rgba[i * 4 + 3] = 255;
+      }
+      written = write_png(output.file(), image, why);
+    }
+  }
+  if (!written || !output.commit(why)) {
+    output.discard();
+    std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
+    return kExitIoError;
+  }
+  return 0;
+}
+
+}  // namespace minrt::host

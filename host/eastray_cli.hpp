@@ -1,0 +1,31 @@
+// minrt's path for EASTRAY `.ray` scenes: preprocess on the host, read,
+// render, and write the image to -o, else the scene's `output` name, else
+// the scene's name with .png. `.tif` goes through libtiff, anything else is
+// PNG (the old .fal/.ipr/.hpi formats: a warning, and PNG under .png).
+#pragma once
+
+#include <string>
+
+#include "render_variants.hpp"
+
+namespace minrt::host {
+
+struct EastrayCli {
+  std::string scene_path;  // "-" for standard input
+  std::string scene_text;  // already read when scene_path is "-"
+  const char* output_path = nullptr;
+  bool save = true;        // -n turns it off
+  bool quiet = false;      // -q: no warnings
+  bool write_through = false;
+  Variant variant;
+};
+
+int run_eastray_cli(EastrayCli& cli);
+
+// Where the image goes and in which format, from -o, the scene's output
+// statement and the scene's path. `tiff` is set for .tif/.tiff names;
+// `warning` is set when an old format's name was replaced by .png.
+std::string eastray_output_name(const std::string& option, const std::string& statement,
+                                const std::string& scene_path, bool& tiff, std::string& warning);
+
+}  // namespace minrt::host

@@ -1,0 +1,17 @@
+// TIFF output on the host through libtiff (EASTRAY's `output NAME.tif`):
+// 8-bit RGB, uncompressed strips of one row.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace minrt::host {
+
+// Writes `rgb` (3 bytes a pixel, top row first) to the open, seekable file
+// `f` (left open). False with the reason.
+bool write_tiff_rgb(std::FILE* f, int width, int height, const std::vector<uint8_t>& rgb,
+                    std::string& error);
+
+}  // namespace minrt::host

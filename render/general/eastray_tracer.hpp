@@ -1,0 +1,434 @@
+// The EASTRAY tracer: CSG by membership (a crossing of a primitive is a
+// surface of its block when the point passes every enclosing AND (inside
+// the other items) and OR (outside them); the main obj's items are
+// independent objects), RANGE as a bound, polygon triangles, and the
+// manual's shading: ambient (env), diffuse, specular models 0, 1, 4, 5,
+// mirror reflection, Fresnel transmission with absorption, mist, the sky
+// with visible sun discs, three light kinds with 2^(-d/h) fall-off, the
+// display window and step, and adaptive antialiasing. docs/eastray.md has
+// every formula.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/arena.hpp"
+#include "core/math/vec3.hpp"
+#include "formats/eastray/eastray_scene.hpp"
+#include "render/general/quadric_shape.hpp"
+
+namespace minrt::eastray {
+
+inline constexpr int kMaxShadowLayers = 16;  // transparent blockers a shadow ray passes
+
+template <class M>
+class Tracer {
+  using R = typename M::real;
+  using V = Vec3<R>;
+
+ public:
+  explicit Tracer(const Scene<R>& scene) : s_(scene) {
+    forward_ = normalize<M>(s_.look - s_.eye);
+    V up = s_.up_point - s_.look;
+    up = up - forward_ * dot(up, forward_);
+    up_ = normalize<M>(up);
+    right_ = cross(forward_, up_);
+    tan_h_ = M::sin(s_.fov * kDeg) / M::cos(s_.fov * kDeg);
+    tan_v_ = tan_h_ * M::from_int(s_.height) / M::from_int(s_.width) * s_.aspect;
+  }
+
+  // The colour seen through image point (fx, fy) in pixels from the
+  // top-left corner (a pixel's centre is at +0.5).
+  V sample(R fx, R fy) const {
+    const R sx = (R(2) * fx / M::from_int(s_.width) - R(1)) * tan_h_;
+    const R sy = (R(1) - R(2) * fy / M::from_int(s_.height)) * tan_v_;
+    const V d = normalize<M>(forward_ + right_ * sx + up_ * sy);
+    return radiance(s_.eye, d, 0, R(1), R(0));
+  }
+
+  // Renders the image as linear floats (3 per pixel, top row first) into
+  // `rgb`: black outside the window, the step's blocks filled, then
+  // antialiased where neighbours differ.
+  void render(R* rgb, const uint8_t* /*unused*/ = nullptr) const {
+    const int w = s_.width, h = s_.height;
+    for (int i = 0; i < w * h * 3; ++i) rgb[i] = R(0);
+    const int x0 = s_.x0, y0 = s_.y0, x1 = s_.x1, y1 = s_.y1;
+    if (!(0 <= x0 && x0 <= x1 && x1 < w && 0 <= y0 && y0 <= y1 && y1 < h)) return;  // line 75: nothing computed
+    for (int y = y0; y <= y1; y += s_.step_y)
+      for (int x = x0; x <= x1; x += s_.step_x) {
+        V c = sample(M::from_int(x) + R(0.5), M::from_int(y) + R(0.5));
+        if (s_.anti != 0) c = antialias(x, y, c);
+        for (int by = y; by < y + s_.step_y && by <= y1; ++by)
+          for (int bx = x; bx < x + s_.step_x && bx <= x1; ++bx) {
+            R* p = rgb + (static_cast<size_t>(by) * w + bx) * 3;
+            p[0] = c.x, p[1] = c.y, p[2] = c.z;
+          }
+      }
+  }
+
+  // The shaded value to a byte: clamped, times 255, truncated (no gamma).
+  static uint8_t to_byte(R v) {
+    if (!(v > R(0))) return 0;
+    if (v >= R(1)) return 255;
+    return static_cast<uint8_t>(M::to_int(v * R(255)));
+  }
+
+ private:
+  static constexpr R kDeg = R(3.14159265358979323846 / 180.0);
+  static constexpr R kPi = R(3.14159265358979323846);
+
+  struct Hit {
+    R t = R(-1);
+    V normal{};     // unit outward normal of the solid at the hit
+    int32_t material = kNone;
+    bool found = false;
+  };
+
+  // ------------------------------------------------------------ antialias
+  // Anti n >= 1: n x n samples on a regular grid ("distributed"); -1: 16
+  // jittered samples ("stochastic"), only where a neighbour on the step
+  // grid differs by at least `level` (0-255) in a channel.
+  V antialias(int x, int y, const V& centre) const {
+    const R level = s_.anti_level / R(255);
+    bool edge = false;
+    const int dx[4] = {-s_.step_x, s_.step_x, 0, 0}, dy[4] = {0, 0, -s_.step_y, s_.step_y};
+    for (int k = 0; k < 4 && !edge; ++k) {
+      const int nx = x + dx[k], ny = y + dy[k];
+      if (nx < s_.x0 || nx > s_.x1 || ny < s_.y0 || ny > s_.y1) continue;
+      const V o = sample(M::from_int(nx) + R(0.5), M::from_int(ny) + R(0.5));
+      const V diff = o - centre;
+      edge = abs(diff.x) >= level || abs(diff.y) >= level || abs(diff.z) >= level;
+    }
+    if (!edge) return centre;
+    V sum{};
+    int count = 0;
+    if (s_.anti > 0) {
+      const int n = s_.anti;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          sum += sample(M::from_int(x) + (M::from_int(i) + R(0.5)) / M::from_int(n),
+                        M::from_int(y) + (M::from_int(j) + R(0.5)) / M::from_int(n));
+          ++count;
+        }
+    } else {
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+          const uint32_t hsh = hash(static_cast<uint32_t>(x), static_cast<uint32_t>(y), static_cast<uint32_t>(j * 4 + i));
+          const R jx = M::from_int(static_cast<int32_t>(hsh & 0xffff)) / R(65536);
+          const R jy = M::from_int(static_cast<int32_t>(hsh >> 16)) / R(65536);
+          sum += sample(M::from_int(x) + (M::from_int(i) + jx) / R(4), M::from_int(y) + (M::from_int(j) + jy) / R(4));
+          ++count;
+        }
+    }
+    return sum / M::from_int(count);
+  }
+  static uint32_t hash(uint32_t a, uint32_t b, uint32_t c) {
+    uint32_t h = a * 0x9E3779B1u ^ (b + 0x7F4A7C15u) * 0x85EBCA77u ^ (c + 0x165667B1u) * 0xC2B2AE3Du;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    h *= 0x297A2D39u;
+    h ^= h >> 15;
+    return h;
+  }
+  static R abs(R v) { return v < R(0) ? -v : v; }
+  static R maxc(const V& v) { return v.x > v.y ? (v.x > v.z ? v.x : v.z) : (v.y > v.z ? v.y : v.z); }
+  static R pow_pos(R base, R e) {  // base^e for base >= 0
+    if (e == R(0)) return R(1);
+    if (!(base > R(0))) return R(0);
+    return M::exp(e * M::log(base));
+  }
+  static R half_life(R d, R half) {  // 2^(-d/half); no fall-off when half <= 0
+    if (!(half > R(0))) return R(1);
+    return M::exp(-d / half * R(0.69314718055994530942));
+  }
+
+  // ------------------------------------------------------------ CSG walk
+  bool accepted(int32_t node, const V& p) const {
+    int32_t cur = node;
+    for (int32_t par = s_.nodes[cur].parent; par != kNone; cur = par, par = s_.nodes[cur].parent) {
+      const Node& pn = s_.nodes[par];
+      if (pn.mode == NodeKind::kTop) return true;
+      for (int32_t c = pn.first_child; c != kNone; c = s_.nodes[c].next) {
+        if (c == cur) continue;
+        const bool in = node_inside(c, p);
+        if (pn.mode == NodeKind::kAnd && !in) return false;
+        if (pn.mode == NodeKind::kOr && in) return false;
+      }
+    }
+    return true;
+  }
+
+  bool node_inside(int32_t id, const V& p) const {
+    const Node& n = s_.nodes[id];
+    if (n.kind == NodeKind::kLeaf) return inside(s_.primitives[n.primitive], p);
+    if (n.mode == NodeKind::kAnd) {
+      for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next)
+        if (!node_inside(c, p)) return false;
+      return n.first_child != kNone;
+    }
+    for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next)
+      if (node_inside(c, p)) return true;
+    return false;
+  }
+
+  // The nearest accepted crossing below hit.t (or t_max) in the subtree.
+  void nearest_in(int32_t id, const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
+    const Node& n = s_.nodes[id];
+    if (n.kind == NodeKind::kLeaf) {
+      const Primitive<R>& prim = s_.primitives[n.primitive];
+      if (shadow && prim.no_shadow) return;
+      Crossing<R> c[4];
+      const int k = crossings<M>(prim, o, d, t_min, t_max, c);
+      for (int i = 0; i < k; ++i) {
+        if (!accepted(id, o + d * c[i].t)) continue;
+        t_max = c[i].t;
+        hit.t = c[i].t;
+        V wn = prim.to_local.transposed(c[i].normal);
+        if (prim.inverted) wn = -wn;
+        const R len2 = dot(wn, wn);
+        hit.normal = len2 > R(0) ? wn / M::sqrt(len2) : -d;
+        hit.material = prim.material[c[i].face];
+        hit.found = true;
+        return;
+      }
+      return;
+    }
+    if (n.kind == NodeKind::kRange && !meets<M>(s_.primitives[n.primitive], o, d, t_min, t_max)) return;
+    for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next) nearest_in(c, o, d, t_min, t_max, hit, shadow);
+  }
+
+  Hit nearest(const V& o, const V& d, R t_min, R t_max, bool shadow) const {
+    Hit hit;
+    if (s_.root != kNone) nearest_in(s_.root, o, d, t_min, t_max, hit, shadow);
+    for (int32_t i = 0; i < s_.triangle_count; ++i) {
+      const Triangle<R>& tr = s_.triangles[i];
+      if (shadow && tr.no_shadow) continue;
+      const V pv = cross(d, tr.e2);
+      const R det = dot(tr.e1, pv);
+      if (det == R(0)) continue;
+      const R inv = R(1) / det;
+      const V tv = o - tr.p0;
+      const R u = dot(tv, pv) * inv;
+      if (u < R(0) || u > R(1)) continue;
+      const V qv = cross(tv, tr.e1);
+      const R v = dot(d, qv) * inv;
+      if (v < R(0) || u + v > R(1)) continue;
+      const R t = dot(tr.e2, qv) * inv;
+      if (!(t > t_min && t < t_max)) continue;
+      t_max = t;
+      hit.t = t;
+      hit.found = true;
+      hit.material = tr.material;
+      V nrm = tr.n;
+      if (tr.smooth) {
+        const V sn = s_.vertex_normals[tr.v[0]] * (R(1) - u - v) + s_.vertex_normals[tr.v[1]] * u +
+                     s_.vertex_normals[tr.v[2]] * v;
+        if (dot(sn, sn) > R(0)) {
+          nrm = normalize<M>(sn);
+          if (dot(nrm, tr.n) < R(0)) nrm = -nrm;
+        }
+      }
+      hit.normal = nrm;
+    }
+    return hit;
+  }
+
+  // A start point pushed off the surface along `side`, so a new ray does
+  // not meet the surface it leaves.
+  static V offset(const V& p, const V& side) {
+    const R m = R(1) + maxc(V{abs(p.x), abs(p.y), abs(p.z)});
+    const R bias = sizeof(R) == 4 ? R(2e-4) : R(1e-8);
+    return p + side * (bias * m);
+  }
+
+  // Light arriving at p (unit direction L, distance dist) after blockers:
+  // opaque ones stop it, transparent ones tint it by their transmittance.
+  V shadow_factor(const V& p, const V& l, R dist) const {
+    V f{R(1), R(1), R(1)};
+    V o = p;
+    R remaining = dist;
+    for (int layer = 0; layer < kMaxShadowLayers; ++layer) {
+      const Hit h = nearest(o, l, R(0), remaining, true);
+      if (!h.found) return f;
+      const Material<R>& m = s_.materials[h.material];
+      if (maxc(m.transmit) <= R(0)) return V{};
+      f = f * m.transmit;
+      o = offset(o + l * h.t, dot(h.normal, l) > R(0) ? h.normal : -h.normal);
+      remaining = remaining - h.t;
+      if (!(remaining > R(0))) return f;
+    }
+    return f;
+  }
+
+  V sky(const V& d) const {
+    V c = s_.sky;
+    for (int32_t i = 0; i < s_.light_count; ++i) {  // visible sun discs (back_mode 0)
+      const Light<R>& l = s_.lights[i];
+      if (l.kind != LightKind::kInfinite || !(l.size_deg > R(0))) continue;
+      const R cs = dot(d, l.direction);
+      const V x = cross(d, l.direction);
+      const R angle = M::atan2(M::sqrt(dot(x, x)), cs);
+      const R size = l.size_deg * kDeg;
+      if (angle >= size) continue;
+      c += l.color * pow_pos(M::cos(angle / size * (kPi / R(2))), l.concentration);
+    }
+    return c;
+  }
+
+  // Local light at p with shading normal n, view direction v (toward the eye).
+  V direct(const V& p, const V& n, const V& v, const Material<R>& m) const {
+    V c = s_.env * m.diffuse;
+    const R ndv = dot(n, v);
+    for (int32_t i = 0; i < s_.light_count; ++i) {
+      const Light<R>& l = s_.lights[i];
+      V ldir;
+      R dist;
+      V in = l.color;
+      if (l.kind == LightKind::kInfinite) {
+        ldir = l.direction;
+        dist = R(1e30);
+      } else {
+        const V to = l.position - p;
+        dist = M::sqrt(dot(to, to));
+        if (!(dist > R(0))) continue;
+        ldir = to / dist;
+        R k = half_life(dist, l.half_distance);
+        if (l.kind == LightKind::kSpot) {
+          const R ca = -dot(ldir, l.direction);
+          if (!(ca > R(0))) continue;
+          k = k * pow_pos(ca, l.spread);
+        }
+        in = in * k;
+      }
+      const R ndl = dot(n, ldir);
+      if (!(ndl > R(0))) continue;
+      if (s_.shadows && !l.no_shadow && (l.shadow_range < R(0) || dist <= l.shadow_range)) {
+        in = in * shadow_factor(offset(p, n), ldir, dist);
+        if (maxc(in) <= R(0)) continue;
+      }
+      c += in * m.diffuse * ndl;
+      c += in * specular(m, n, v, ldir, ndl, ndv);
+    }
+    if (m.specular == Specular::kConstant) {
+      const V c1{m.p[0], m.p[1], m.p[2]}, c2{m.p[3], m.p[4], m.p[5]};
+      c += c2 + (c1 - c2) * pow_pos(ndv > R(0) ? ndv : R(0), m.p[6]);
+    }
+    return c;
+  }
+
+  V specular(const Material<R>& m, const V& n, const V& v, const V& l, R ndl, R ndv) const {
+    const V hsum = l + v;
+    const R hl = dot(hsum, hsum);
+    if (!(hl > R(0))) return V{};
+    const V h = hsum / M::sqrt(hl);
+    const R ndh = dot(n, h);
+    if (!(ndh > R(0))) return V{};
+    switch (m.specular) {
+      case Specular::kBlinn: {
+        const R k = m.p[0] * pow_pos(ndh, m.p[1]);
+        return V{k, k, k};
+      }
+      case Specular::kBlinnGauss: {
+        if (!(ndv > R(0))) return V{};
+        const R vdh = dot(v, h);
+        const R alpha = M::atan2(M::sqrt(R(1) - ndh * ndh > R(0) ? R(1) - ndh * ndh : R(0)), ndh);
+        const R ca = m.p[3] * alpha;
+        const R dist = M::exp(-ca * ca);
+        const R g = geometry(ndh, ndv, ndl, vdh);
+        const R f0 = m.p[4];
+        const R f = f0 + (R(1) - f0) * pow5(R(1) - vdh);
+        const R k = dist * g * f / ndv;
+        return V{m.p[0], m.p[1], m.p[2]} * k;
+      }
+      case Specular::kCookTorrance: {
+        if (!(ndv > R(0))) return V{};
+        const R vdh = dot(v, h);
+        const R c2 = ndh * ndh;
+        const R tan2 = (R(1) - c2) / c2;
+        auto beckmann = [&](R spread) {
+          if (!(spread > R(0))) return R(0);
+          const R rough2 = R(1) / (spread * spread);
+          return M::exp(-tan2 / rough2) / (kPi * rough2 * c2 * c2);
+        };
+        const R ratio = m.p[3];
+        const R dist = ratio * beckmann(m.p[4]) + (R(1) - ratio) * beckmann(m.p[5]);
+        const R g = geometry(ndh, ndv, ndl, vdh);
+        const R w = pow5(R(1) - vdh);
+        const V f0{m.p[0], m.p[1], m.p[2]};
+        const V f = f0 + (V{R(1), R(1), R(1)} - f0) * w;
+        return f * (dist * g / (R(4) * ndv));
+      }
+      default:
+        return V{};
+    }
+  }
+  static R pow5(R x) {
+    const R x2 = x * x;
+    return x2 * x2 * x;
+  }
+  static R geometry(R ndh, R ndv, R ndl, R vdh) {  // Blinn's / Cook-Torrance's masking and shadowing
+    if (!(vdh > R(0))) return R(0);
+    R g = R(1);
+    const R a = R(2) * ndh * ndv / vdh, b = R(2) * ndh * ndl / vdh;
+    if (a < g) g = a;
+    if (b < g) g = b;
+    return g;
+  }
+
+  // The colour a ray brings back. `medium_half`: the half distance of the
+  // body the ray travels in (0: air).
+  V radiance(const V& o, const V& d, int depth, R weight, R medium_half) const {
+    const Hit h = nearest(o, d, R(0), R(1e30), false);
+    if (!h.found) return sky(d);
+    const Material<R>& m = s_.materials[h.material];
+    const V p = o + d * h.t;
+    const bool from_inside = dot(h.normal, d) > R(0);
+    const V n = from_inside ? -h.normal : h.normal;  // toward the viewer
+    const V v = -d;
+    V c = direct(p, n, v, m);
+    if (depth + 1 < s_.max_depth) {  // condition n: n - 1 levels (line 89)
+      const bool clear = maxc(m.transmit) > R(0);
+      const R cosi = dot(n, v);
+      V kr = m.reflect, kt{};
+      V tdir{};
+      bool refract = false;
+      if (clear) {
+        const R eta = from_inside ? m.ior : R(1) / m.ior;  // n1 / n2
+        const R sin2t = eta * eta * (R(1) - cosi * cosi);
+        if (sin2t < R(1)) {
+          const R cost = M::sqrt(R(1) - sin2t);
+          // Fresnel for unpolarised light: the mean of s and p reflectances.
+          const R rs = (eta * cosi - cost) / (eta * cosi + cost);
+          const R rp = (cosi - eta * cost) / (cosi + eta * cost);
+          const R fr = (rs * rs + rp * rp) / R(2);
+          kr = m.reflect * fr;
+          kt = m.transmit * (R(1) - fr);
+          tdir = d * eta + n * (eta * cosi - cost);
+          refract = true;
+        }
+        if (from_inside && !s_.inner && refract) kr = V{};  // no branching inside bodies
+      }
+      if (maxc(kr) > R(0) && weight * maxc(kr) >= s_.min_weight) {
+        const V rdir = d + n * (R(2) * cosi);
+        c += kr * radiance(offset(p, n), rdir, depth + 1, weight * maxc(kr), medium_half);
+      }
+      if (refract && maxc(kt) > R(0) && weight * maxc(kt) >= s_.min_weight) {
+        const R next_medium = from_inside ? R(0) : m.half_distance;
+        c += kt * radiance(offset(p, -n), normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium);
+      }
+    }
+    if (medium_half > R(0)) c = c * half_life(h.t, medium_half);
+    if (s_.mist_half > R(0) && !(medium_half > R(0))) {
+      const R f = half_life(h.t, s_.mist_half);
+      c = c * f;
+      if (s_.mist_to_sky) c += s_.sky * (R(1) - f);
+    }
+    return c;
+  }
+
+  const Scene<R>& s_;
+  V forward_{}, up_{}, right_{};
+  R tan_h_ = R(0), tan_v_ = R(0);
+};
+
+}  // namespace minrt::eastray
