@@ -103,30 +103,34 @@ std::string eastray_output_name(const std::string& option, const std::string& st
   return name;
 }
 
+bool render_eastray(const std::string& path, const std::string& shown, const std::string& text, Variant v,
+                    bool quiet, EastrayImage& out, std::string& error) {
+  ExpandedEastray x;
+  if (!preprocess_eastray(path, shown, text, x, error)) return false;
+  int& width = out.width;
+  int& height = out.height;
+  std::vector<uint8_t>& rgb = out.rgb;
+  std::string& statement = out.output_statement;
+  if (v.precision == Precision::kDouble) return render<LibmDouble>(x, quiet, width, height, rgb, statement, error);
+  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(x, quiet, width, height, rgb, statement, error);
+  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(x, quiet, width, height, rgb, statement, error);
+  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(x, quiet, width, height, rgb, statement, error);
+  return render<PortableFloat>(x, quiet, width, height, rgb, statement, error);
+}
+
 int run_eastray_cli(EastrayCli& cli) {
   const bool from_stdin = cli.scene_path == "-";
   const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
   if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
-  ExpandedEastray x;
+  EastrayImage img;
   std::string error;
-  if (!preprocess_eastray(cli.scene_path, shown, cli.scene_text, x, error)) {
+  if (!render_eastray(cli.scene_path, shown, cli.scene_text, cli.variant, cli.quiet, img, error)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;
   }
-  int width = 0, height = 0;
-  std::vector<uint8_t> rgb;
-  std::string statement;
-  bool ok;
-  const Variant v = cli.variant;
-  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(x, cli.quiet, width, height, rgb, statement, error);
-  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(x, cli.quiet, width, height, rgb, statement, error);
-  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(x, cli.quiet, width, height, rgb, statement, error);
-  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(x, cli.quiet, width, height, rgb, statement, error);
-  else ok = render<PortableFloat>(x, cli.quiet, width, height, rgb, statement, error);
-  if (!ok) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitSceneError;
-  }
+  const int width = img.width, height = img.height;
+  const std::vector<uint8_t>& rgb = img.rgb;
+  const std::string& statement = img.output_statement;
   if (!cli.save) return 0;
   bool tiff = false;
   std::string warning;

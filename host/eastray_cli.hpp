@@ -4,7 +4,9 @@
 // PNG (the old .fal/.ipr/.hpi formats: a warning, and PNG under .png).
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "render_variants.hpp"
 
@@ -21,6 +23,18 @@ struct EastrayCli {
 };
 
 int run_eastray_cli(EastrayCli& cli);
+
+struct EastrayImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;      // 3 bytes a pixel, top row first
+  std::string output_statement;  // the scene's `output` name, if any
+};
+
+// Preprocesses `text` (read from `path`, shown as `shown`; includes are
+// found from it), reads and renders it. False with the one-line message.
+// Warnings go to standard error unless `quiet`.
+bool render_eastray(const std::string& path, const std::string& shown, const std::string& text, Variant v,
+                    bool quiet, EastrayImage& out, std::string& error);
 
 // Where the image goes and in which format, from -o, the scene's output
 // statement and the scene's path. `tiff` is set for .tif/.tiff names;
