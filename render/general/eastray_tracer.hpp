@@ -248,7 +248,7 @@ class Tracer {
     V o = p;
     R remaining = dist;
     for (int layer = 0; layer < kMaxShadowLayers; ++layer) {
-      const Hit h = nearest(o, l, R(0), remaining, true);
+      const Hit h = nearest(o, l, s_.eps, remaining, true);
       if (!h.found) return f;
       const Material<R>& m = s_.materials[h.material];
       if (maxc(m.transmit) <= R(0)) return V{};
@@ -378,7 +378,9 @@ class Tracer {
   // The colour a ray brings back. `medium_half`: the half distance of the
   // body the ray travels in (0: air).
   V radiance(const V& o, const V& d, int depth, R weight, R medium_half) const {
-    const Hit h = nearest(o, d, R(0), R(1e30), false);
+    // condition eps (line 91): distances below it count as 0, so a ray
+    // never meets the surface it starts on.
+    const Hit h = nearest(o, d, depth == 0 ? R(0) : s_.eps, R(1e30), false);
     if (!h.found) return sky(d);
     const Material<R>& m = s_.materials[h.material];
     const V p = o + d * h.t;

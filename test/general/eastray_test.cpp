@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -493,4 +495,149 @@ TEST_CASE("eastray: output names: -o, the output statement, .tif through libtiff
   std::string warning;
   CHECK(minrt::host::eastray_output_name("", "", "dir/scene.ray", tiff, warning) == "dir/scene.png");
   CHECK_FALSE(tiff);
+}
+
+// ------------------------------------------------------ the finite kinds
+
+TEST_CASE("eastray: finite kinds 10-15 = AND of the infinite surface and the cut planes", "[eastray]") {
+  // Axis (1 2 0.5) through (0 1 0): not along any world axis, with caps.
+  const std::string c = "0 1 0  1 2 0.5  ";
+  auto planes = [](double lo, double hi) {
+    // centre + h * unit axis; unit axis = (1 2 0.5) / 2.2913...
+    const double n = std::sqrt(1.0 + 4.0 + 0.25);
+    auto pt = [&](double h) {
+      char b[96];
+      std::snprintf(b, sizeof b, "%.17g %.17g %.17g", h / n, 1.0 + 2.0 * h / n, 0.5 * h / n);
+      return std::string(b);
+    };
+    return "1 red 1  " + pt(hi) + "  1 2 0.5 ;  1 red 1  " + pt(lo) + "  -1 -2 -0.5 ;";
+  };
+  SECTION("kind 11 (both nappes, cut at +-h)") {
+    check_pair(scene("11 red 1  " + c + "0.5 0.9 ;"), scene("{ 4 red 1  " + c + "0.5 ; " + planes(-0.9, 0.9) + " }"));
+  }
+  SECTION("kind 10 (one nappe on the vector side)") {
+    check_pair(scene("10 red 1  " + c + "0.5 0.9 ;"), scene("{ 4 red 1  " + c + "0.5 ; " + planes(0.0, 0.9) + " }"));
+  }
+  SECTION("kind 14 (one-sheet hyperboloid, length 2h)") {
+    check_pair(scene("14 red 1  " + c + "0.5 0.3 0.8 ;"),
+               scene("{ 7 red 1  " + c + "0.5 0.3 ; " + planes(-0.8, 0.8) + " }"));
+  }
+  SECTION("kind 13 (both sheets cut at +-h)") {
+    check_pair(scene("13 red 1  " + c + "0.8 0.3 0.9 ;"),
+               scene("{ 8 red 1  " + c + "0.8 0.3 ; " + planes(-0.9, 0.9) + " }"));
+  }
+  SECTION("kind 12 (the sheet on the vector side)") {
+    check_pair(scene("12 red 1  " + c + "0.8 0.3 0.9 ;"),
+               scene("{ 8 red 1  " + c + "0.8 0.3 ; " + planes(0.0, 0.9) + " }"));
+  }
+  SECTION("kind 15 with a tilted axis") {
+    check_pair(scene("15 red 1  " + c + "0.4 0.7 ;"), scene("{ 5 red 1  " + c + "0.4 ; " + planes(-0.7, 0.7) + " }"));
+  }
+  SECTION("face colours: r side, t at +h, b at -h") {
+    const auto im = render_text(scene("15 grey 1  0 1 0  0 1 0  0.8 0.5  r red  t blue  b red ;"));
+    CHECK(bluish(px(im, 48, 30)));  // the top cap, seen from above
+    CHECK(reddish(px(im, 48, 38)));
+  }
+}
+
+// ------------------------------------------------------- analytic checks
+
+namespace {
+std::string lit(const std::string& settings, const std::string& lights, const std::string& colors,
+                const std::string& objects) {
+  return "display 64 48 0 0 63 47 1 1 1 ;\ncamera 0 0 10  0 0 0  0 10 0  20 0 ;\nsky 0 0 0 ;\n" + settings +
+         lights + "color [ " + colors + " ]\nobj [ " + objects + " ]\n";
+}
+}  // namespace
+
+TEST_CASE("eastray: shading laws", "[eastray]") {
+  const std::string matte = "m 0.8 0.5 0.25  0 0 0  0 0 0  1 1  0  0 0 1 ;";
+  SECTION("env only: pixel = env x diffuse") {
+    const auto im = render_text(lit("condition 4 0.01 0.00001 0 ;\nenv 0.5 0.5 1 ;\n", "", matte, "2 m 1  0 0 0  2 ;"));
+    const Rgb c = px(im, 32, 24);
+    CHECK(c.r == static_cast<int>(0.8 * 0.5 * 255));
+    CHECK(c.g == static_cast<int>(0.5 * 0.5 * 255));
+    CHECK(c.b == static_cast<int>(0.25 * 255));
+  }
+  SECTION("point light: half the light one half distance farther") {
+    // A wall facing the light head on: intensity 2^(-d/h) times cos = 1.
+    auto wall_at = [&](double d) {
+      const std::string lights = "p_light [ 0 0 " + std::to_string(d) + "  1 1 1  2 ; ]\n";
+      return px(render_text(lit("condition 1 0.01 0.00001 0 ;\nenv 0 0 0 ;\n", lights,
+                                "w 1 1 1  0 0 0  0 0 0  1 1  0  0 0 1 ;", "1 w 1  0 0 0  0 0 1 ;")),
+                32, 24);
+    };
+    const Rgb near = wall_at(1), far = wall_at(3);
+    CHECK(std::abs(near.r - static_cast<int>(255 * 0.70710678)) <= 1);  // 2^(-1/2)
+    CHECK(std::abs(far.r - static_cast<int>(255 * 0.35355339)) <= 1);   // 2^(-3/2)
+  }
+  SECTION("mist: half the colour at the half distance, toward the sky with sw 1") {
+    const std::string wall = "1 w 1  0 0 0  0 0 1 ;";  // 10 away from the eye
+    const std::string white = "w 0 0 0  0 0 0  0 0 0  1 1  0  5 1 1 1  1 1 1  0 ;";  // constant 1
+    const auto dim = render_text(lit("condition 1 0.01 0.00001 0 ;\nenv 0 0 0 ;\nmist 10 0 ;\n", "", white, wall));
+    CHECK(px(dim, 32, 24).r == 127);
+    const auto fog = render_text(
+        "display 64 48 0 0 63 47 1 1 1 ;\ncamera 0 0 10  0 0 0  0 10 0  20 0 ;\nsky 0 0 1 ;\ncondition 1 0.01 0.00001 0 ;\n"
+        "env 0 0 0 ;\nmist 10 1 ;\ncolor [ " + white + " ]\nobj [ " + wall + " ]\n");
+    const Rgb f = px(fog, 32, 24);
+    CHECK(f.r == 127);
+    CHECK(f.b == 255);
+  }
+  SECTION("condition 0 and 1: no reflection; 2: one") {
+    const std::string colors = "mirror 0 0 0  1 1 1  0 0 0  1 1  0  0 0 1 ;  red 1 0 0  0 0 0  0 0 0  1 1  0  0 0 1 ;";
+    // A mirror at 45 degrees sends the centre ray up to a red ball out of view.
+    const std::string objs = "1 mirror 1  0 0 0  0 1 1 ;  2 red 1  0 5 0  1 ;";
+    auto centre = [&](int depth) {
+      return px(render_text(lit("condition " + std::to_string(depth) + " 0.01 0.00001 0 ;\nenv 1 1 1 ;\n", "", colors, objs)),
+                32, 24);
+    };
+    CHECK(centre(0).sum() == 0);
+    CHECK(centre(1).sum() == 0);
+    CHECK(reddish(centre(2)));
+  }
+  SECTION("transmit 0 is a pure mirror; Fresnel splits otherwise") {
+    // The 45-degree plane of the previous section, as a mirror and as glass:
+    // glass reflects only the Fresnel share (about 5 % at 45 degrees, ior 1.5).
+    auto centre = [&](const std::string& plane) {
+      const std::string colors = plane + "  red 1 0 0  0 0 0  0 0 0  1 1  0  0 0 1 ;";
+      return px(render_text(lit("condition 3 0 0.00001 0 ;\nenv 1 1 1 ;\n", "", colors,
+                                "1 g 1  0 0 0  0 1 1 ;  2 red 1  0 5 0  1 ;")),
+                32, 24);
+    };
+    const Rgb mirror = centre("g 0 0 0  1 1 1  0 0 0  1.5 1  0  0 0 1 ;");
+    const Rgb glass = centre("g 0 0 0  1 1 1  1 1 1  1.5 1  0  0 0 1 ;");
+    CHECK(mirror.r == 255);
+    CHECK(glass.r > 5);
+    CHECK(glass.r < 30);
+  }
+  SECTION("antialiasing blends edge pixels only") {
+    const std::string base = "condition 1 0.01 0.00001 0 ;\nenv 1 1 1 ;\n";
+    const std::string colors = "w 1 1 1  0 0 0  0 0 0  1 1  0  0 0 1 ;";
+    const auto plain = render_text(lit(base, "", colors, "2 w 1  0 0 0  1.7 ;"));
+    const auto aa = render_text(lit(base + "anti 4 16 ;\n", "", colors, "2 w 1  0 0 0  1.7 ;"));
+    const auto st = render_text(lit(base + "anti -1 16 ;\n", "", colors, "2 w 1  0 0 0  1.7 ;"));
+    int grey_plain = 0, grey_aa = 0, grey_st = 0;
+    for (std::size_t i = 0; i < plain.rgb.size(); i += 3) {
+      grey_plain += plain.rgb[i] != 0 && plain.rgb[i] != 255;
+      grey_aa += aa.rgb[i] != 0 && aa.rgb[i] != 255;
+      grey_st += st.rgb[i] != 0 && st.rgb[i] != 255;
+    }
+    CHECK(grey_plain == 0);
+    CHECK(grey_aa > 20);
+    CHECK(grey_st > 20);
+    CHECK(px(aa, 32, 24).r == 255);  // interior untouched
+    CHECK(px(aa, 2, 2).r == 0);
+  }
+  SECTION("specular models 1 and 4 put a highlight where the half vector is the normal") {
+    // Light and eye both on +z: the highlight sits at the sphere's centre.
+    for (const char* spec : {"0 1 40", "1 1 1 1  8 0.9", "4 1 1 1  0.5 8 3"}) {
+      INFO(spec);
+      const std::string colors = std::string("s 0.2 0.2 0.2  0 0 0  0 0 0  1 1  0  ") + spec + " ;";
+      const auto im = render_text(lit("condition 1 0.01 0.00001 0 ;\nenv 0 0 0 ;\n", "e_light [ 0 0 1  1 1 1  0 1 ; ]\n",
+                                      colors, "2 s 1  0 0 0  2 ;"));
+      const Rgb mid = px(im, 32, 24), side = px(im, 32 + 12, 24);
+      CHECK(mid.r > 200);
+      CHECK(side.r < mid.r - 60);
+    }
+  }
 }
