@@ -78,7 +78,8 @@ class Tracer {
 
   struct Hit {
     R t = R(-1);
-    V normal{};     // unit outward normal of the solid at the hit
+    V normal{};     // unit outward normal of the solid at the hit (smoothed on meshes)
+    V geo{};        // the geometric one: which side a new ray starts on
     int32_t material = kNone;
     bool found = false;
   };
@@ -187,6 +188,7 @@ class Tracer {
         if (prim.inverted) wn = -wn;
         const R len2 = dot(wn, wn);
         hit.normal = len2 > R(0) ? wn / M::sqrt(len2) : -d;
+        hit.geo = hit.normal;
         hit.material = prim.material[c[i].face];
         hit.found = true;
         return;
@@ -220,6 +222,7 @@ class Tracer {
       hit.found = true;
       hit.material = tr.material;
       V nrm = tr.n;
+      hit.geo = tr.n;
       if (tr.smooth) {
         const V sn = s_.vertex_normals[tr.v[0]] * (R(1) - u - v) + s_.vertex_normals[tr.v[1]] * u +
                      s_.vertex_normals[tr.v[2]] * v;
@@ -276,7 +279,8 @@ class Tracer {
   }
 
   // Local light at p with shading normal n, view direction v (toward the eye).
-  V direct(const V& p, const V& n, const V& v, const Material<R>& m) const {
+  // `start`: p pushed off the surface toward the viewer's side.
+  V direct(const V& p, const V& start, const V& n, const V& v, const Material<R>& m) const {
     V c = s_.env * m.diffuse;
     const R ndv = dot(n, v);
     for (int32_t i = 0; i < s_.light_count; ++i) {
@@ -303,7 +307,7 @@ class Tracer {
       const R ndl = dot(n, ldir);
       if (!(ndl > R(0))) continue;
       if (s_.shadows && !l.no_shadow && (l.shadow_range < R(0) || dist <= l.shadow_range)) {
-        in = in * shadow_factor(offset(p, n), ldir, dist);
+        in = in * shadow_factor(start, ldir, dist);
         if (maxc(in) <= R(0)) continue;
       }
       c += in * m.diffuse * ndl;
@@ -384,10 +388,12 @@ class Tracer {
     if (!h.found) return sky(d);
     const Material<R>& m = s_.materials[h.material];
     const V p = o + d * h.t;
-    const bool from_inside = dot(h.normal, d) > R(0);
+    const bool from_inside = dot(h.geo, d) > R(0);
     const V n = from_inside ? -h.normal : h.normal;  // toward the viewer
+    const V g = from_inside ? -h.geo : h.geo;
     const V v = -d;
-    V c = direct(p, n, v, m);
+    const V above = offset(p, g), below = offset(p, -g);
+    V c = direct(p, above, n, v, m);
     if (depth + 1 < s_.max_depth) {  // condition n: n - 1 levels (line 89)
       const bool clear = maxc(m.transmit) > R(0);
       const R cosi = dot(n, v);
@@ -412,11 +418,11 @@ class Tracer {
       }
       if (maxc(kr) > R(0) && weight * maxc(kr) >= s_.min_weight) {
         const V rdir = d + n * (R(2) * cosi);
-        c += kr * radiance(offset(p, n), rdir, depth + 1, weight * maxc(kr), medium_half);
+        c += kr * radiance(above, rdir, depth + 1, weight * maxc(kr), medium_half);
       }
       if (refract && maxc(kt) > R(0) && weight * maxc(kt) >= s_.min_weight) {
         const R next_medium = from_inside ? R(0) : m.half_distance;
-        c += kt * radiance(offset(p, -n), normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium);
+        c += kt * radiance(below, normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium);
       }
     }
     if (medium_half > R(0)) c = c * half_life(h.t, medium_half);

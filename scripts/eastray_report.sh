@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Renders every EASTRAY scene of ../shared/formats/eastray with minrt in
+# double and in float with the portable shims the board uses, and writes
+#   docs/eastray/<scene>.png   contact sheets: double | float/portable | difference
+#   docs/eastray/table.md      the figures, one row per scene
+# There is no reference renderer: the sheets are for looking at (the README
+# of the scenes says what each must show; test/general/eastray_test.cpp
+# probes it).
+# Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR]
+# Needs build/release (scripts/render.sh or scripts/test.sh builds it).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+shared=$root/../shared
+out=$root/docs/eastray
+while [ $# -gt 0 ]; do
+  case $1 in
+    --shared) shared=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "eastray_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+bin=$root/build/release/host
+for tool in minrt image-compare; do
+  [ -x "$bin/$tool" ] || { echo "eastray_report.sh: error: $bin/$tool not built (run scripts/test.sh first)" >&2; exit 1; }
+done
+dir=$shared/formats/eastray
+[ -d "$dir" ] || { echo "eastray_report.sh: error: no EASTRAY scenes in $dir" >&2; exit 1; }
+mkdir -p "$out"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+{
+  echo "| scene | double ms | float/portable: pixels off by > 1 | largest channel error | block PSNR |"
+  echo "|---|---|---|---|---|"
+  for scene in "$dir"/*.ray; do
+    t=$(basename "$scene" .ray)
+    start=$(date +%s%N)
+    "$bin/minrt" -q "$scene" -o "$work/$t.png"
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    "$bin/minrt" -q --precision float --shims portable "$scene" -o "$work/$t-f.png"
+    read -r off maxerr psnr < <("$bin/image-compare" "$work/$t.png" "$work/$t-f.png" --sheet "$out/$t.png" |
+      awk '/off by/{o=$5}/max channel/{m=$4}/PSNR/{p=$3}END{print o, m, p}')
+    echo "| $t | $ms | $off | $maxerr | $psnr |"
+  done
+} > "$out/table.md"
+echo "wrote $out/table.md and $(ls "$out"/*.png | wc -l) contact sheets in $out"
