@@ -1,6 +1,8 @@
 #include "eastray_cli.hpp"
 
+#include <atomic>
 #include <cstdio>
+#include <thread>
 #include <memory>
 #include <vector>
 
@@ -77,11 +79,25 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   output_statement = scene.output;
   width = scene.width;
   height = scene.height;
-  std::vector<R> linear(static_cast<std::size_t>(width) * height * 3);
+  // Rows are independent: every core takes the next one.
   const eastray::Tracer<M> tracer(scene);
-  tracer.render(linear.data());
-  rgb.resize(linear.size());
-  for (std::size_t i = 0; i < linear.size(); ++i) rgb[i] = eastray::Tracer<M>::to_byte(linear[i]);
+  const std::size_t stride = static_cast<std::size_t>(width) * 3;
+  rgb.assign(stride * static_cast<std::size_t>(height), 0);
+  int threads = static_cast<int>(std::thread::hardware_concurrency());
+  if (threads < 1) threads = 1;
+  if (threads > height) threads = height;
+  std::atomic<int> next{0};
+  auto work = [&] {
+    std::vector<R> row(stride);
+    for (int y; (y = next.fetch_add(1)) < height;) {
+      tracer.render_row(y, row.data());
+      for (std::size_t i = 0; i < stride; ++i) rgb[stride * static_cast<std::size_t>(y) + i] = eastray::Tracer<M>::to_byte(row[i]);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
   return true;
 }
 

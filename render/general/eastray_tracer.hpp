@@ -45,24 +45,28 @@ class Tracer {
     return radiance(s_.eye, d, 0, R(1), R(0));
   }
 
-  // Renders the image as linear floats (3 per pixel, top row first) into
-  // `rgb`: black outside the window, the step's blocks filled, then
-  // antialiased where neighbours differ.
-  void render(R* rgb, const uint8_t* /*unused*/ = nullptr) const {
-    const int w = s_.width, h = s_.height;
-    for (int i = 0; i < w * h * 3; ++i) rgb[i] = R(0);
-    const int x0 = s_.x0, y0 = s_.y0, x1 = s_.x1, y1 = s_.y1;
-    if (!(0 <= x0 && x0 <= x1 && x1 < w && 0 <= y0 && y0 <= y1 && y1 < h)) return;  // line 75: nothing computed
-    for (int y = y0; y <= y1; y += s_.step_y)
-      for (int x = x0; x <= x1; x += s_.step_x) {
-        V c = sample(M::from_int(x) + R(0.5), M::from_int(y) + R(0.5));
-        if (s_.anti != 0) c = antialias(x, y, c);
-        for (int by = y; by < y + s_.step_y && by <= y1; ++by)
-          for (int bx = x; bx < x + s_.step_x && bx <= x1; ++bx) {
-            R* p = rgb + (static_cast<size_t>(by) * w + bx) * 3;
-            p[0] = c.x, p[1] = c.y, p[2] = c.z;
-          }
+  // One image row (0 = top) as linear floats, 3 per pixel: black outside
+  // the display window (line 78: a window that breaks its rules computes
+  // nothing); inside it every step_x-th pixel of every step_y-th row is
+  // traced and fills its block; antialiased where neighbours differ. Rows
+  // are independent, so they may be rendered in any order or in parallel.
+  void render_row(int y, R* rgb) const {
+    const int w = s_.width;
+    for (int i = 0; i < w * 3; ++i) rgb[i] = R(0);
+    if (!window_valid() || y < s_.y0 || y > s_.y1) return;
+    const int traced = s_.y0 + (y - s_.y0) / s_.step_y * s_.step_y;
+    for (int x = s_.x0; x <= s_.x1; x += s_.step_x) {
+      V c = sample(M::from_int(x) + R(0.5), M::from_int(traced) + R(0.5));
+      if (s_.anti != 0) c = antialias(x, traced, c);
+      for (int bx = x; bx < x + s_.step_x && bx <= s_.x1; ++bx) {
+        R* p = rgb + static_cast<size_t>(bx) * 3;
+        p[0] = c.x, p[1] = c.y, p[2] = c.z;
       }
+    }
+  }
+
+  bool window_valid() const {
+    return 0 <= s_.x0 && s_.x0 <= s_.x1 && s_.x1 < s_.width && 0 <= s_.y0 && s_.y0 <= s_.y1 && s_.y1 < s_.height;
   }
 
   // The shaded value to a byte: clamped, times 255, truncated (no gamma).
