@@ -60,7 +60,8 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
             std::string& output_statement, std::string& error) {
   using R = typename M::real;
   const std::size_t items = kMinItems + x.text.size() / 4;
-  const std::size_t bytes = items * eastray::Scene<R>::bytes_per_item() + 4096;
+  const std::size_t bytes =
+      items * eastray::Scene<R>::bytes_per_item() + eastray::Reader<M>::scratch_bytes() + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
   eastray::Scene<R> scene;
@@ -69,7 +70,7 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
     return false;
   }
   WarningContext wc{&x, quiet};
-  auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene,
+  auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene, arena,
                                                      WarningSink{&print_warning, &wc});
   Diagnostic d;
   if (!reader->read(d)) {
@@ -132,6 +133,34 @@ bool render_eastray(const std::string& path, const std::string& shown, const std
   if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(x, quiet, width, height, rgb, statement, error);
   if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(x, quiet, width, height, rgb, statement, error);
   return render<PortableFloat>(x, quiet, width, height, rgb, statement, error);
+}
+
+bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
+                        int& height, std::string& output_statement, std::string& error) {
+  ExpandedEastray x;
+  if (!preprocess_eastray(path, path, text, x, error)) return false;
+  using M = PortableFloat;
+  using R = M::real;
+  const std::size_t items = kMinItems + x.text.size() / 4;
+  const std::size_t bytes = items * eastray::Scene<R>::bytes_per_item() + eastray::Reader<M>::scratch_bytes() + 4096;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  eastray::Scene<R> scene;
+  if (!scene.allocate(arena, static_cast<int32_t>(items))) {
+    error = "error: scene does not fit in memory";
+    return false;
+  }
+  auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene, arena);
+  Diagnostic d;
+  if (!reader->read(d)) {
+    error = x.where(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
+    return false;
+  }
+  width = scene.width;
+  height = scene.height;
+  output_statement = scene.output;
+  board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
+  return true;
 }
 
 int run_eastray_cli(EastrayCli& cli) {

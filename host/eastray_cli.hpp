@@ -42,4 +42,11 @@ bool render_eastray(const std::string& path, const std::string& shown, const std
 std::string eastray_output_name(const std::string& option, const std::string& statement,
                                 const std::string& scene_path, bool& tiff, std::string& warning);
 
+// What host-send sends the board: the scene preprocessed and checked here
+// with the board's reader and arithmetic (so a bad scene is refused with its
+// located message before sending), behind the `/* EASTRAY */` marker the
+// firmware recognises. Also the image size and the output statement.
+bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
+                        int& height, std::string& output_statement, std::string& error);
+
 }  // namespace minrt::host

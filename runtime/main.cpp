@@ -3,7 +3,9 @@
 // first word starts with a letter is a CS418 file (cs418_board.hpp): its
 // image goes back as a streamed PNG; one that starts with `#` or a header
 // field of Jaworski's format (jaworski_board.hpp) gets a streamed BMP; one
-// that starts with a miniRT element (minirt_board.hpp) a streamed PNG. On a bad scene
+// that starts with a miniRT element (minirt_board.hpp) a streamed PNG; one
+// that starts with host-send's `/*` marker is an expanded EASTRAY scene
+// (eastray_board.hpp) and gets a streamed PNG too. On a bad scene
 // or bad arguments it sends one MINRT_ERROR_MARKER line instead and returns
 // a non-zero status, which crt0 hands to the test finisher.
 //
@@ -21,6 +23,7 @@
 #include "cs418_board.hpp"
 #include "jaworski_board.hpp"
 #include "minirt_board.hpp"
+#include "eastray_board.hpp"
 #include "firmware_args.hpp"
 #include "firmware_layout.h"
 #include "footprint.hpp"
@@ -196,6 +199,15 @@ extern "C" int main(int argc, char** argv) {
   minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
   char word[16];
   text.first_word(word, sizeof word);
+  if (minrt::fw::is_eastray_start(first)) {
+    const minrt::fw::EastrayResult r = minrt::fw::render_eastray(text.source(), output.sink(), arena, error);
+    if (r != minrt::fw::EastrayResult::kOk) {
+      send_error(uart, error);
+      return r == minrt::fw::EastrayResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
+    }
+    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
+    return MINRT_STATUS_OK;
+  }
   if (minrt::fw::is_jaworski_start(first, word)) {
     const minrt::fw::JaworskiResult r = minrt::fw::render_jaworski(text.source(), output.sink(), arena, error);
     if (r != minrt::fw::JaworskiResult::kOk) {

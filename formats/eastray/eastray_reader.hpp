@@ -22,7 +22,8 @@ namespace minrt::eastray {
 
 inline constexpr int kMaxParts = 1024;
 inline constexpr int kMaxMainObjs = 64;
-inline constexpr int kMaxNesting = 64;        // blocks inside blocks, calls inside calls
+inline constexpr int kMaxNesting = 32;        // blocks inside blocks, calls inside calls (the board's stack)
+inline constexpr int kMaxDepth = 16;          // condition's ray depth: each level is a stack frame
 inline constexpr int kMaxImageWidth = 2048;   // manual line 68
 inline constexpr int kMaxImageHeight = 4096;  // the project's image limit
 inline constexpr int64_t kMaxCalls = 1000000; // part calls placed in one scene
@@ -34,11 +35,29 @@ class Reader {
   using V = Vec3<R>;
 
  public:
-  Reader(const char* text, size_t size, Scene<R>& scene, WarningSink warnings = {})
-      : lex_(text, size), scene_(scene), warnings_(warnings) {}
+  // The part table (kMaxParts entries) is taken from the top of `scratch`
+  // while reading and given back afterwards.
+  Reader(const char* text, size_t size, Scene<R>& scene, Arena& scratch, WarningSink warnings = {})
+      : lex_(text, size), scene_(scene), scratch_(scratch), warnings_(warnings) {}
+
+  // Arena bytes the reader needs on top of the scene's arrays.
+  static constexpr size_t scratch_bytes() { return Arena::footprint<Part>(kMaxParts); }
 
   bool read(Diagnostic& error) {
+    const size_t mark = scratch_.top_mark();
+    const bool ok = read_all(error);
+    scratch_.release_top(mark);
+    return ok;
+  }
+
+ private:
+  bool read_all(Diagnostic& error) {
     error_ = &error;
+    parts_ = scratch_.template alloc_top<Part>(kMaxParts);
+    if (parts_ == nullptr) {
+      error.text("no memory for the part table");
+      return false;
+    }
     advance();
     while (!tok_.end()) {
       if (!statement()) return false;
@@ -64,7 +83,6 @@ class Reader {
     return true;
   }
 
- private:
   struct Part {
     char name[kNameBytes];
     Lexer::Mark body;  // just after its '['
@@ -232,7 +250,7 @@ class Reader {
     }
     if (st.is("condition")) {
       R inner;
-      if (!integer(scene_.max_depth, "condition depth", 0, 64) || !number(scene_.min_weight, "condition minimum weight") ||
+      if (!integer(scene_.max_depth, "condition depth", 0, kMaxDepth) || !number(scene_.min_weight, "condition minimum weight") ||
           !number(scene_.eps, "condition eps") || !number(inner, "condition inner"))
         return false;
       if (scene_.eps < R(0)) scene_.eps = -scene_.eps;
@@ -962,10 +980,10 @@ class Reader {
   }
 
   bool face(const Walk& w, int32_t mat, int32_t first_vertex) {
-    advance();  // 'P'
+    const SourcePos at = tok_.pos;  // the 'P'
+    advance();
     int32_t idx[kMaxFaceVertices];
     int count = 0;
-    const SourcePos at = tok_.pos;
     while (!tok_.is(';')) {
       const SourcePos id_at = tok_.pos;
       int32_t id;
@@ -1044,12 +1062,13 @@ class Reader {
   Lexer lex_;
   Token tok_;
   Scene<R>& scene_;
+  Arena& scratch_;
   WarningSink warnings_;
   Diagnostic* error_ = nullptr;
   bool ok_ = true;
   bool mapping_warned_ = false;
   bool in_polygon_ = false;
-  Part parts_[kMaxParts];
+  Part* parts_ = nullptr;
   int part_count_ = 0;
   Lexer::Mark mains_[kMaxMainObjs];
   int main_count_ = 0;

@@ -9,6 +9,7 @@
 #include "minirt_cli.hpp"
 #include "minirt_render.hpp"
 #include "posix/output_file.hpp"
+#include "eastray_cli.hpp"
 #include "scene_format.hpp"
 
 #include <minrt/memory_map.h>
@@ -367,7 +368,30 @@ int run(const Options& options) {
     if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
-  const bool png_reply = cs418 || minirt;
+  // An EASTRAY scene: preprocessed and checked here, sent expanded; the
+  // board answers with a PNG, written like minrt's (-o, the output
+  // statement, the scene's name with .png).
+  const bool eastray = format == minrt::host::SceneFormat::kEastray;
+  if (eastray) {
+    if (o.protocol != Protocol::kRaw)
+      return fail(kExitUsage, "EASTRAY scenes go over --protocol raw; course and framed carry SLD only, for now");
+    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
+    std::string expanded, statement;
+    if (!minrt::host::eastray_board_text(o.scene, scene, expanded, png_width, png_height, statement, why))
+      return fail(kExitFirmware, "scene rejected before sending: " + why);
+    scene = expanded;
+    bool tiff = false;
+    std::string warning;
+    const std::string name = minrt::host::eastray_output_name("", statement, o.scene, tiff, warning);
+    if (!o.output_given) {
+      o.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;  // the board sends PNG
+      if (!warning.empty() || tiff)
+        std::fprintf(stderr, "host-send: warning: the board sends PNG; writing %s\n", o.output.c_str());
+    }
+    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
+  }
+  const bool png_reply = cs418 || minirt || eastray;
   if (cs418) {
     if (o.protocol != Protocol::kRaw)
       return fail(kExitUsage, "CS418 scenes go over --protocol raw; course and framed carry SLD only, for now");

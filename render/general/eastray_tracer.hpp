@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
+#include "core/image/row_sink.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/eastray/eastray_scene.hpp"
 #include "render/general/quadric_shape.hpp"
@@ -63,6 +64,23 @@ class Tracer {
         p[0] = c.x, p[1] = c.y, p[2] = c.z;
       }
     }
+  }
+
+  // The whole image, top row first, into an RGBA sink (alpha 255):
+  // `linear` holds 3 * width reals, `rgba` 4 * width bytes.
+  void render(const RgbaRowSink& sink, R* linear, uint8_t* rgba) const {
+    sink.begin(s_.width, s_.height);
+    for (int y = 0; y < s_.height; ++y) {
+      render_row(y, linear);
+      for (int x = 0; x < s_.width; ++x) {
+        rgba[4 * x] = to_byte(linear[3 * x]);
+        rgba[4 * x + 1] = to_byte(linear[3 * x + 1]);
+        rgba[4 * x + 2] = to_byte(linear[3 * x + 2]);
+        rgba[4 * x + 3] = 255;
+      }
+      sink.row(y, rgba);
+    }
+    sink.end();
   }
 
   bool window_valid() const {

@@ -641,3 +641,41 @@ TEST_CASE("eastray: shading laws", "[eastray]") {
     }
   }
 }
+
+// The files of test/general/eastray_bad (also sent to the board by the
+// firmware tests): each names its expected message in its header comment.
+TEST_CASE("eastray: the invalid scene files are refused by minrt and by host-send before sending", "[eastray]") {
+  const std::string dir = EASTRAY_BAD_DIR;
+  const char* names[] = {"bad-number", "missing-semicolon", "no-main", "range-kind", "recursive-part",
+                         "short-face", "undefined-colour", "undefined-vertex", "unknown-statement", "unterminated-block"};
+  const std::string out_dir = temp_dir();
+  for (const char* n : names) {
+    INFO(n);
+    const std::string file = std::string(n) + ".ray";
+    const std::string text = minrt::test::read_file(dir + "/" + file);
+    const std::size_t e = text.find("expect: ");
+    REQUIRE(e != std::string::npos);
+    const std::string expect = text.substr(e + 8, text.find(" */", e) - e - 8);
+    const std::string out = out_dir + "/" + n + ".png";
+    const Run r = run_minrt("-o " + out + " " + file, dir);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind(file + ":" + expect, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(exists(out));
+    // host-send checks the scene with the board's reader before it starts
+    // a link: the same located message, and no image.
+    char errf[] = "/tmp/minrt-ea-send-XXXXXX";
+    const int fd = mkstemp(errf);
+    REQUIRE(fd >= 0);
+    close(fd);
+    const int rc = std::system(("cd '" + dir + "' && " + std::string(MINRT_SEND_BIN) + " --sim " + file + " -o " + out +
+                                " 2>" + errf + " </dev/null >/dev/null").c_str());
+    const std::string err = minrt::test::read_file(errf);
+    std::remove(errf);
+    INFO(err);
+    CHECK((WIFEXITED(rc) && WEXITSTATUS(rc) != 0));
+    CHECK(err.find("scene rejected before sending: " + file + ":" + expect) != std::string::npos);
+    CHECK_FALSE(exists(out));
+  }
+}

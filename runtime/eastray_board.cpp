@@ -1,0 +1,58 @@
+#include "eastray_board.hpp"
+
+#include "board_math.hpp"
+#include "core/image/png_writer.hpp"
+#include "formats/eastray/eastray_reader.hpp"
+#include "render/general/eastray_tracer.hpp"
+
+namespace minrt::fw {
+
+namespace {
+
+// Items of each kind (primitives, nodes, triangles, vertices, lights,
+// colours) a scene may have on the board: about 1.5 MB of arena in float.
+constexpr int32_t kCapacity = 2048;
+
+}  // namespace
+
+bool is_eastray_start(int first_byte) { return first_byte == '/'; }
+
+EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+  using R = Math::real;
+  eastray::Scene<R> scene;
+  if (!scene.allocate(arena, kCapacity)) {
+    error.text("no room for the scene tables");
+    return EastrayResult::kOutOfMemory;
+  }
+  // The text, whole: parts are read again at every call. What is left
+  // after the reader's part table and the rows may hold it.
+  const size_t room = arena.capacity() - arena.used();
+  const size_t reserve = eastray::Reader<Math>::scratch_bytes() + 64 * 1024;
+  if (room <= reserve) {
+    error.text("no room for the scene text");
+    return EastrayResult::kOutOfMemory;
+  }
+  const size_t limit = room - reserve;
+  char* text = arena.alloc_top<char>(limit);
+  size_t size = 0;
+  for (int c; (c = in.get()) >= 0;) {
+    if (size == limit) {
+      error.text("scene larger than the board's memory allows (").number(static_cast<int64_t>(limit)).text(" bytes)");
+      return EastrayResult::kOutOfMemory;
+    }
+    text[size++] = static_cast<char>(c);
+  }
+  eastray::Reader<Math> reader(text, size, scene, arena);
+  if (!reader.read(error)) return EastrayResult::kSceneError;
+  R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (linear == nullptr || row == nullptr) {
+    error.text("image row does not fit in the board's memory");
+    return EastrayResult::kOutOfMemory;
+  }
+  PngStoredWriter png(out);
+  eastray::Tracer<Math>(scene).render(rgba_row_sink_of(png), linear, row);
+  return EastrayResult::kOk;
+}
+
+}  // namespace minrt::fw

@@ -1,0 +1,22 @@
+// The board's path for EASTRAY scenes: host-send preprocesses the scene
+// (#include needs files) and sends the expanded text behind a `/* EASTRAY */`
+// marker; the board reads it whole into the arena, renders it in float with
+// the portable shims like the host's `--precision float --shims portable`,
+// and streams the image back as a stored-deflate PNG.
+#pragma once
+
+#include "core/base/arena.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+
+namespace minrt::fw {
+
+enum class EastrayResult { kOk, kSceneError, kOutOfMemory };
+
+EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
+
+// True when the scene's first byte is host-send's `/*` marker (no other
+// format the board reads starts with '/').
+bool is_eastray_start(int first_byte);
+
+}  // namespace minrt::fw

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# One EASTRAY scene end to end: host-send preprocesses it and sends it to the
+# firmware in firmware-sim (raw protocol), which renders it in float with the
+# portable shims and streams a PNG back; its pixels must equal those of the
+# host's float model (minrt --precision float --shims portable).
+# Usage: eastray_firmware_check.sh SIM FIRMWARE HOST_SEND MINRT IMAGE_COMPARE SCENE WORKDIR
+set -euo pipefail
+sim=$1 fw=$2 send=$3 minrt=$4 compare=$5 scene=$6 work=$7
+mkdir -p "$work"
+name=$(basename "$scene" .ray)
+"$send" -q --sim-binary "$sim" --sim "$fw" "$scene" -o "$work/$name-fw.png"
+"$minrt" -q --precision float --shims portable "$scene" -o "$work/$name-host.png"
+"$compare" --identical "$work/$name-fw.png" "$work/$name-host.png" >/dev/null
+echo "$name: firmware image identical to the host float model"
