@@ -1,0 +1,52 @@
+// The EASTRAY reader and tracer on arbitrary (already preprocessed) text:
+// the reader accepts or refuses with a located message, never crashes or
+// hangs; an accepted small scene renders without reading out of bounds and
+// gives opaque pixels.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <vector>
+
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "formats/eastray/eastray_reader.hpp"
+#include "render/general/eastray_tracer.hpp"
+
+namespace {
+
+template <class M>
+void read_one(const uint8_t* data, size_t size) {
+  using R = typename M::real;
+  constexpr int32_t kItems = 512;
+  static std::vector<unsigned char> storage(kItems * minrt::eastray::Scene<R>::bytes_per_item() +
+                                            minrt::eastray::Reader<M>::scratch_bytes() + 4096);
+  minrt::Arena arena(storage.data(), storage.size());
+  minrt::eastray::Scene<R> scene;
+  if (!scene.allocate(arena, kItems)) std::abort();
+  minrt::eastray::Reader<M> reader(reinterpret_cast<const char*>(data), size, scene, arena);
+  minrt::Diagnostic d;
+  if (!reader.read(d)) {
+    if (d.length <= 0 || !d.has_pos) std::abort();  // a refusal always says what and where
+    return;
+  }
+  if (static_cast<int64_t>(scene.width) * scene.height > 64 || scene.max_depth > 4 || scene.anti > 2) return;
+  std::vector<R> linear(static_cast<size_t>(scene.width) * 3);
+  std::vector<uint8_t> rgba(static_cast<size_t>(scene.width) * 4);
+  struct Check {
+    void begin(int, int) {}
+    void row(int, const uint8_t*) {}
+    void end() {}
+  } check;
+  const minrt::eastray::Tracer<M> tracer(scene);
+  tracer.render(minrt::rgba_row_sink_of(check), linear.data(), rgba.data());
+  for (int x = 0; x < scene.width; ++x)
+    if (rgba[4 * x + 3] != 255) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  read_one<minrt::LibmDouble>(data, size);
+  read_one<minrt::PortableFloat>(data, size);
+  return 0;
+}
