@@ -959,7 +959,7 @@ class Reader {
         ++mesh_vertices;
       } else if (tok_.is("P")) {
         faces_started = true;
-        if (!face(w, mat, first_vertex)) return false;
+        if (!face(w, mat, first_vertex, m.det() < R(0))) return false;
       } else {
         in_polygon_ = false;
         return fail_here("expected 'p' (vertex), 'P' (face) or '>' in the polygon");
@@ -979,7 +979,9 @@ class Reader {
     return end_statement("the polygon object");
   }
 
-  bool face(const Walk& w, int32_t mat, int32_t first_vertex) {
+  // `mirrored`: the moves turn space inside out, so the counter-clockwise
+  // order seen from outside (line 1220) becomes clockwise.
+  bool face(const Walk& w, int32_t mat, int32_t first_vertex, bool mirrored) {
     const SourcePos at = tok_.pos;  // the 'P'
     advance();
     int32_t idx[kMaxFaceVertices];
@@ -1030,6 +1032,7 @@ class Reader {
       const V& b = scene_.vertices[idx[(i + 1) % count]];
       nsum += V{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
     }
+    if (mirrored) nsum = -nsum;
     if (dot(nsum, nsum) > R(0) && smooth) {
       const V fn = normalize<M>(nsum) * weight;
       for (int i = 0; i < count; ++i) scene_.vertex_normals[idx[i]] += fn;
@@ -1042,7 +1045,7 @@ class Reader {
       t.e2 = scene_.vertices[idx[i + 1]] - t.p0;
       const V n = cross(t.e1, t.e2);
       if (dot(n, n) == R(0)) continue;  // a degenerate sliver hides nothing
-      t.n = normalize<M>(n);
+      t.n = mirrored ? -normalize<M>(n) : normalize<M>(n);
       t.v[0] = idx[0], t.v[1] = idx[i], t.v[2] = idx[i + 1];
       t.material = fmat;
       t.smooth = smooth;

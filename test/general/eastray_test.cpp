@@ -679,3 +679,23 @@ TEST_CASE("eastray: the invalid scene files are refused by minrt and by host-sen
     CHECK_FALSE(exists(out));
   }
 }
+
+TEST_CASE("eastray: a closed polygon cube = the box, also as glass and mirrored", "[eastray]") {
+  const std::string mesh =
+      "< p 0 -0.5 0.5 -0.5  p 1 0.5 0.5 -0.5  p 2 0.5 1.5 -0.5  p 3 -0.5 1.5 -0.5"
+      "  p 4 -0.5 0.5 0.5  p 5 0.5 0.5 0.5  p 6 0.5 1.5 0.5  p 7 -0.5 1.5 0.5"
+      "  P 4 5 6 7 ;  P 1 0 3 2 ;  P 5 1 2 6 ;  P 0 4 7 3 ;  P 7 6 2 3 ;  P 0 1 5 4 ; > ;";
+  SECTION("opaque") {
+    check_pair(scene("16 :ry 25 red 1  0 1 0  0.5 0.5 0.5 ;"), scene("20 :ry 25 red 1 " + mesh), 8);
+  }
+  SECTION("glass: refraction through a closed mesh") {
+    const std::string glass =
+        "color [ glass 0 0 0  1 1 1  1 1 1  1.5 2  0  0 0 1 ; ]\n";
+    const std::string deep = "condition 6 0 0.00001 1 ;\n";
+    check_pair(deep + glass + scene("2 blue 1  0.3 0.6 -2  0.6 ; 16 :ry 25 glass 1  0 1 0  0.5 0.5 0.5 ;"),
+               deep + glass + scene("2 blue 1  0.3 0.6 -2  0.6 ; 20 :ry 25 glass 1 " + mesh), 12);
+    // The same cube through a mirroring move (winding turns clockwise).
+    check_pair(deep + glass + scene("2 blue 1  0.3 0.6 -2  0.6 ; 20 :ry 25 glass 1 " + mesh),
+               deep + glass + scene("2 blue 1  0.3 0.6 -2  0.6 ; 20 :ry 25 :sx -1 glass 1 " + mesh), 12);
+  }
+}
