@@ -3,6 +3,7 @@
 #include "board_math.hpp"
 #include "core/image/png_writer.hpp"
 #include "formats/eastray/eastray_reader.hpp"
+#include "render/general/eastray_bvh.hpp"
 #include "render/general/eastray_tracer.hpp"
 
 namespace minrt::fw {
@@ -33,6 +34,7 @@ EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnost
     return EastrayResult::kOutOfMemory;
   }
   const size_t limit = room - reserve;
+  const size_t text_mark = arena.top_mark();
   char* text = arena.alloc_top<char>(limit);
   size_t size = 0;
   for (int c; (c = in.get()) >= 0;) {
@@ -44,6 +46,8 @@ EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnost
   }
   eastray::Reader<Math> reader(text, size, scene, arena);
   if (!reader.read(error)) return EastrayResult::kSceneError;
+  arena.release_top(text_mark);  // the text is no longer needed
+  eastray::build_triangle_bvh<Math>(scene, arena);  // without room, the same image, slower
   R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
   uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
   if (linear == nullptr || row == nullptr) {

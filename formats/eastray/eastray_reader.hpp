@@ -925,12 +925,66 @@ class Reader {
     return true;
   }
 
+  // A mesh's vertex ids -> their place in scene_.vertices: open addressing
+  // over a table from the arena's top, filled once all vertices are read.
+  struct VertexIndex {
+    int32_t* slots = nullptr;
+    uint32_t mask = 0;
+
+    static uint32_t hash(int32_t id) { return static_cast<uint32_t>(id) * 2654435761u; }
+    int32_t find(int32_t id, const int32_t* ids) const {
+      if (slots == nullptr) return kNone;
+      for (uint32_t h = hash(id) & mask;; h = (h + 1) & mask) {
+        if (slots[h] == kNone || ids[slots[h]] == id) return slots[h];
+      }
+    }
+  };
+
+  // Fills `index` with the vertices from `first` on; a repeated id is an
+  // error at its second definition (found again from the mesh's start).
+  bool index_vertices(int32_t first, const Lexer::Mark& body, VertexIndex& index) {
+    const uint32_t n = static_cast<uint32_t>(scene_.vertex_count - first);
+    uint32_t size = 16;
+    while (size < 2 * n) size *= 2;
+    index.slots = scratch_.template alloc_top<int32_t>(size);
+    if (index.slots == nullptr) return fail_here("no memory to index the polygon's vertices");
+    index.mask = size - 1;
+    for (uint32_t i = 0; i < size; ++i) index.slots[i] = kNone;
+    for (int32_t v = first; v < scene_.vertex_count; ++v) {
+      const int32_t id = scene_.vertex_ids[v];
+      uint32_t h = VertexIndex::hash(id) & index.mask;
+      while (index.slots[h] != kNone && scene_.vertex_ids[index.slots[h]] != id) h = (h + 1) & index.mask;
+      if (index.slots[h] != kNone) return duplicate_vertex(body, id);
+      index.slots[h] = v;
+    }
+    return true;
+  }
+
+  bool duplicate_vertex(const Lexer::Mark& body, int32_t id) {
+    lex_.seek(body);
+    int seen = 0;
+    for (advance(); !tok_.end() && !tok_.is('>'); advance()) {
+      if (!tok_.is("p")) continue;
+      advance();
+      R v;
+      if (number_syntax(tok_) && parse_real<R>(tok_.s, tok_.length, v) == NumberStatus::kOk && v == M::from_int(id) &&
+          ++seen == 2)
+        break;
+    }
+    fail_at(tok_.pos, "polygon vertex number defined twice: ");
+    error_->number(id);
+    return false;
+  }
+
   // Kind 20: `< p id x y z ... P i j k ... ; [c col] [s] [k w] [n] ... >` then ';'.
   bool polygon(const Walk& w, const Affine<R>& m, int32_t mat, bool /*inverted*/, const SourcePos& at) {
     if (!tok_.is('<')) return fail_here("expected '<' to open the polygon's vertices and faces");
     const SourcePos open = tok_.pos;
     in_polygon_ = true;
     advance();
+    const Lexer::Mark body = Lexer::at(tok_);
+    const size_t scratch_mark = scratch_.top_mark();
+    VertexIndex index;
     const int32_t first_vertex = scene_.vertex_count;
     const int32_t first_triangle = scene_.triangle_count;
     int32_t mesh_vertices = 0;  // walk 1 counts only
@@ -949,8 +1003,6 @@ class Reader {
         if (!integer(id, "vertex number", 0, 0x7fffffff) || !vec(pos, "vertex position")) return false;
         // Stored in every walk, so faces are checked everywhere; a walk
         // that places nothing drops them again at the end.
-        for (int32_t i = first_vertex; i < scene_.vertex_count; ++i)
-          if (scene_.vertex_ids[i] == id) return fail_at(id_at, "polygon vertex number defined twice");
         if (scene_.vertex_count >= scene_.vertex_capacity) return fail_at(id_at, "too many vertices for the memory");
         scene_.vertex_ids[scene_.vertex_count] = id;
         scene_.vertices[scene_.vertex_count] = m.point(pos);
@@ -958,14 +1010,17 @@ class Reader {
         ++scene_.vertex_count;
         ++mesh_vertices;
       } else if (tok_.is("P")) {
+        if (!faces_started && !index_vertices(first_vertex, body, index)) return false;
         faces_started = true;
-        if (!face(w, mat, first_vertex, m.det() < R(0))) return false;
+        if (!face(w, mat, index, m.det() < R(0))) return false;
       } else {
         in_polygon_ = false;
         return fail_here("expected 'p' (vertex), 'P' (face) or '>' in the polygon");
       }
     }
     in_polygon_ = false;
+    if (!faces_started && mesh_vertices > 0 && !index_vertices(first_vertex, body, index)) return false;
+    scratch_.release_top(scratch_mark);
     advance();
     if (mesh_vertices == 0) return fail_at(at, "polygon has no vertices");
     if (!w.emit) scene_.vertex_count = first_vertex;
@@ -981,7 +1036,7 @@ class Reader {
 
   // `mirrored`: the moves turn space inside out, so the counter-clockwise
   // order seen from outside (line 1220) becomes clockwise.
-  bool face(const Walk& w, int32_t mat, int32_t first_vertex, bool mirrored) {
+  bool face(const Walk& w, int32_t mat, const VertexIndex& index, bool mirrored) {
     const SourcePos at = tok_.pos;  // the 'P'
     advance();
     int32_t idx[kMaxFaceVertices];
@@ -991,9 +1046,7 @@ class Reader {
       int32_t id;
       if (!integer(id, "vertex number of the face", 0, 0x7fffffff)) return false;
       if (count >= kMaxFaceVertices) return fail_at(id_at, "polygon face has too many vertices");
-      int32_t found = kNone;
-      for (int32_t i = first_vertex; i < scene_.vertex_count; ++i)
-        if (scene_.vertex_ids[i] == id) found = i;
+      const int32_t found = index.find(id, scene_.vertex_ids);
       if (found == kNone) {
         fail_at(id_at, "polygon face uses undefined vertex ");
         error_->number(id);

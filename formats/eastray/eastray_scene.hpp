@@ -180,6 +180,11 @@ struct Scene {
   int32_t* vertex_ids = nullptr;       // the ids as written
   int32_t vertex_count = 0, vertex_capacity = 0;
   int32_t root = kNone;                // the main obj's kTop node
+  // A bounding-volume hierarchy over the triangles, when one was built
+  // (render/general/eastray_bvh.hpp); without it every ray tests them all.
+  const void* triangle_bvh_nodes = nullptr;
+  const int32_t* triangle_bvh_refs = nullptr;
+  int32_t triangle_bvh_node_count = 0;
 
   static constexpr size_t bytes_per_item() {
     return sizeof(Light<R>) + sizeof(Material<R>) + sizeof(Primitive<R>) + sizeof(Node) + sizeof(Triangle<R>) +

@@ -15,6 +15,7 @@
 #include "core/image/row_sink.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/eastray/eastray_scene.hpp"
+#include "render/general/bvh.hpp"
 #include "render/general/quadric_shape.hpp"
 
 namespace minrt::eastray {
@@ -221,39 +222,61 @@ class Tracer {
     for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next) nearest_in(c, o, d, t_min, t_max, hit, shadow);
   }
 
+  void triangle(int32_t i, const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
+    const Triangle<R>& tr = s_.triangles[i];
+    if (shadow && tr.no_shadow) return;
+    const V pv = cross(d, tr.e2);
+    const R det = dot(tr.e1, pv);
+    if (det == R(0)) return;
+    const R inv = R(1) / det;
+    const V tv = o - tr.p0;
+    const R u = dot(tv, pv) * inv;
+    if (u < R(0) || u > R(1)) return;
+    const V qv = cross(tv, tr.e1);
+    const R v = dot(d, qv) * inv;
+    if (v < R(0) || u + v > R(1)) return;
+    const R t = dot(tr.e2, qv) * inv;
+    if (!(t > t_min && t < t_max)) return;
+    t_max = t;
+    hit.t = t;
+    hit.found = true;
+    hit.material = tr.material;
+    V nrm = tr.n;
+    hit.geo = tr.n;
+    if (tr.smooth) {
+      const V sn = s_.vertex_normals[tr.v[0]] * (R(1) - u - v) + s_.vertex_normals[tr.v[1]] * u +
+                   s_.vertex_normals[tr.v[2]] * v;
+      if (dot(sn, sn) > R(0)) {
+        nrm = normalize<M>(sn);
+        if (dot(nrm, tr.n) < R(0)) nrm = -nrm;
+      }
+    }
+    hit.normal = nrm;
+  }
+
   Hit nearest(const V& o, const V& d, R t_min, R t_max, bool shadow) const {
     Hit hit;
     if (s_.root != kNone) nearest_in(s_.root, o, d, t_min, t_max, hit, shadow);
-    for (int32_t i = 0; i < s_.triangle_count; ++i) {
-      const Triangle<R>& tr = s_.triangles[i];
-      if (shadow && tr.no_shadow) continue;
-      const V pv = cross(d, tr.e2);
-      const R det = dot(tr.e1, pv);
-      if (det == R(0)) continue;
-      const R inv = R(1) / det;
-      const V tv = o - tr.p0;
-      const R u = dot(tv, pv) * inv;
-      if (u < R(0) || u > R(1)) continue;
-      const V qv = cross(tv, tr.e1);
-      const R v = dot(d, qv) * inv;
-      if (v < R(0) || u + v > R(1)) continue;
-      const R t = dot(tr.e2, qv) * inv;
-      if (!(t > t_min && t < t_max)) continue;
-      t_max = t;
-      hit.t = t;
-      hit.found = true;
-      hit.material = tr.material;
-      V nrm = tr.n;
-      hit.geo = tr.n;
-      if (tr.smooth) {
-        const V sn = s_.vertex_normals[tr.v[0]] * (R(1) - u - v) + s_.vertex_normals[tr.v[1]] * u +
-                     s_.vertex_normals[tr.v[2]] * v;
-        if (dot(sn, sn) > R(0)) {
-          nrm = normalize<M>(sn);
-          if (dot(nrm, tr.n) < R(0)) nrm = -nrm;
-        }
+    if (s_.triangle_bvh_nodes == nullptr) {
+      for (int32_t i = 0; i < s_.triangle_count; ++i) triangle(i, o, d, t_min, t_max, hit, shadow);
+      return hit;
+    }
+    // The hierarchy: nearer child first, boxes beyond the nearest hit skipped.
+    const auto* nodes = static_cast<const general::BvhNode<R>*>(s_.triangle_bvh_nodes);
+    const V inv = general::inverse_dir(d);
+    uint32_t stack[general::kBvhStack];
+    int top = 0;
+    if (general::box_entry(nodes[0].box, o, inv, t_max) >= R(0)) stack[top++] = 0;
+    while (top > 0) {
+      const general::BvhNode<R>& nd = nodes[stack[--top]];
+      if (general::box_entry(nd.box, o, inv, t_max) < R(0)) continue;
+      if (nd.count > 0) {
+        for (uint32_t k = 0; k < nd.count; ++k) triangle(s_.triangle_bvh_refs[nd.index + k], o, d, t_min, t_max, hit, shadow);
+        continue;
       }
-      hit.normal = nrm;
+      const bool flip = d[nd.axis] < R(0);
+      stack[top++] = nd.index + (flip ? 0u : 1u);  // the farther child waits
+      stack[top++] = nd.index + (flip ? 1u : 0u);
     }
     return hit;
   }

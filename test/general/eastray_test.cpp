@@ -454,6 +454,8 @@ TEST_CASE("eastray: invalid scenes get a located one-line error, status 2, no fi
       {"bad-number", head + "obj [ 2 0 1  0 1x 0  1 ; ]\n", "bad-number.ray:8:16:", "expected a number"},
       {"undefined-colour", head + "obj [ 2 gold 1  0 1 0  1 ; ]\n", "undefined-colour.ray:8:9:", "undefined colour 'gold'"},
       {"undefined-part", head + "obj [ table ; ]\n", "undefined-part.ray:8:7:", "undefined part 'table'"},
+      {"duplicate-vertex", head + "obj [ 20 0 1 < p 1 0 0 0  p 2 1 0 0\n  p 1 0 1 0  P 1 2 1 ; > ; ]\n",
+       "duplicate-vertex.ray:9:5:", "defined twice: 1"},
       {"short-face", head + "obj [ 20 0 1 < p 1 0 0 0  p 2 1 0 0  P 1 2 ; > ; ]\n", "short-face.ray:8:", "at least 3 vertices"},
       {"unterminated-comment", head + "/* open\nobj [ ]\n", "unterminated-comment.ray:8:1:", "unterminated comment"},
       {"missing-semicolon", "display 32 24 0 0 31 23 1 1 1\ncondition 4 0.01 0.00001 0 ;\n", "missing-semicolon.ray:2:1:", "expected ';'"},
