@@ -17,9 +17,10 @@ namespace {
 template <class M>
 void read_one(const uint8_t* data, size_t size) {
   using R = typename M::real;
-  constexpr int32_t kItems = 512;
-  static std::vector<unsigned char> storage(kItems * minrt::eastray::Scene<R>::bytes_per_item() +
-                                            minrt::eastray::Reader<M>::scratch_bytes() + 4096);
+  using Scene = minrt::eastray::Scene<R>;
+  constexpr typename Scene::Capacities kItems = Scene::Capacities::all(512);
+  static std::vector<unsigned char> storage(Scene::bytes_for(kItems) + minrt::eastray::Reader<M>::scratch_bytes() +
+                                            4096 * 4 + 4096);
   minrt::Arena arena(storage.data(), storage.size());
   minrt::eastray::Scene<R> scene;
   if (!scene.allocate(arena, kItems)) std::abort();

@@ -25,7 +25,6 @@ namespace {
 constexpr int kExitSceneError = 2;
 constexpr int kExitIoError = 1;
 constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
-constexpr std::size_t kMinItems = 16384;  // capacity of every scene array, at least
 
 bool ends_with_nocase(const std::string& s, const char* tail) {
   const std::string t(tail);
@@ -60,13 +59,16 @@ template <class M>
 bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::vector<uint8_t>& rgb,
             std::string& output_statement, std::string& error) {
   using R = typename M::real;
-  const std::size_t items = kMinItems + x.text.size() / 4;
-  const std::size_t bytes = items * eastray::Scene<R>::bytes_per_item() + eastray::Reader<M>::scratch_bytes() +
-                            eastray::triangle_bvh_bytes<R>(static_cast<int32_t>(items)) + 4096;
+  using Scene = eastray::Scene<R>;
+  const typename Scene::Capacities caps = Scene::Capacities::for_text(x.text.size());
+  // The reader's scratch (part table, a mesh's vertex index) and the BVH
+  // over the triangles come after the scene's arrays.
+  const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
+                            eastray::triangle_bvh_bytes<R>(caps.triangles) + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  eastray::Scene<R> scene;
-  if (!scene.allocate(arena, static_cast<int32_t>(items))) {
+  Scene scene;
+  if (!scene.allocate(arena, caps)) {
     error = "error: scene does not fit in memory";
     return false;
   }
@@ -143,12 +145,14 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   if (!preprocess_eastray(path, path, text, x, error)) return false;
   using M = PortableFloat;
   using R = M::real;
-  const std::size_t items = kMinItems + x.text.size() / 4;
-  const std::size_t bytes = items * eastray::Scene<R>::bytes_per_item() + eastray::Reader<M>::scratch_bytes() + 4096;
+  using Scene = eastray::Scene<R>;
+  const typename Scene::Capacities caps = Scene::Capacities::for_text(x.text.size());
+  const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
+                            4 * Arena::footprint<int32_t>(static_cast<std::size_t>(caps.vertices)) + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  eastray::Scene<R> scene;
-  if (!scene.allocate(arena, static_cast<int32_t>(items))) {
+  Scene scene;
+  if (!scene.allocate(arena, caps)) {
     error = "error: scene does not fit in memory";
     return false;
   }

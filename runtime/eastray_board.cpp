@@ -10,9 +10,9 @@ namespace minrt::fw {
 
 namespace {
 
-// Items of each kind (primitives, nodes, triangles, vertices, lights,
-// colours) a scene may have on the board: about 1.5 MB of arena in float.
-constexpr int32_t kCapacity = 2048;
+// Items of each kind a scene may have on the board: about 1 MB of arena in
+// float, the rest for the text, the BVH and the rows.
+constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096, 4096, 4096};
 
 }  // namespace
 

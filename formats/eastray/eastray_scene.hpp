@@ -186,24 +186,47 @@ struct Scene {
   const int32_t* triangle_bvh_refs = nullptr;
   int32_t triangle_bvh_node_count = 0;
 
-  static constexpr size_t bytes_per_item() {
-    return sizeof(Light<R>) + sizeof(Material<R>) + sizeof(Primitive<R>) + sizeof(Node) + sizeof(Triangle<R>) +
-           2 * sizeof(Vec3<R>) + sizeof(int32_t);
+  // How many items of each kind the arrays hold.
+  struct Capacities {
+    int32_t lights, materials, primitives, nodes, triangles, vertices;
+
+    // The same number for every kind.
+    static constexpr Capacities all(int32_t n) { return {n, n, n, n, n, n}; }
+    // For a scene text of `bytes` bytes on the host: every item takes some
+    // text (a vertex at least 10 bytes, a triangle 6, an object 16, a light
+    // or a colour 20), with floors that leave room for parts called many
+    // times; a scene that needs more is told which kind did not fit.
+    static constexpr Capacities for_text(size_t bytes) {
+      const auto at_least = [](size_t v, int32_t floor) {
+        return v > 0x3fffffff ? 0x3fffffff : (static_cast<int32_t>(v) > floor ? static_cast<int32_t>(v) : floor);
+      };
+      return {at_least(bytes / 20, 1024), at_least(bytes / 20, 1024), at_least(bytes / 16, 16384),
+              at_least(bytes / 8, 32768), at_least(bytes / 6, 16384), at_least(bytes / 10, 16384)};
+    }
+  };
+
+  static constexpr size_t bytes_for(const Capacities& c) {
+    return Arena::footprint<Light<R>>(c.lights) + Arena::footprint<Material<R>>(c.materials) +
+           Arena::footprint<Primitive<R>>(c.primitives) + Arena::footprint<Node>(c.nodes) +
+           Arena::footprint<Triangle<R>>(c.triangles) + 2 * Arena::footprint<Vec3<R>>(c.vertices) +
+           Arena::footprint<int32_t>(c.vertices);
   }
 
-  // Every array gets `capacity` items.
-  bool allocate(Arena& arena, int32_t capacity) {
-    const size_t n = static_cast<size_t>(capacity);
-    lights = arena.alloc_zeroed<Light<R>>(n);
-    materials = arena.alloc_zeroed<Material<R>>(n);
-    primitives = arena.alloc_zeroed<Primitive<R>>(n);
-    nodes = arena.alloc_zeroed<Node>(n);
-    triangles = arena.alloc_zeroed<Triangle<R>>(n);
-    vertices = arena.alloc_zeroed<Vec3<R>>(n);
-    vertex_normals = arena.alloc_zeroed<Vec3<R>>(n);
-    vertex_ids = arena.alloc_zeroed<int32_t>(n);
-    light_capacity = material_capacity = primitive_capacity = node_capacity = triangle_capacity = vertex_capacity =
-        capacity;
+  bool allocate(Arena& arena, const Capacities& c) {
+    lights = arena.alloc_zeroed<Light<R>>(static_cast<size_t>(c.lights));
+    materials = arena.alloc_zeroed<Material<R>>(static_cast<size_t>(c.materials));
+    primitives = arena.alloc_zeroed<Primitive<R>>(static_cast<size_t>(c.primitives));
+    nodes = arena.alloc_zeroed<Node>(static_cast<size_t>(c.nodes));
+    triangles = arena.alloc_zeroed<Triangle<R>>(static_cast<size_t>(c.triangles));
+    vertices = arena.alloc_zeroed<Vec3<R>>(static_cast<size_t>(c.vertices));
+    vertex_normals = arena.alloc_zeroed<Vec3<R>>(static_cast<size_t>(c.vertices));
+    vertex_ids = arena.alloc_zeroed<int32_t>(static_cast<size_t>(c.vertices));
+    light_capacity = c.lights;
+    material_capacity = c.materials;
+    primitive_capacity = c.primitives;
+    node_capacity = c.nodes;
+    triangle_capacity = c.triangles;
+    vertex_capacity = c.vertices;
     return lights != nullptr && materials != nullptr && primitives != nullptr && nodes != nullptr &&
            triangles != nullptr && vertices != nullptr && vertex_normals != nullptr && vertex_ids != nullptr;
   }
