@@ -317,3 +317,15 @@ TEST_CASE("raw P6 from the firmware: a flipped bit passes only with --no-check",
 TEST_CASE("raw P6 from the stand-in board: a flipped bit passes only with --no-check", "[raw][crc][e2e]") {
   check_p6_flip(hs_test::Board::kStandin);
 }
+
+TEST_CASE("host-send --check is for the raw protocol only", "[raw][crc][cli]") {
+  hs_test::TempDir dir;
+  for (const char* protocol : {"framed", "course"}) {
+    const auto r = hs_test::run({HS_HOST_SEND, "--sim", "--protocol", protocol, "--check", ball(), "-o",
+                                 dir.file("x.ppm")});
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("--check applies to --protocol raw"));
+    CHECK_FALSE(hs_test::file_exists(dir.file("x.ppm")));
+  }
+}
