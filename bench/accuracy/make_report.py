@@ -19,6 +19,8 @@ import time
 import numpy as np
 import matplotlib
 
+from safe_output import install_signal_handlers, save_figure, write_atomically
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -123,9 +125,10 @@ def run_firmware(sim, elf, scene, outfile, cache_dir, options=("--cycle-model", 
             return None
         stats = r.stderr
         os.makedirs(cache_dir, exist_ok=True)
-        shutil.copyfile(outfile, image_path)
-        with open(stats_path, "w") as f:
-            f.write(stats)
+        # Whole or not at all: a cut-off entry would be taken as a cached run.
+        with open(outfile, "rb") as f:
+            write_atomically(image_path, f.read())
+        write_atomically(stats_path, stats)
     ins = re.search(r"^instructions: (\d+)", stats, re.M)
     cyc = re.search(r"^cycles: (\d+)", stats, re.M)
     if not ins or not cyc:
@@ -203,11 +206,12 @@ def heat_map(scene, images, outpath):
         ax.axis("off")
     fig.colorbar(im, ax=list(axes), shrink=0.8, label="max channel error")
     fig.suptitle(f"{scene} at {SIZE}x{SIZE}")
-    fig.savefig(outpath, dpi=80)
+    save_figure(fig, outpath, dpi=80)
     plt.close(fig)
 
 
 def main():
+    install_signal_handlers()
     ap = argparse.ArgumentParser()
     ap.add_argument("--tool", required=True)
     ap.add_argument("--root", required=True)
@@ -260,9 +264,8 @@ def main():
         for _, tag, fpu in FPU_VARIANTS:
             div, sqrt = unit_latencies(fpu, lat)
             cfg = os.path.join(fpu_dir, tag + ".cfg")
-            with open(cfg, "w") as f:
-                f.write(f"# the default model with this unit's latencies\nfp_div = {div}\n"
-                        f"fp_sqrt = {sqrt}\n")
+            write_atomically(cfg, f"# the default model with this unit's latencies\nfp_div = {div}\n"
+                             f"fp_sqrt = {sqrt}\n")
             jobs = {"check": pool.submit(fpu_check, args.sim, fpu), "latency": (div, sqrt)}
             for scene in course:
                 image = os.path.join(fpu_dir, f"{stem(scene)}.{tag}.ppm")
@@ -645,7 +648,7 @@ def main():
         ax.set_title(f"FPU models ({FPU_ISA} firmware, unit latencies)")
         ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(docdir, "speed-vs-error.png"), dpi=80)
+    save_figure(fig, os.path.join(docdir, "speed-vs-error.png"), dpi=80)
     plt.close(fig)
     w("![speed against error](accuracy/speed-vs-error.png)\n")
 
@@ -709,8 +712,7 @@ def main():
           "this run.")
     w("")
     path = os.path.join(args.root, "docs", "accuracy.md")
-    with open(path, "w") as f:
-        f.write("\n".join(out))
+    write_atomically(path, "\n".join(out))
     print(f"wrote {path} in {elapsed:.0f} s", file=sys.stderr)
     return 1 if failures or not all(ref_check.values()) else 0
 

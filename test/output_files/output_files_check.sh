@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # firmware-sim --profile-out/--folded-out and accuracy-report --out write
-# through posix/output_file.hpp: a FIFO or a symbolic link as the target is
+# through posix/output_file.hpp (make_report.py through safe_output.py): a FIFO or a symbolic link as the target is
 # refused (status non-zero, one line, the target untouched); a regular file
 # is replaced whole; no temporary file is left behind.
 #   output_files_check.sh FIRMWARE_SIM TEST_ELF ACCURACY_REPORT SCENE
 set -u
 sim=$1 elf=$2 acc=$3 scene=$4
+root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/minrt-output-files.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 fail=0
@@ -53,4 +54,26 @@ check "accuracy-report onto a FIFO: still a FIFO" test -p "$work/$stem.double-li
 check "accuracy-report: the other images are complete P6 files" \
   test "$(head -c 2 "$work/$stem.float-portable.ppm")" = P6 -a "$(stat -c %s "$work/$stem.float-portable.ppm")" -eq $((11 + 8 * 8 * 3))
 check "accuracy-report: no temporary file left" no_temporaries
+# bench/accuracy/make_report.py writes its files (docs/accuracy.md, the
+# figures, its run cache) through bench/accuracy/safe_output.py, the same rules.
+PYTHONDONTWRITEBYTECODE=1 PYTHONPATH="$root/bench/accuracy" python3 - "$work" <<'PY' >"$work/py.out" 2>&1
+import os, sys
+from safe_output import OutputError, write_atomically
+work = sys.argv[1]
+fifo = os.path.join(work, "report.fifo")
+os.mkfifo(fifo)
+try:
+    write_atomically(fifo, "x")
+    sys.exit("FIFO not refused")
+except OutputError as e:
+    assert "it is a FIFO" in str(e), e
+target = os.path.join(work, "accuracy.md")
+with open(target, "w") as f:
+    f.write("old")
+write_atomically(target, "new report\n")
+assert open(target).read() == "new report\n"
+print("python ok")
+PY
+check "safe_output.py: FIFO refused, regular file replaced whole" grep -qx "python ok" "$work/py.out"
+check "safe_output.py: no temporary file left" no_temporaries
 exit $fail
