@@ -205,7 +205,8 @@ extern "C" int main(int argc, char** argv) {
       send_error(uart, error);
       return r == minrt::fw::EastrayResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
     }
-    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), output.bytes());
+    output.end();
+    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
     return MINRT_STATUS_OK;
   }
   if (minrt::fw::is_jaworski_start(first, word)) {
