@@ -67,12 +67,9 @@ void print_help(std::FILE* f) {
       "  -s, --show               show the image in a window afterwards (SLD: with -o FILE)\n"
       "                           (ESC, q or the close button quit; without a display\n"
       "                           a one-line warning, and the file is still written)\n"
-      "  --threads N              render rows on N threads (default: every core;
-"
-      "                           the image is the same for any N)
-"
-      "CS418 (--all-features and --stats also for miniRT):
-"
+      "  --threads N              render rows on N threads (default: every core;\n"
+      "                           the image is the same for any N)\n"
+      "CS418 (--all-features and --stats also for miniRT):\n"
       "  --seed N                 random numbers for aa, dof, roughness, gi (default 1)\n"
       "  --all-features           render on the path with every feature compiled in\n"
       "                           (for measuring what the specialised paths save)\n"
