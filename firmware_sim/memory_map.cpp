@@ -93,8 +93,9 @@ void check_memory_map(const MemoryMap& m) {
     fail("RAM base and size must be multiples of 4096 (RAM " + hex(m.ram_base) + ", size " + hex(m.ram_size) + ")");
   if (m.ram_size < 65536) fail("RAM size must be at least 64K, got " + std::to_string(m.ram_size));
   if (m.ram_size > 0x7ffff000u) fail("RAM size must be at most 2047M, got " + std::to_string(m.ram_size));
-  if (uint64_t{m.ram_base} + m.ram_size > (uint64_t{1} << 32))
-    fail("RAM " + hex(m.ram_base) + "+" + hex(m.ram_size) + " runs past the end of the 32-bit address space");
+  // RAM must end below 4 GiB: a2 and the boot block hold its end address.
+  if (uint64_t{m.ram_base} + m.ram_size >= (uint64_t{1} << 32))
+    fail("RAM " + hex(m.ram_base) + "+" + hex(m.ram_size) + " must end below the top of the 32-bit address space");
   if (m.uart_base % 8 || uint64_t{m.uart_base} + kUartSize > (uint64_t{1} << 32))
     fail("UART base " + hex(m.uart_base) + " must be 8-byte aligned and leave room for its registers");
   if (m.finisher_base % 4 || uint64_t{m.finisher_base} + kFinisherSize > (uint64_t{1} << 32))

@@ -14,8 +14,9 @@ extern uint8_t __bss_start[], __bss_end[];
 extern uint8_t __arena_start[], __arena_end[];
 extern uint32_t __stack_bottom[];
 
-// sp at entry to crt0, stored by crt0 (firmware-sim starts it above
-// __stack_top, right below the argument block).
+// sp at entry to crt0, stored by crt0 (firmware-sim starts it at RAM end -
+// MINRT_BOOT_ARGS_MAX, right below the argument block: __stack_top with the
+// board's 4 MiB).
 uintptr_t minrt_initial_sp;
 }
 
