@@ -65,7 +65,7 @@ const char* cli_help_text() {
          "  -h, --help             this help\n"
          "  --version              the version\n"
          "Exit status: firmware's code; 2 usage, 3 bad ELF, 4 trap, 5 instruction limit,\n"
-         "6 UART input exhausted while polled, 7 host I/O error.\n";
+         "6 UART input exhausted while polled, 7 host I/O error, 8 killed from gdb.\n";
 }
 
 CliOptions parse_cli(const std::vector<std::string>& argv) {
