@@ -11,7 +11,10 @@
 //   host  S(seq=i, 1024-byte chunks of the SLD text)... E(u32 size, u32 crc)
 //   board K (scene complete) | N (damaged: host starts over) | X(message)
 //   board H(u16 width, u16 height), then D(seq=row, 3*width RGB bytes) per
-//         row as it is rendered, then Z(u16 height)
+//         row as it is rendered, then Z(u16 height); for CS418 and Jaworski
+//         scenes (protocol/text_scene_upload.hpp) 4*width RGBA bytes, rows
+//         numbered in the order rendered, which the host hands to the
+//         format's writer (PNG, BMP) in that order
 //   host  Q(list of u16 row numbers, 0xFFFF = the header) for rows it lacks
 //         or got damaged; the board re-sends them and Z again
 //   host  F when it has everything; the board halts.
@@ -198,25 +201,36 @@ class SceneCollector {
 
 // Board side, step 2: a row sink (begin, row, end; core/image/row_sink.hpp)
 // that sends the H frame, then one D frame per finished row, keeping the
-// pixels in `store` (3*width*height bytes) to answer Q requests.
+// pixels in `store` (3*width*height bytes) to answer Q requests. Rows are
+// numbered in the order they arrive (a bottom-up tracer's first row is 0).
+// With 4 bytes a pixel it carries the general tracer's RGBA rows (CS418
+// and Jaworski scenes); a store can then be attached once the size is known.
 class RowFramer {
  public:
   RowFramer(ByteSink link, uint8_t* store, size_t capacity) : link_(link), store_(store), cap_(capacity) {}
 
+  // Before begin(): where the rows are kept (nullptr: sent once only), and
+  // the bytes of a pixel (3 RGB, 4 RGBA).
+  void attach_store(uint8_t* store, size_t capacity) {
+    store_ = store;
+    cap_ = store == nullptr ? 0 : capacity;
+  }
+  void set_pixel_bytes(int n) { pixel_bytes_ = n; }
+
   void begin(int width, int height) {
     width_ = width;
     height_ = height;
-    row_bytes_ = static_cast<size_t>(width) * 3;
+    row_bytes_ = static_cast<size_t>(width) * static_cast<size_t>(pixel_bytes_);
     fits_ = row_bytes_ * static_cast<size_t>(height) <= cap_ && row_bytes_ <= 0xFFFF;
     send_header();
   }
-  void row(int /*y*/, const uint8_t* rgb) {
+  void row(int /*y*/, const uint8_t* pixels) {
     if (fits_) {
       uint8_t* dst = store_ + static_cast<size_t>(rows_) * row_bytes_;
-      for (size_t i = 0; i < row_bytes_; ++i) dst[i] = rgb[i];
+      for (size_t i = 0; i < row_bytes_; ++i) dst[i] = pixels[i];
       send_row(static_cast<uint16_t>(rows_));
     } else if (row_bytes_ <= 0xFFFF) {
-      write_frame(link_, kRow, static_cast<uint16_t>(rows_), rgb, static_cast<uint16_t>(row_bytes_));
+      write_frame(link_, kRow, static_cast<uint16_t>(rows_), pixels, static_cast<uint16_t>(row_bytes_));
     }
     ++rows_;
   }
@@ -235,8 +249,7 @@ class RowFramer {
   }
   void send_row(uint16_t row) {
     if (!fits_ || row >= height_) return;
-    const size_t n = static_cast<size_t>(width_) * 3;
-    write_frame(link_, kRow, row, store_ + n * row, static_cast<uint16_t>(n));
+    write_frame(link_, kRow, row, store_ + row_bytes_ * row, static_cast<uint16_t>(row_bytes_));
   }
   void send_end() {
     uint8_t p[2];
@@ -257,6 +270,7 @@ class RowFramer {
   ByteSink link_;
   uint8_t* store_;
   size_t cap_;
+  int pixel_bytes_ = 3;
   int width_ = 0, height_ = 0;
   size_t row_bytes_ = 0;
   int rows_ = 0;

@@ -98,4 +98,54 @@ inline bool receive(ByteSource in, Arena& arena, Table& table, Diagnostic& error
   return true;
 }
 
+// The same preamble already in memory (course and framed protocols: the
+// scene upload holds it, protocol/text_scene_upload.hpp): the table points
+// into `data`, nothing is copied. `data` starts after the marker byte;
+// `used` is the preamble's length from there.
+inline bool view(const uint8_t* data, size_t size, Table& table, size_t& used, Diagnostic& error) {
+  size_t at = 0;
+  auto cut = [&](size_t need) { return need > size - at; };
+  if (cut(1) || data[0] < 1 || data[0] > MINRT_MAX_TEXTURES) {
+    error.text("texture preamble: bad texture count");
+    return false;
+  }
+  const int count = data[at++];
+  for (int t = 0; t < count; ++t) {
+    Received& r = table.items[t];
+    if (cut(1) || data[at] < 1) {
+      error.text("texture preamble: bad name length");
+      return false;
+    }
+    const size_t len = data[at++];
+    if (cut(len)) {
+      error.text("texture preamble cut off in a name");
+      return false;
+    }
+    for (size_t k = 0; k < len; ++k) r.name[k] = static_cast<char>(data[at + k]);
+    r.name[len] = 0;
+    at += len;
+    if (cut(4)) {
+      error.text("texture preamble cut off in the size of ").text(r.name);
+      return false;
+    }
+    r.width = data[at] | data[at + 1] << 8;
+    r.height = data[at + 2] | data[at + 3] << 8;
+    at += 4;
+    if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
+      error.text("texture ").text(r.name).text(": bad size");
+      return false;
+    }
+    const size_t bytes = static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
+    if (cut(bytes)) {
+      error.text("texture ").text(r.name).text(" cut off after ").number(static_cast<int64_t>(size - at)).text(" bytes");
+      return false;
+    }
+    r.rgb = data + at;
+    at += bytes;
+    table.count = t + 1;
+  }
+  used = at;
+  return true;
+}
+
 }  // namespace minrt::send::textures

@@ -18,8 +18,8 @@ int32_t find_texture(void* ctx, const char* name, Diagnostic& error) {
 
 }  // namespace
 
-Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
-                         const send::textures::Table* textures, Diagnostic& error) {
+Cs418Result render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, bool all_features,
+                              const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   model::SceneBuilder<R> builder(arena);
   cs418::Reader<Math> reader(in, builder,
@@ -48,9 +48,14 @@ Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_fea
         " bytes)");
     return Cs418Result::kOutOfMemory;
   }
-  PngStoredWriter png(out);
-  renderer.render(rgba_row_sink_of(png), row);
+  renderer.render(rows, row);
   return Cs418Result::kOk;
+}
+
+Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
+                         const send::textures::Table* textures, Diagnostic& error) {
+  PngStoredWriter png(out);
+  return render_cs418_rows(in, rgba_row_sink_of(png), arena, all_features, textures, error);
 }
 
 }  // namespace minrt::fw

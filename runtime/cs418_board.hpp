@@ -8,6 +8,7 @@
 #include "core/base/arena.hpp"
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
+#include "core/image/row_sink.hpp"
 #include "protocol/texture_blobs.hpp"
 
 namespace minrt::fw {
@@ -19,5 +20,9 @@ enum class Cs418Result { kOk, kSceneError, kOutOfMemory };
 // `textures`: what the preamble brought, or nullptr when there was none.
 Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
                          const send::textures::Table* textures, Diagnostic& error);
+
+// The same into any RGBA row sink (the framed protocol's row sender).
+Cs418Result render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, bool all_features,
+                              const send::textures::Table* textures, Diagnostic& error);
 
 }  // namespace minrt::fw

@@ -29,7 +29,7 @@ bool is_jaworski_start(int first_byte, const char* first_word) {
   return false;
 }
 
-JaworskiResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+JaworskiResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
   using R = Math::real;
   jaworski::Scene<R> scene;
   if (!scene.allocate(arena, kCapacity)) {
@@ -43,9 +43,13 @@ JaworskiResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagno
     error.text("image row does not fit in the board's memory");
     return JaworskiResult::kOutOfMemory;
   }
-  BmpWriter bmp(out);
-  jaworski::Tracer<Math>(scene).render(rgba_row_sink_of(bmp), row);
+  jaworski::Tracer<Math>(scene).render(rows, row);
   return JaworskiResult::kOk;
+}
+
+JaworskiResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+  BmpWriter bmp(out);
+  return render_jaworski_rows(in, rgba_row_sink_of(bmp), arena, error);
 }
 
 }  // namespace minrt::fw

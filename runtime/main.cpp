@@ -35,6 +35,7 @@
 #include "protocol/raw_check.hpp"
 #include "render/minrt/render.hpp"
 #include "serial_stream.hpp"
+#include "text_scene_board.hpp"
 
 namespace {
 
@@ -57,6 +58,27 @@ int status_of(minrt::RenderStatus status) {
     case minrt::RenderStatus::kOutOfMemory: return MINRT_STATUS_OUT_OF_MEMORY;
   }
   return MINRT_STATUS_SCENE_ERROR;
+}
+
+minrt::RenderStatus status_of(minrt::fw::TextSceneResult r) {
+  switch (r) {
+    case minrt::fw::TextSceneResult::kOk: return minrt::RenderStatus::kOk;
+    case minrt::fw::TextSceneResult::kSceneError: return minrt::RenderStatus::kSceneError;
+    case minrt::fw::TextSceneResult::kOutOfMemory: return minrt::RenderStatus::kOutOfMemory;
+  }
+  return minrt::RenderStatus::kSceneError;
+}
+
+// Course protocol, a CS418 or Jaworski scene after its marker word: the
+// bytes into the arena, the format's image (PNG, BMP) back as in raw.
+minrt::RenderStatus serve_course_text(minrt::ByteSource in, minrt::send::course::Endian endian, minrt::ByteSink out,
+                                      const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
+                                      minrt::Diagnostic& error) {
+  minrt::send::text::TextScene scene;
+  bool too_large = false;
+  if (!minrt::send::text::read_course(in, endian, arena, scene, too_large, error))
+    return too_large ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
+  return status_of(minrt::fw::stream_text_scene(scene, out, arena, options.all_features, error));
 }
 
 // Course protocol (protocol/protocol_course_board.hpp). Stage 1, the boot
@@ -88,7 +110,17 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
   const bool ok = serve_scene(
       in, out,
       [&](minrt::ByteSource words) {
-        status = minrt::render_sld_values<Math>(CourseWordValues<Math::real>(words, endian), image.sink(),
+        // The first word tells a CS418 or Jaworski upload (text_scene_upload.hpp)
+        // from SLD words; for SLD it is handed back to the reader.
+        uint8_t first[4];
+        int got = 0;
+        for (int c; got < 4 && (c = words.get()) >= 0;) first[got++] = static_cast<uint8_t>(c);
+        if (got == 4 && minrt::send::text::is_marker(first, endian)) {
+          status = serve_course_text(words, endian, image.sink(), options, arena, error);
+          return status == minrt::RenderStatus::kOk;
+        }
+        minrt::send::text::PrefixSource replay(first, got, words);
+        status = minrt::render_sld_values<Math>(CourseWordValues<Math::real>(replay.source(), endian), image.sink(),
                                                 options.render, g_state, arena, error);
         return status == minrt::RenderStatus::kOk;
       },
@@ -98,12 +130,28 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
   return MINRT_STATUS_OK;
 }
 
-// Framed protocol (protocol/protocol_framed_board.hpp): the frame and
-// scene buffers and a 3*W*H-byte row store come from the arena (without
-// room for the store the rows are sent once but Q cannot be answered); the
-// scene renders into the RowFramer, a row sink.
+// Framed protocol (protocol/protocol_framed_board.hpp): the frame buffer
+// comes from the arena; the upload is collected in all the rest of it (its
+// top end) and moved to the very top once complete, so the scene text, and
+// a CS418 scene's textures read in place, take no more than their size. An
+// SLD scene renders as P6 into the RowFramer over a 3*W*H-byte row store; a
+// CS418 or Jaworski upload (text_scene_upload.hpp) sends RGBA rows over a
+// 4*W*H store taken once the scene gives the size. Without room for the
+// store the rows are sent once, but Q cannot be answered.
 constexpr size_t kFramedPayload = 4096;
-constexpr size_t kFramedScene = 64 * 1024;
+
+// An RGBA row sink that gives the framer its row store when the size is known.
+struct StoreOnBegin {
+  minrt::send::framed::RowFramer& framer;
+  minrt::Arena& arena;
+  void begin(int width, int height) {
+    const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height) * 4;
+    framer.attach_store(arena.alloc_zeroed<uint8_t>(n), n);
+    framer.begin(width, height);
+  }
+  void row(int y, const uint8_t* rgba) { framer.row(y, rgba); }
+  void end() { framer.end(); }
+};
 
 int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
                  minrt::Diagnostic& error) {
@@ -115,24 +163,44 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
   minrt::fw::SerialOutput link(uart, false);
   const minrt::ByteSink out = link.sink();
   uint8_t* payload = arena.alloc_zeroed<uint8_t>(kFramedPayload);
-  uint8_t* scene = arena.alloc_zeroed<uint8_t>(kFramedScene);
-  if (payload == nullptr || scene == nullptr) {
+  const size_t top = arena.top_mark();
+  const size_t room = top > arena.used() ? top - arena.used() : 0;
+  uint8_t* scene = payload == nullptr || room == 0 ? nullptr : arena.alloc_top<uint8_t>(room);
+  if (scene == nullptr) {
     error.text("framed: no room for the frame and scene buffers");
     write_error_frame(out, error);
     return MINRT_STATUS_OUT_OF_MEMORY;
   }
-  minrt::RenderOptions render = options.render;
-  const size_t store_size = static_cast<size_t>(render.width) * static_cast<size_t>(render.height) * 3;
-  uint8_t* store = arena.alloc_zeroed<uint8_t>(store_size);
   FrameParser parser(payload, kFramedPayload);
-  SceneCollector collector(scene, kFramedScene);
-  RowFramer framer(out, store, store == nullptr ? 0 : store_size);
+  SceneCollector collector(scene, room);
+  RowFramer framer(out, nullptr, 0);
   minrt::RenderStatus status = minrt::RenderStatus::kOk;
   const BoardResult result = serve_board(
       input.source(), out, parser, collector, framer,
-      [&](minrt::ByteSource src, RowFramer& rows) {
-        status = minrt::render_sld_rows<Math>(minrt::SldTextValues<Math::real>(src), minrt::row_sink_of(rows), render,
-                                              g_state, arena, error);
+      [&](minrt::ByteSource, RowFramer& rows) {
+        const size_t n = collector.size();
+        uint8_t* data = scene + (room - n);
+        for (size_t i = n; i-- > 0;) data[i] = scene[i];  // upwards: from the end
+        arena.release_top(top - n);
+        minrt::send::text::TextScene text;
+        bool header_ok = false;
+        if (minrt::send::text::view_framed(data, n, text, header_ok, error)) {
+          if (!header_ok) {
+            status = minrt::RenderStatus::kSceneError;
+            return false;
+          }
+          rows.set_pixel_bytes(4);
+          StoreOnBegin sink{rows, arena};
+          status = status_of(
+              minrt::fw::render_text_scene_rows(text, minrt::rgba_row_sink_of(sink), arena, options.all_features, error));
+          return status == minrt::RenderStatus::kOk;
+        }
+        const minrt::RenderOptions& render = options.render;
+        const size_t store_size = static_cast<size_t>(render.width) * static_cast<size_t>(render.height) * 3;
+        rows.attach_store(arena.alloc_zeroed<uint8_t>(store_size), store_size);
+        minrt::MemorySource sld{data, n};
+        status = minrt::render_sld_rows<Math>(minrt::SldTextValues<Math::real>(sld.source()), minrt::row_sink_of(rows),
+                                              render, g_state, arena, error);
         return status == minrt::RenderStatus::kOk;
       },
       error);

@@ -3,6 +3,7 @@
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
 #include "general_cli.hpp"
+#include "general_render.hpp"
 #include "image_load.hpp"
 #include "image_window.hpp"
 #include "jaworski_cli.hpp"
@@ -332,11 +333,9 @@ int run(const Options& options) {
   // the scene's name with .bmp, like the original program.
   const bool jaworski = format == minrt::host::SceneFormat::kJaworski;
   if (jaworski) {
-    if (o.protocol != Protocol::kRaw)
-      return fail(kExitUsage, "Jaworski scenes go over --protocol raw; course and framed carry SLD only, for now");
     if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to Jaworski scenes");
     if (!o.output_given) o.output = minrt::host::jaworski_output_name(o.scene);
-    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   int png_width = 0, png_height = 0;
@@ -393,22 +392,29 @@ int run(const Options& options) {
   }
   const bool png_reply = cs418 || minirt || eastray;
   if (cs418) {
-    if (o.protocol != Protocol::kRaw)
-      return fail(kExitUsage, "CS418 scenes go over --protocol raw; course and framed carry SLD only, for now");
     if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to CS418 scenes");
     std::string name;
-    if (!minrt::host::cs418_png_line(scene, png_width, png_height, name))
-      return fail(kExitFirmware, "scene rejected before sending: " + o.scene +
-                                     ": the first line must be 'png WIDTH HEIGHT FILE.png' (1..4096 each)");
+    if (!minrt::host::cs418_png_line(scene, png_width, png_height, name)) {
+      // The reply's size comes from that line, so the board cannot be asked.
+      // The core's reader, given the line alone, says what is wrong and
+      // where, as minrt and the board do.
+      const std::string first = scene.substr(0, scene.find('\n'));
+      minrt::host::GeneralResult unused;
+      std::string located;
+      if (minrt::host::render_cs418(first + "\n", o.scene, "", minrt::host::GeneralOptions{}, unused, located,
+                                     minrt::WarningSink{}))
+        located = o.scene + ":1:1: error: the first line must be 'png WIDTH HEIGHT FILE.png' (1..4096 each)";
+      return fail(kExitFirmware, "scene rejected before sending: " + located);
+    }
     if (!o.output_given) o.output = name;
     // The textures it names go first, decoded here (the board has no PNG
     // decoder); they must fit in the board's RAM next to the firmware.
     const std::size_t slash = o.scene.rfind('/');
     const std::string base_dir = slash == std::string::npos ? "" : o.scene.substr(0, slash + 1);
     const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
-    if (!build_texture_preamble(scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
+    if (!build_texture_preamble(scene, o.scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
-    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   // The output is checked before the transfer, not after minutes of it.
@@ -484,16 +490,35 @@ int run(const Options& options) {
               &progress};
   ex.check = o.check;
   TransferResult r;
-  if (jaworski) {
-    r = run_raw_bmp(ex, scene);
-  } else if (png_reply) {
+  CourseHostOptions course_options;
+  course_options.big_endian = o.big_endian;
+  if (jaworski || cs418) {
+    // Course and framed carry these formats as text behind a header
+    // (protocol/text_scene_upload.hpp); the image is the format's own.
+    const std::string bytes = cs418 ? texture_preamble + scene : scene;
+    const std::uint32_t tag = cs418 ? MINRT_SCENE_FORMAT_CS418 : MINRT_SCENE_FORMAT_JAWORSKI;
+    if (o.protocol == Protocol::kFramed) {
+      r = run_framed_text(ex, tag, bytes, png_width, png_height);
+    } else if (o.protocol == Protocol::kCourse) {
+      const std::string words = text_scene_course_words(tag, bytes, o.big_endian);
+      if (cs418) {
+        PngReceiver rx(png_width, png_height);
+        r = run_course_words(ex, words, program, course_options, rx);
+      } else {
+        BmpReceiver rx;
+        r = run_course_words(ex, words, program, course_options, rx);
+      }
+    } else if (cs418) {
+      r = run_raw_png(ex, bytes, png_width, png_height);
+    } else {
+      r = run_raw_bmp(ex, bytes);
+    }
+  } else if (png_reply) {  // miniRT, EASTRAY: raw only, checked above
     r = run_raw_png(ex, texture_preamble + scene, png_width, png_height);
   } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);
   } else if (o.protocol == Protocol::kCourse) {
-    CourseHostOptions co;
-    co.big_endian = o.big_endian;
-    r = run_course(ex, scene, program, co, o.spec);
+    r = run_course(ex, scene, program, course_options, o.spec);
   } else {
     r = run_framed(ex, scene, o.spec);
   }

@@ -3,12 +3,15 @@
 // rules, checks and messages) and records every value the reader consumes,
 // as an int32 or an IEEE single, in the order it consumed them. The board's
 // reader asks for the same values in the same order (course_word_values.hpp).
+// CS418 and Jaworski scenes travel as text behind a header word the SLD
+// reader would refuse (protocol/text_scene_upload.hpp).
 #include <bit>
 #include <cstdint>
 #include <memory>
 
 #include "formats/sld/sld_reader.hpp"
 #include "protocol/protocol_course.hpp"
+#include "protocol/text_scene_upload.hpp"
 #include "protocol_course_host.hpp"
 
 namespace minrt::send {
@@ -62,6 +65,15 @@ bool sld_to_course_words(const std::string& text, bool big_endian, std::string& 
   // The board's error-line form: "LINE:COL: message".
   error = std::to_string(d.pos.line) + ":" + std::to_string(d.pos.col) + ": " + std::string(d.message, d.length);
   return false;
+}
+
+std::string text_scene_course_words(std::uint32_t format, const std::string& bytes, bool big_endian) {
+  std::string words(text::kHeaderBytes, '\0');
+  text::put_header(reinterpret_cast<uint8_t*>(words.data()), format, static_cast<uint32_t>(bytes.size()),
+                   big_endian ? course::Endian::kBig : course::Endian::kLittle);
+  words += bytes;
+  words.resize((words.size() + 3) & ~std::size_t{3}, '\0');  // whole words
+  return words;
 }
 
 }  // namespace minrt::send

@@ -19,7 +19,8 @@ namespace {
 
 // Waits for `want`; other bytes before it are an error (an error line is
 // handed to `rx` so its message comes through).
-bool wait_for(Exchange& ex, uint8_t want, int timeout_ms, PpmReceiver& rx, TransferResult& r, const char* what) {
+template <class Receiver>
+bool wait_for(Exchange& ex, uint8_t want, int timeout_ms, Receiver& rx, TransferResult& r, const char* what) {
   uint8_t c = 0;
   const long n = ex.port.read_some(&c, 1, timeout_ms);
   if (n == 1 && c == want) return true;
@@ -78,17 +79,11 @@ bool send_program(Exchange& ex, const std::string& out, TransferResult& r) {
 
 }  // namespace
 
-TransferResult run_course(Exchange& ex, const std::string& scene_text, const std::string& program,
-                          const CourseHostOptions& options, const ImageSpec& spec) {
+template <class Receiver>
+TransferResult run_course_words(Exchange& ex, const std::string& words, const std::string& program,
+                                const CourseHostOptions& options, Receiver& rx) {
   TransferResult r;
-  std::string words, error;
-  if (!sld_to_course_words(scene_text, options.big_endian, words, error)) {
-    r.status = TransferResult::Status::kSceneError;
-    r.message = error;
-    return r;
-  }
   const course::Endian endian = options.big_endian ? course::Endian::kBig : course::Endian::kLittle;
-  PpmReceiver rx(spec);
   if (!wait_for(ex, course::kProgramRequest, options.handshake_timeout_ms, rx, r, "0x99 (program request)")) return r;
   std::string out(4, '\0');
   course::put_u32(reinterpret_cast<uint8_t*>(out.data()), static_cast<uint32_t>(program.size()), endian);
@@ -98,6 +93,24 @@ TransferResult run_course(Exchange& ex, const std::string& scene_text, const std
   r = exchange(ex, words, rx);
   r.sent += out.size();
   return r;
+}
+
+template TransferResult run_course_words<PngReceiver>(Exchange&, const std::string&, const std::string&,
+                                                      const CourseHostOptions&, PngReceiver&);
+template TransferResult run_course_words<BmpReceiver>(Exchange&, const std::string&, const std::string&,
+                                                      const CourseHostOptions&, BmpReceiver&);
+
+TransferResult run_course(Exchange& ex, const std::string& scene_text, const std::string& program,
+                          const CourseHostOptions& options, const ImageSpec& spec) {
+  TransferResult r;
+  std::string words, error;
+  if (!sld_to_course_words(scene_text, options.big_endian, words, error)) {
+    r.status = TransferResult::Status::kSceneError;
+    r.message = error;
+    return r;
+  }
+  PpmReceiver rx(spec);
+  return run_course_words(ex, words, program, options, rx);
 }
 
 }  // namespace minrt::send

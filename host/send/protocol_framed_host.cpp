@@ -10,8 +10,11 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "core/image/bmp_writer.hpp"
+#include "core/image/png_writer.hpp"
 #include "core/image/ppm_writer.hpp"
 #include "protocol/protocol_framed.hpp"
+#include "protocol/text_scene_upload.hpp"
 
 namespace minrt::send {
 
@@ -59,15 +62,40 @@ std::string framed_image(const ImageSpec& spec, const std::vector<std::vector<ui
   return out;
 }
 
-TransferResult run_framed(Exchange& ex, const std::string& scene_text, const ImageSpec& spec,
-                          const FramedHostOptions& options) {
+std::string framed_rgba_image(FramedImage kind, int width, int height, const std::vector<std::vector<uint8_t>>& rows) {
+  std::string out;
+  const ByteSink sink{&append_fn, &out};
+  auto write = [&](auto& writer) {
+    writer.begin(width, height);
+    for (size_t y = 0; y < rows.size(); ++y) writer.row(static_cast<int>(y), rows[y].data());
+    writer.end();
+  };
+  if (kind == FramedImage::kBmp) {
+    BmpWriter w(sink);
+    write(w);
+  } else {
+    PngStoredWriter w(sink);
+    write(w);
+  }
+  return out;
+}
+
+namespace {
+
+// The conversation for every kind of image: PPM rows (RGB, the size known
+// from --size) or a CS418/Jaworski scene's RGBA rows (the size from H when
+// `spec` gives none).
+TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, FramedImage kind, const ImageSpec& spec,
+                                const FramedHostOptions& options) {
   TransferResult r;
   const int fd = ex.port.fd();
-  const size_t row_bytes = static_cast<size_t>(spec.width) * 3;
-  std::vector<uint8_t> payload(std::max<size_t>(row_bytes, 4096));
+  const size_t pixel_bytes = kind == FramedImage::kPpm ? 3 : 4;
+  int width = spec.width, height = spec.height;  // 0: from the H frame
+  size_t row_bytes = static_cast<size_t>(width) * pixel_bytes;
+  std::vector<uint8_t> payload(0xFFFF);
   framed::FrameParser parser(payload.data(), payload.size());
-  std::vector<std::vector<uint8_t>> rows(static_cast<size_t>(spec.height));
-  std::vector<bool> have(static_cast<size_t>(spec.height), false);
+  std::vector<std::vector<uint8_t>> rows(static_cast<size_t>(height));
+  std::vector<bool> have(static_cast<size_t>(height), false);
   int have_count = 0;
   bool have_header = false, acked = false;
   int uploads = 0;
@@ -109,7 +137,7 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
       list.push_back(0xFF);
       list.push_back(0xFF);
     }
-    const int limit = all ? spec.height : max_row_seen;
+    const int limit = all ? height : std::min(max_row_seen, height);
     for (int row = 0; row < limit && list.size() < 2 * 512; ++row) {
       if (have[static_cast<size_t>(row)]) continue;
       list.push_back(static_cast<uint8_t>(row));
@@ -137,7 +165,7 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
       const ssize_t n = ::read(fd, buf, sizeof buf);
       if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR))
         return fail(TransferResult::Status::kLinkError,
-                    "line closed with " + std::to_string(have_count) + " of " + std::to_string(spec.height) + " rows");
+                    "line closed with " + std::to_string(have_count) + " of " + std::to_string(height) + " rows");
       for (ssize_t i = 0; i < n; ++i) {
         ++received;
         if (!any_frame && plain.size() < 4096) {
@@ -167,18 +195,31 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
             acked = true;
             if (parser.length() != 4) break;
             const int w = framed::get_u16(parser.payload()), h = framed::get_u16(parser.payload() + 2);
-            if (w != spec.width || h != spec.height)
+            if (width == 0) {
+              // The scene gave the size; rows carry at most 0xFFFF bytes.
+              if (w < 1 || h < 1 || static_cast<size_t>(w) * pixel_bytes > 0xFFFF)
+                return fail(TransferResult::Status::kLinkError,
+                            "the board announced a " + std::to_string(w) + "x" + std::to_string(h) +
+                                " image, which framed rows cannot carry (at most " +
+                                std::to_string(0xFFFF / pixel_bytes) + " pixels wide)");
+              width = w;
+              height = h;
+              row_bytes = static_cast<size_t>(width) * pixel_bytes;
+              rows.assign(static_cast<size_t>(height), {});
+              have.assign(static_cast<size_t>(height), false);
+            }
+            if (w != width || h != height)
               return fail(TransferResult::Status::kLinkError, "image is " + std::to_string(w) + "x" + std::to_string(h) +
-                                                                  ", expected " + std::to_string(spec.width) + "x" +
-                                                                  std::to_string(spec.height));
+                                                                  ", expected " + std::to_string(width) + "x" +
+                                                                  std::to_string(height));
             have_header = true;
             break;
           }
           case framed::kRow: {
             acked = true;
             const uint16_t row = parser.seq();
-            if (row >= spec.height || parser.length() != row_bytes) break;
             if (row > max_row_seen) max_row_seen = row;
+            if (row >= height || parser.length() != row_bytes) break;
             if (!have[row]) {
               rows[row].assign(parser.payload(), parser.payload() + parser.length());
               have[row] = true;
@@ -190,7 +231,7 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
           }
           case framed::kEnd:
             acked = true;
-            if (have_header && have_count == spec.height) {
+            if (have_header && have_count == height) {
               t_end = Clock::now();
               queue(frame_bytes(framed::kFinished, 0, nullptr, 0));
               // Let F go out before returning.
@@ -198,7 +239,8 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
               if (left > 0 && ex.port.write_all(out.data() + sent, left, 1000)) sent = out.size();
               ex.port.drain();
               r.status = TransferResult::Status::kOk;
-              r.image = framed_image(spec, rows);
+              r.image = kind == FramedImage::kPpm ? framed_image(spec, rows)
+                                                  : framed_rgba_image(kind, width, height, rows);
               r.seconds = std::chrono::duration<double>(t_end - t0).count();
               r.sent = sent;
               r.received = received;
@@ -229,11 +271,28 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
     if (acked && silence > ex.timeouts.idle_ms)
       return fail(TransferResult::Status::kLinkError, "line idle for " + std::to_string(ex.timeouts.idle_ms / 1000) +
                                                           " s with " + std::to_string(have_count) + " of " +
-                                                          std::to_string(spec.height) + " rows (idle timeout)");
+                                                          std::to_string(height) + " rows (idle timeout)");
     if (!acked && ms_since(t0) > ex.timeouts.first_byte_ms)
       return fail(TransferResult::Status::kLinkError, "no reply within " + std::to_string(ex.timeouts.first_byte_ms / 1000) +
                                                           " s (first-byte timeout)");
   }
+}
+
+}  // namespace
+
+TransferResult run_framed(Exchange& ex, const std::string& scene_text, const ImageSpec& spec,
+                          const FramedHostOptions& options) {
+  return run_framed_image(ex, scene_text, FramedImage::kPpm, spec, options);
+}
+
+TransferResult run_framed_text(Exchange& ex, std::uint32_t format, const std::string& bytes, int width, int height,
+                               const FramedHostOptions& options) {
+  std::string upload(text::kHeaderBytes, '\0');
+  text::put_header(reinterpret_cast<uint8_t*>(upload.data()), format, static_cast<uint32_t>(bytes.size()),
+                   course::Endian::kLittle);
+  upload += bytes;
+  const FramedImage kind = format == MINRT_SCENE_FORMAT_JAWORSKI ? FramedImage::kBmp : FramedImage::kPng;
+  return run_framed_image(ex, upload, kind, ImageSpec{width, height, PpmKind::kP6}, options);
 }
 
 }  // namespace minrt::send

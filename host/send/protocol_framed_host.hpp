@@ -24,4 +24,18 @@ std::string framed_image(const ImageSpec& spec, const std::vector<std::vector<ui
 TransferResult run_framed(Exchange& ex, const std::string& scene_text, const ImageSpec& spec,
                           const FramedHostOptions& options = FramedHostOptions{});
 
+enum class FramedImage { kPpm, kPng, kBmp };
+// A CS418 or Jaworski image from its RGBA rows, in the order they came:
+// the core's stored-deflate PNG or BMP writer, so the bytes are the ones the
+// board streams over raw and course.
+std::string framed_rgba_image(FramedImage kind, int width, int height, const std::vector<std::vector<uint8_t>>& rows);
+
+// A CS418 (`format` MINRT_SCENE_FORMAT_CS418) or Jaworski scene: `bytes` as
+// raw would send them (texture preamble, text) behind the text-scene header
+// (protocol/text_scene_upload.hpp); the board answers with RGBA rows, and
+// the result is the PNG or BMP. `width`/`height`: the png line's size, or 0
+// to take the one the board announces.
+TransferResult run_framed_text(Exchange& ex, std::uint32_t format, const std::string& bytes, int width, int height,
+                               const FramedHostOptions& options = FramedHostOptions{});
+
 }  // namespace minrt::send

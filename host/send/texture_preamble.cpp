@@ -55,8 +55,11 @@ bool load_ppm(const std::string& base_dir, const std::string& name, Texels& out,
   return false;
 }
 
-bool assemble(const std::vector<std::string>& names, const std::string& base_dir, Loader load,
-              std::uint64_t board_bytes, std::string& out, std::string& error) {
+// `where`: for each name, the "SCENE:LINE:COL: error: " its errors start
+// with (empty: not located).
+bool assemble(const std::vector<std::string>& names, const std::vector<std::string>& where,
+              const std::string& base_dir, Loader load, std::uint64_t board_bytes, std::string& out,
+              std::string& error) {
   out.clear();
   if (names.empty()) return true;
   if (names.size() > MINRT_MAX_TEXTURES) {
@@ -65,15 +68,20 @@ bool assemble(const std::vector<std::string>& names, const std::string& base_dir
   }
   std::string body;
   std::uint64_t texel_bytes = 0;
-  for (const std::string& name : names) {
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string& name = names[k];
+    const std::string at = k < where.size() ? where[k] : std::string();
     if (name.size() > 255) {
-      error = "texture name longer than 255 bytes";
+      error = at + "texture name longer than 255 bytes";
       return false;
     }
     Texels img;
-    if (!load(base_dir, name, img, error)) return false;
+    if (!load(base_dir, name, img, error)) {
+      error = at + error;
+      return false;
+    }
     if (img.width > MINRT_MAX_TEXTURE_SIDE || img.height > MINRT_MAX_TEXTURE_SIDE) {
-      error = "texture " + name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
+      error = at + "texture " + name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
       return false;
     }
     texel_bytes += static_cast<std::uint64_t>(img.width) * img.height * 3;
@@ -98,19 +106,23 @@ bool assemble(const std::vector<std::string>& names, const std::string& base_dir
 
 }  // namespace
 
-bool build_texture_preamble(const std::string& scene, const std::string& base_dir, std::uint64_t board_bytes,
-                            std::string& out, std::string& error) {
+bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,
+                            std::uint64_t board_bytes, std::string& out, std::string& error) {
   std::vector<std::string> names;
+  std::vector<std::string> where;  // each name's first use, as the reader counts lines and columns
   std::set<std::string> seen;
   std::istringstream lines(scene);
   std::string line;
-  while (std::getline(lines, line)) {
+  for (int number = 1; std::getline(lines, line); ++number) {
     std::istringstream words(line);
     std::string kw, name;
     if (!(words >> kw) || kw != "texture" || !(words >> name) || name == "none") continue;
-    if (seen.insert(name).second) names.push_back(name);
+    if (!seen.insert(name).second) continue;
+    names.push_back(name);
+    const std::size_t col = line.find(name, line.find("texture") + 7) + 1;
+    where.push_back(scene_name + ":" + std::to_string(number) + ":" + std::to_string(col) + ": error: ");
   }
-  return assemble(names, base_dir, &load_png, board_bytes, out, error);
+  return assemble(names, where, base_dir, &load_png, board_bytes, out, error);
 }
 
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& base_dir,
@@ -127,7 +139,7 @@ bool build_minirt_texture_preamble(const std::string& scene, const std::string& 
     for (std::size_t i = 4; i < w.size() && i < 6; ++i)  // texture, then the optional bump map
       if (seen.insert(w[i]).second) names.push_back(w[i]);
   }
-  return assemble(names, base_dir, &load_ppm, board_bytes, out, error);
+  return assemble(names, {}, base_dir, &load_ppm, board_bytes, out, error);
 }
 
 }  // namespace minrt::send

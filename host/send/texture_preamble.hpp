@@ -13,8 +13,10 @@ namespace minrt::send {
 // names none). Texture files resolve against `base_dir`. False with the
 // reason: a missing or bad PNG, too many textures, a name too long, or more
 // texel bytes than `board_bytes` (then the message says how much is needed).
-bool build_texture_preamble(const std::string& scene, const std::string& base_dir, std::uint64_t board_bytes,
-                            std::string& out, std::string& error);
+// A texture that cannot be read is reported where the scene names it,
+// "SCENE_NAME:LINE:COL: error: texture PATH: why", as minrt reports it.
+bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,
+                            std::uint64_t board_bytes, std::string& out, std::string& error);
 
 // The same for a miniRT scene: the PPM files its `spt` lines name, found
 // where minrt finds them (host/minirt_render.hpp).

@@ -197,10 +197,12 @@ TEST_CASE("host-send: a broken CS418 scene ends with the board's located error a
   CHECK(r.status == 3);
   CHECK(r.err.find("the board reported an error: 2:15: not a number: 'O.5'") != std::string::npos);
   CHECK(!hs_test::file_exists(out));
-  const RunResult framed = run({HS_HOST_SEND, "--sim", "--protocol", "framed",
-                                hs_test::shared_dir() + "/formats/cs418/ray-sphere.txt", "-o", out});
-  CHECK(framed.status == 2);
-  CHECK(framed.err.find("CS418 scenes go over --protocol raw") != std::string::npos);
+  // Over framed the same error comes back in an X frame.
+  const RunResult framed = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--protocol",
+                                "framed", std::string(HS_SOURCE_DIR) + "/test/general/bad/bad-number.txt", "-o", out});
+  CHECK(framed.status == 3);
+  CHECK(framed.err.find("the board reported an error: 2:15: not a number: 'O.5'") != std::string::npos);
+  CHECK(!hs_test::file_exists(out));
 }
 
 TEST_CASE("host-send: textures too large for the board are refused before sending, and fit a larger simulated RAM",

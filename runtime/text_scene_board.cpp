@@ -1,0 +1,58 @@
+#include "text_scene_board.hpp"
+
+#include <minrt/serial_protocol.h>
+
+#include "core/image/bmp_writer.hpp"
+#include "core/image/png_writer.hpp"
+#include "cs418_board.hpp"
+#include "jaworski_board.hpp"
+#include "protocol/texture_blobs.hpp"
+
+namespace minrt::fw {
+
+TextSceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaRowSink rows, Arena& arena,
+                                       bool all_features, Diagnostic& error) {
+  if (scene.format == MINRT_SCENE_FORMAT_JAWORSKI) {
+    MemorySource text{scene.bytes, scene.size};
+    switch (render_jaworski_rows(text.source(), rows, arena, error)) {
+      case JaworskiResult::kOk: return TextSceneResult::kOk;
+      case JaworskiResult::kSceneError: return TextSceneResult::kSceneError;
+      case JaworskiResult::kOutOfMemory: return TextSceneResult::kOutOfMemory;
+    }
+    return TextSceneResult::kSceneError;
+  }
+  // CS418: the textures, when the scene names any, come first (the preamble
+  // the raw protocol sends too), read where they lie.
+  send::textures::Table* textures = nullptr;
+  size_t at = 0;
+  if (scene.size > 0 && scene.bytes[0] == MINRT_TEXTURES_MARKER) {
+    textures = arena.alloc_zeroed<send::textures::Table>(1);
+    if (textures == nullptr) {
+      error.text("no room for the texture table");
+      return TextSceneResult::kOutOfMemory;
+    }
+    size_t used = 0;
+    if (!send::textures::view(scene.bytes + 1, scene.size - 1, *textures, used, error))
+      return TextSceneResult::kSceneError;
+    at = 1 + used;
+  }
+  MemorySource text{scene.bytes + at, scene.size - at};
+  switch (render_cs418_rows(text.source(), rows, arena, all_features, textures, error)) {
+    case Cs418Result::kOk: return TextSceneResult::kOk;
+    case Cs418Result::kSceneError: return TextSceneResult::kSceneError;
+    case Cs418Result::kOutOfMemory: return TextSceneResult::kOutOfMemory;
+  }
+  return TextSceneResult::kSceneError;
+}
+
+TextSceneResult stream_text_scene(const send::text::TextScene& scene, ByteSink out, Arena& arena, bool all_features,
+                                  Diagnostic& error) {
+  if (scene.format == MINRT_SCENE_FORMAT_JAWORSKI) {
+    BmpWriter bmp(out);
+    return render_text_scene_rows(scene, rgba_row_sink_of(bmp), arena, all_features, error);
+  }
+  PngStoredWriter png(out);
+  return render_text_scene_rows(scene, rgba_row_sink_of(png), arena, all_features, error);
+}
+
+}  // namespace minrt::fw

@@ -1,0 +1,27 @@
+// The board's side of a CS418 or Jaworski scene that arrived whole in
+// memory over the course or framed protocol (protocol/text_scene_upload.hpp):
+// the texture preamble is read in place, then the scene text goes to the
+// format's board path (cs418_board.hpp, jaworski_board.hpp), in float with
+// the portable shims like the raw protocol.
+#pragma once
+
+#include "core/base/arena.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "core/image/row_sink.hpp"
+#include "protocol/text_scene_upload.hpp"
+
+namespace minrt::fw {
+
+enum class TextSceneResult { kOk, kSceneError, kOutOfMemory };
+
+// Into an RGBA row sink (framed: the RowFramer, 4 bytes a pixel).
+TextSceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaRowSink rows, Arena& arena,
+                                       bool all_features, Diagnostic& error);
+
+// The format's own image streamed on `out`, as in the raw protocol (course):
+// a stored-deflate PNG for CS418, a 32-bit BMP for Jaworski.
+TextSceneResult stream_text_scene(const send::text::TextScene& scene, ByteSink out, Arena& arena, bool all_features,
+                                  Diagnostic& error);
+
+}  // namespace minrt::fw
