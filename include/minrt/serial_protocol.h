@@ -76,9 +76,10 @@
 #define MINRT_FRAMED_IDLE_FACTOR 1024
 
 /* The scene formats, by the tag a protocol uses to say which one it carries.
- * Raw and course carry SLD (course by definition; raw by default); the
- * other formats will travel with their tag in front of the scene. Values
- * are fixed: boards and hosts of different versions must agree. */
+ * Raw tells them apart by content; course and framed carry SLD as they
+ * always did and CS418 and Jaworski scenes behind a header with their tag
+ * (protocol/text_scene_upload.hpp). Values are fixed: boards and hosts of
+ * different versions must agree. */
 #define MINRT_SCENE_FORMAT_SLD 0
 #define MINRT_SCENE_FORMAT_CS418 1
 #define MINRT_SCENE_FORMAT_JAWORSKI 2
