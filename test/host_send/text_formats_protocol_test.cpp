@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -20,7 +21,9 @@
 #include "png_io.hpp"
 #include "protocol/text_scene_upload.hpp"
 #include "protocol/texture_blobs.hpp"
+#include "protocol/protocol_framed.hpp"
 #include "protocol_course_host.hpp"
+#include "protocol_framed_host.hpp"
 #include "sim_launcher.hpp"
 #include "test_support.hpp"
 
@@ -302,4 +305,65 @@ TEST_CASE("framed mode delivers CS418 and Jaworski images exactly over a damaged
       board.stop(3000);
     }
   }
+}
+
+TEST_CASE("RowFramer with 4 bytes a pixel: RGBA rows, a store attached late, re-sent rows; the host's PNG from them",
+          "[framed]") {
+  std::string wire;
+  auto append = [](void* ctx, const uint8_t* d, size_t n) {
+    static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(d), n);
+  };
+  framed::RowFramer framer(minrt::ByteSink{append, &wire}, nullptr, 0);
+  framer.set_pixel_bytes(4);
+  std::vector<uint8_t> store(2 * 3 * 4);
+  framer.attach_store(store.data(), store.size());
+  uint8_t pixels[24];
+  for (int i = 0; i < 24; ++i) pixels[i] = static_cast<uint8_t>(10 + i);
+  framer.begin(2, 3);
+  for (int y = 0; y < 3; ++y) framer.row(y, pixels + 8 * y);
+  framer.send_end();
+  CHECK(framer.stored());
+  uint8_t buf[64];
+  framed::FrameParser parser(buf, sizeof buf);
+  std::vector<std::vector<uint8_t>> rows;
+  std::string types;
+  for (char c : wire)
+    if (parser.feed(static_cast<uint8_t>(c)) == framed::FrameParser::kFrame) {
+      types.push_back(static_cast<char>(parser.type()));
+      if (parser.type() == framed::kRow) {
+        CHECK(parser.length() == 8);
+        CHECK(parser.seq() == rows.size());
+        rows.emplace_back(parser.payload(), parser.payload() + parser.length());
+      }
+    }
+  CHECK(types == "HDDDZ");
+  // A request for row 2: the stored RGBA bytes come again.
+  std::string req;
+  const uint8_t list[] = {2, 0};
+  framed::write_frame(minrt::ByteSink{append, &req}, framed::kRequest, 0, list, 2);
+  for (char c : req)
+    if (parser.feed(static_cast<uint8_t>(c)) == framed::FrameParser::kFrame) {
+      wire.clear();
+      framer.answer_request(parser);
+    }
+  for (char c : wire)
+    if (parser.feed(static_cast<uint8_t>(c)) == framed::FrameParser::kFrame && parser.type() == framed::kRow)
+      CHECK(std::vector<uint8_t>(parser.payload(), parser.payload() + 8) == rows[2]);
+  // The host's image from the rows: the PNG decodes to them.
+  const std::string png = framed_rgba_image(FramedImage::kPng, 2, 3, rows);
+  hs_test::TempDir dir;
+  {
+    std::FILE* f = std::fopen(dir.file("r.png").c_str(), "wb");
+    std::fwrite(png.data(), 1, png.size(), f);
+    std::fclose(f);
+  }
+  minrt::host::RgbaImage img;
+  std::string why;
+  REQUIRE(minrt::host::read_png(dir.file("r.png"), img, why));
+  CHECK(img.rgba == std::vector<uint8_t>(pixels, pixels + 24));
+  // BMP: 54-byte header, rows as they came (the tracer's bottom row first), BGRA.
+  const std::string bmp = framed_rgba_image(FramedImage::kBmp, 2, 3, rows);
+  REQUIRE(bmp.size() == 54 + 24);
+  CHECK(static_cast<uint8_t>(bmp[54]) == pixels[2]);
+  CHECK(static_cast<uint8_t>(bmp[56]) == pixels[0]);
 }
