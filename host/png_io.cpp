@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <csetjmp>
+#include <cstdlib>
 #include <cstring>
 
 namespace minrt::host {
@@ -30,6 +31,10 @@ bool read_png(const std::string& path, RgbaImage& out, std::string& error) {
     error = std::strerror(errno);
     return false;
   }
+  return read_png(f, out, error);
+}
+
+bool read_png(std::FILE* f, RgbaImage& out, std::string& error) {
   unsigned char sig[8] = {};
   if (std::fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
     error = std::ferror(f) != 0 ? std::strerror(errno) : "not a PNG file";
@@ -103,6 +108,28 @@ bool write_png(std::FILE* f, const RgbaImage& image, std::string& error) {
     return false;
   }
   return true;
+}
+
+bool compress_png(const std::string& png, std::string& out, std::string& error) {
+  std::FILE* in = fmemopen(const_cast<char*>(png.data()), png.size(), "rb");
+  if (in == nullptr) {
+    error = std::strerror(errno);
+    return false;
+  }
+  RgbaImage image;
+  if (!read_png(in, image, error)) return false;
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* mem = open_memstream(&buffer, &size);
+  if (mem == nullptr) {
+    error = std::strerror(errno);
+    return false;
+  }
+  const bool ok = write_png(mem, image, error);
+  if (std::fclose(mem) != 0 && ok) error = std::strerror(errno);
+  if (ok && buffer != nullptr) out.assign(buffer, size);
+  std::free(buffer);
+  return ok && buffer != nullptr;
 }
 
 }  // namespace minrt::host

@@ -20,8 +20,14 @@ struct RgbaImage {
 // False with the reason ("not a PNG file", libpng's message, the system's
 // error) when it cannot.
 bool read_png(const std::string& path, RgbaImage& out, std::string& error);
+// The same from an open stream, which it closes.
+bool read_png(std::FILE* f, RgbaImage& out, std::string& error);
 
 // Writes 8-bit RGBA, compressed. False with the reason.
 bool write_png(std::FILE* f, const RgbaImage& image, std::string& error);
+
+// The same pixels compressed: the board streams stored-deflate PNG (no
+// compressor fits its budget), host-send writes what libpng makes of it.
+bool compress_png(const std::string& png, std::string& out, std::string& error);
 
 }  // namespace minrt::host

@@ -9,6 +9,7 @@
 #include "jaworski_cli.hpp"
 #include "minirt_cli.hpp"
 #include "minirt_render.hpp"
+#include "png_io.hpp"
 #include "posix/output_file.hpp"
 #include "eastray_cli.hpp"
 #include "scene_format.hpp"
@@ -125,6 +126,8 @@ void print_help() {
       "                           written only when complete and valid; a FIFO, device\n"
       "                           or symbolic link is refused\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
+      "  --as-received            write a PNG as the board sent it (stored deflate); by\n"
+      "                           default it is compressed, with the same pixels\n"
       "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
       "                           maximum channel error, PSNR\n"
       "  --expect-sha256 HEX      refuse the image unless its bytes have this SHA-256\n"
@@ -251,6 +254,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
       o.output_given = true;
     } else if (a == "--write-through") {
       o.write_through = true;
+    } else if (a == "--as-received") {
+      o.as_received = true;
     } else if (a == "--verify") {
       if (!value(o.verify_ref)) return ParseResult::kError;
     } else if (a == "--expect-sha256") {
@@ -550,7 +555,13 @@ int run(const Options& options) {
     return fail(kExitLink, "image sha256 " + digest + " differs from the expected " + o.expect_sha256 +
                                "; not written");
   std::string err;
-  if (!write_file_atomically(o.output, r.image, o.write_through, err)) return fail(kExitLink, err);
+  const std::string* written = &r.image;
+  std::string compressed;
+  if (!o.as_received && r.image.compare(0, 4, "\x89PNG") == 0) {
+    if (!minrt::host::compress_png(r.image, compressed, err)) return fail(kExitLink, "cannot recompress the board's PNG: " + err);
+    written = &compressed;
+  }
+  if (!write_file_atomically(o.output, *written, o.write_through, err)) return fail(kExitLink, err);
 
   if (!o.quiet) {
     const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;
@@ -564,7 +575,7 @@ int run(const Options& options) {
     if (r.retransmitted_rows > 0 && n > 0)
       std::snprintf(line + n, sizeof line - n, ", %d rows re-sent", r.retransmitted_rows);
     std::fprintf(stderr, "%s\n", line);
-    std::fprintf(stderr, "host-send: sha256 %s%s\n", digest.c_str(), r.crc_checked ? " (CRC-32 trailer checked)" : "");
+    std::fprintf(stderr, "host-send: sha256 %s%s%s\n", digest.c_str(), written != &r.image ? " as the board sent it" : "", r.crc_checked ? " (CRC-32 trailer checked)" : "");
   }
   if (o.show) {
     // The image as written (PPM, PNG or BMP), in a window.

@@ -188,6 +188,31 @@ TEST_CASE("host-send sends CS418 scenes to firmware-sim and writes the PNG it se
   }
 }
 
+TEST_CASE("host-send writes the board's stored-deflate PNG compressed, --as-received as sent", "[e2e][firmware][cs418]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string scene = hs_test::shared_dir() + "/formats/cs418/ray-shadow-plane.txt";
+  const std::string packed = dir.file("packed.png"), stored = dir.file("stored.png");
+  RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, scene, "-o", packed});
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::Contains("as the board sent it"));
+  r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--as-received", scene, "-o",
+           stored});
+  REQUIRE(r.status == 0);
+  const std::string a = hs_test::read_file(packed), b = hs_test::read_file(stored);
+  // The board's stream is stored deflate: 4 bytes a pixel and more.
+  CHECK(b.size() > 4u * 120 * 120);
+  CHECK(a.size() * 4 < b.size());
+  minrt::host::RgbaImage pa, pb;
+  std::string why;
+  REQUIRE(minrt::host::read_png(packed, pa, why));
+  REQUIRE(minrt::host::read_png(stored, pb, why));
+  CHECK(pa.width == pb.width);
+  CHECK(pa.height == pb.height);
+  CHECK(pa.rgba == pb.rgba);
+}
+
 TEST_CASE("host-send: a broken CS418 scene ends with the board's located error and no image", "[e2e][firmware][cs418]") {
   HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
