@@ -31,7 +31,7 @@ constexpr int kExitIoError = 1;
 
 void print_help(std::FILE* f) {
   std::fputs(
-      "usage: minrt [OPTIONS] [SCENE.sld | SCENE.txt]\n"
+      "Usage: minrt [OPTIONS] [SCENE.sld | SCENE.txt]\n"
       "Renders an SLD scene like the original min-rt: the scene comes from SCENE.sld\n"
       "(or standard input), the PPM image goes to standard output.\n"
       "Renders a CS418 scene (a .txt file whose first line is 'png W H NAME.png')\n"
@@ -95,7 +95,7 @@ bool g_minirt_command = false;
     minrt::host::print_minirt_error("minrt: " + msg + " (see minrt --help)");
     std::exit(minrt::host::kMinirtExitError);
   }
-  std::fprintf(stderr, "minrt: %s (see minrt --help)\n", msg.c_str());
+  std::fprintf(stderr, "minrt: error: %s (see minrt --help)\n", msg.c_str());
   std::exit(kExitUsage);
 }
 
@@ -350,7 +350,7 @@ int main(int argc, char** argv) {
   }
   if (read_failed || write_failed) {
     discard();
-    std::fprintf(stderr, "minrt: %s\n", read_failed ? "read error on the scene" : "write error on the image");
+    std::fprintf(stderr, "minrt: error: %s\n", read_failed ? "read error on the scene" : "write error on the image");
     return kExitIoError;
   }
   if (output_path != nullptr) {

@@ -13,7 +13,7 @@ namespace {
 
 void print_help(std::FILE* f) {
   std::fputs(
-      "usage: image-compare [OPTIONS] A B\n"
+      "Usage: image-compare [OPTIONS] A B\n"
       "Compares two images of the same size (PNG, PPM or BMP, found by content) on\n"
       "premultiplied RGBA and prints: pixels off by more than 1 in any channel, alpha\n"
       "mismatches, the largest channel error, the PSNR of block-averaged colour, the\n"
@@ -76,6 +76,14 @@ int main(int argc, char** argv) {
     }
   }
   if (n != 2) usage("two images are needed");
+  // The sheet's path is checked before the images are read and compared.
+  if (sheet != nullptr) {
+    std::string why;
+    if (!minrt::host::check_output_target(sheet, false, why)) {
+      std::fprintf(stderr, "image-compare: error: %s\n", why.c_str());
+      return 2;
+    }
+  }
   minrt::host::RgbaImage img[2];
   for (int k = 0; k < 2; ++k) {
     std::string why;

@@ -87,7 +87,7 @@ std::string default_output(const std::string& scene) {
 const char* kind_arg(PpmKind k) { return k == PpmKind::kP3 ? "p3" : "p6"; }
 
 int fail(int status, const std::string& msg) {
-  std::fprintf(stderr, "host-send: %s\n", msg.c_str());
+  std::fprintf(stderr, "host-send: error: %s\n", msg.c_str());
   return status;
 }
 
@@ -95,22 +95,23 @@ int fail(int status, const std::string& msg) {
 
 void print_help() {
   std::fputs(
-      "usage: host-send (--port DEV | --sim [ELF]) [OPTIONS] SCENE.sld [-o OUT.ppm]\n"
-      "       host-send --list\n"
+      "Usage: host-send (-p DEV | --sim [ELF]) [OPTIONS] SCENE.sld [-o OUT.ppm]\n"
+      "   or: host-send --list\n"
       "Sends an SLD scene to the min-rt firmware over a serial line and receives the\n"
       "rendered PPM image: from a board (--port) or from firmware-sim started on a\n"
       "pseudo-terminal (--sim); one of the two is required. A CS418 scene (png ...)\n"
       "comes back as its PNG, a Jaworski scene as a BMP, over every protocol.\n"
       "\n"
       "link:\n"
-      "  --port DEV               serial device, or usb:VID:PID[:SERIAL] (see --list)\n"
-      "  --sim [ELF]              run the firmware in firmware-sim (default; ELF defaults\n"
-      "                           to the build's firmware or $MINRT_FIRMWARE_ELF)\n"
+      "  -p, --port DEV           serial device, or usb:VID:PID[:SERIAL] (see --list)\n"
+      "  --sim [ELF]              run the firmware in firmware-sim (ELF defaults to\n"
+      "                           $MINRT_FIRMWARE_ELF, else the installed firmware\n"
+      "                           (PREFIX/share/minrt/firmware), else the build's)\n"
       "  --sim-ram-size NM        RAM of the simulated board (default 4M, the board's);\n"
       "                           for CS418 scenes whose textures do not fit (implies --sim)\n"
-      "  --sim-binary PATH        simulator to run (default: the build's firmware-sim or\n"
-      "                           $MINRT_FIRMWARE_SIM)\n"
-      "  --baud N                 line rate, any value (default 115200; with --sim it\n"
+      "  --sim-binary PATH        simulator to run (default: $MINRT_FIRMWARE_SIM, else the\n"
+      "                           firmware-sim next to host-send, else the build's)\n"
+      "  -b, --baud N             line rate, any value (default 115200; with --sim it\n"
       "                           paces the simulated UART)\n"
       "  --flow none|rtscts|xonxoff  flow control (default none; xonxoff is unsafe for\n"
       "                           binary P6 and the framed protocol)\n"
@@ -140,7 +141,8 @@ void print_help() {
       "  -s, --show               show the received image in a window (SDL2) once it is\n"
       "                           written; without a display a one-line warning\n"
       "  -q, --quiet              no summary line\n"
-      "  -h, --help, --version\n"
+      "  -h, --help               this text\n"
+      "  --version                version\n"
       "\n"
       "exit status: 0 ok, 1 link or transfer error, 2 usage error, 3 the firmware\n"
       "rejected the scene (its message is printed).\n",
@@ -175,6 +177,9 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
     std::string v;
     if (a == "-h" || a == "--help") return ParseResult::kHelp;
     if (a == "--version") return ParseResult::kVersion;
+    // The short forms serial tools use (picocom, esptool): -p PORT, -b BAUD.
+    if (a == "-p") a = "--port";
+    else if (a == "-b") a = "--baud";
     if (a == "--port") {
       if (!value(o.port)) return ParseResult::kError;
     } else if (a == "--sim") {

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
       std::printf("host-send %s\n", MINRT_VERSION);
       return 0;
     case minrt::send::ParseResult::kError:
-      std::fprintf(stderr, "host-send: %s (see host-send --help)\n", error.c_str());
+      std::fprintf(stderr, "host-send: error: %s (see host-send --help)\n", error.c_str());
       return minrt::send::kExitUsage;
     case minrt::send::ParseResult::kRun:
       break;

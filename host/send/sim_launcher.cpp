@@ -27,16 +27,37 @@ long long now_ms() {
   using namespace std::chrono;
   return duration_cast<milliseconds>(steady_clock::now().time_since_epoch()).count();
 }
+
+// The folder host-send runs from: in an installed tree (cmake --install)
+// firmware-sim sits beside it and the firmware in ../share/minrt/firmware.
+std::string own_folder() {
+  char buf[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return "";
+  const std::string self(buf, static_cast<std::size_t>(n));
+  const std::size_t slash = self.rfind('/');
+  return slash == std::string::npos ? "" : self.substr(0, slash);
+}
+
+// The environment's choice, else the installed file when it exists, else the
+// build tree's.
+std::string pick(const char* env_name, const std::string& installed, const char* built) {
+  const char* env = std::getenv(env_name);
+  if (env != nullptr && *env != 0) return env;
+  if (!installed.empty() && ::access(installed.c_str(), F_OK) == 0) return installed;
+  return built;
+}
 }  // namespace
 
 std::string default_simulator() {
-  const char* env = std::getenv("MINRT_FIRMWARE_SIM");
-  return env != nullptr && *env != 0 ? env : MINRT_FIRMWARE_SIM_DEFAULT;
+  const std::string dir = own_folder();
+  return pick("MINRT_FIRMWARE_SIM", dir.empty() ? "" : dir + "/firmware-sim", MINRT_FIRMWARE_SIM_DEFAULT);
 }
 
 std::string default_firmware() {
-  const char* env = std::getenv("MINRT_FIRMWARE_ELF");
-  return env != nullptr && *env != 0 ? env : MINRT_FIRMWARE_ELF_DEFAULT;
+  const std::string dir = own_folder();
+  return pick("MINRT_FIRMWARE_ELF", dir.empty() ? "" : dir + "/../share/minrt/firmware/minrt-rv32imf.elf",
+              MINRT_FIRMWARE_ELF_DEFAULT);
 }
 
 bool parse_pty_line(const std::string& line, std::string& path) {
@@ -113,7 +134,7 @@ bool SimLauncher::spawn(std::vector<std::string> args, int startup_timeout_ms, s
     const int devnull = ::open("/dev/null", O_RDONLY);
     if (devnull >= 0) ::dup2(devnull, 0);
     ::execv(argv[0], argv.data());
-    const char msg[] = "host-send: cannot run the simulator\n";
+    const char msg[] = "host-send: error: cannot run the simulator\n";
     (void)!::write(2, msg, sizeof msg - 1);
     ::_exit(127);
   }

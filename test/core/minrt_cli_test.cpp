@@ -57,7 +57,7 @@ int count_lines(const std::string& s) {
 TEST_CASE("minrt: --help and --version", "[cli]") {
   const auto help = run("--help");
   CHECK(help.status == 0);
-  CHECK(help.out.find("usage: minrt") == 0);
+  CHECK(help.out.find("Usage: minrt") == 0);
   const auto version = run("--version");
   CHECK(version.status == 0);
   CHECK(version.out.find("minrt ") == 0);

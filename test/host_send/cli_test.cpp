@@ -26,7 +26,7 @@ hs_test::RunResult usage_error(const std::vector<std::string>& args) {
 TEST_CASE("host-send --help and --version", "[cli]") {
   auto r = run({HS_HOST_SEND, "--help"});
   CHECK(r.status == 0);
-  CHECK_THAT(r.out, Catch::Contains("usage: host-send") && Catch::Contains("--protocol raw|course|framed"));
+  CHECK_THAT(r.out, Catch::Contains("Usage: host-send") && Catch::Contains("--protocol raw|course|framed"));
   r = run({HS_HOST_SEND, "--version"});
   CHECK(r.status == 0);
   CHECK_THAT(r.out, Catch::StartsWith("host-send "));
@@ -48,7 +48,7 @@ TEST_CASE("usage errors are one line with status 2", "[cli]") {
            {scene, scene},
            {"/nonexistent.sld"},
        }) {
-    CHECK_THAT(usage_error(args).err, Catch::StartsWith("host-send: "));
+    CHECK_THAT(usage_error(args).err, Catch::StartsWith("host-send: error: "));
   }
 }
 
@@ -56,7 +56,7 @@ TEST_CASE("without --port or --sim host-send stops with a hint instead of simula
   const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
   const auto r = usage_error({scene});
   CHECK(r.err ==
-        "host-send: no board given: --port DEVICE for a board (host-send --list shows them), or --sim for "
+        "host-send: error: no board given: --port DEVICE for a board (host-send --list shows them), or --sim for "
         "firmware-sim (see host-send --help)\n");
 }
 

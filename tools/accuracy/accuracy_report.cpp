@@ -2,12 +2,17 @@
 // writes the images as P6, for bench/accuracy/make_report.py.
 //
 //   accuracy-report [--size WxH] [--out DIR] [--variant NAME]... [--stats] SCENE.sld
+//   (see --help)
 //
 // Images go to DIR/STEM.TAG.ppm (TAG: double-libm, float-libm, float-portable,
 // float-portable-fast, float-portable-fma). --variant restricts the run to the
 // named variants (name or tag; repeatable), e.g. to count the instructions of
 // one variant under callgrind. --stats prints, per variant, the differences
 // from double/libm (which must then be among the variants).
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -23,14 +28,51 @@ namespace {
 
 using namespace minrt_accuracy;
 
-int usage(const char* why) {
-  if (why != nullptr) std::fprintf(stderr, "accuracy-report: %s\n", why);
-  std::fprintf(stderr,
-               "usage: accuracy-report [--size WxH] [--out DIR] [--variant NAME]... [--stats] "
-               "SCENE.sld\nvariants:");
-  for (const Variant& v : all_variants()) std::fprintf(stderr, " %s", v.name);
-  std::fprintf(stderr, "\n");
+#ifndef MINRT_VERSION
+#define MINRT_VERSION "0"
+#endif
+
+void print_help() {
+  std::fputs(
+      "Usage: accuracy-report [OPTIONS] SCENE.sld\n"
+      "Renders one SLD scene in every math variant of the renderer, in-process, for\n"
+      "the accuracy report (bench/accuracy/run.sh, docs/accuracy.md).\n"
+      "\n"
+      "  --size WxH        image size (default 128x128)\n"
+      "  --out DIR         write each image as DIR/STEM.TAG.ppm (P6); DIR must exist\n"
+      "  --variant NAME    render only this variant (name or tag; repeatable)\n"
+      "  --stats           print, per variant, the differences from double/libm\n"
+      "                    (which must then be among the variants)\n"
+      "  -h, --help        this text\n"
+      "  --version         version\n"
+      "\n"
+      "variants (name, tag):\n",
+      stdout);
+  for (const Variant& v : all_variants()) std::printf("  %-22s %s\n", v.name, v.tag);
+  std::fputs("\nexit status: 0 ok, 1 a render or a write failed, 2 usage error or unreadable scene.\n", stdout);
+}
+
+int usage(const std::string& why) {
+  std::fprintf(stderr, "accuracy-report: error: %s (see accuracy-report --help)\n", why.c_str());
   return 2;
+}
+
+// The output folder is checked once, before any render, with the reason.
+bool check_out_dir(const std::string& dir, std::string& why) {
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0) {
+    why = "cannot write to " + dir + ": " + std::strerror(errno);
+    return false;
+  }
+  if (!S_ISDIR(st.st_mode)) {
+    why = "cannot write to " + dir + ": " + std::strerror(ENOTDIR);
+    return false;
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    why = "cannot write to " + dir + ": " + std::strerror(errno);
+    return false;
+  }
+  return true;
 }
 
 std::string stem_of(const std::string& path) {
@@ -49,33 +91,50 @@ int main(int argc, char** argv) {
   bool stats = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (a == "--size" && has_value) {
-      if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2) return usage("bad --size");
-    } else if (a == "--out" && has_value) {
+    const bool takes_value = a == "--size" || a == "--out" || a == "--variant";
+    if (takes_value && i + 1 >= argc) return usage(a + " needs a value");
+    if (a == "--size") {
+      const std::string v = argv[++i];
+      char tail = 0;
+      if (std::sscanf(v.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 1 || height < 1 ||
+          width > 4096 || height > 4096)
+        return usage("bad --size '" + v + "': expected WxH, each 1..4096");
+    } else if (a == "--out") {
       out_dir = argv[++i];
-    } else if (a == "--variant" && has_value) {
+    } else if (a == "--variant") {
       const Variant* v = find_variant(argv[++i]);
-      if (v == nullptr) return usage("unknown variant");
+      if (v == nullptr) return usage(std::string("unknown variant '") + argv[i] + "'");
       chosen.push_back(v);
     } else if (a == "--stats") {
       stats = true;
     } else if (a == "-h" || a == "--help") {
-      usage(nullptr);
+      print_help();
       return 0;
-    } else if (!a.empty() && a[0] != '-' && scene_path.empty()) {
-      scene_path = a;
+    } else if (a == "--version") {
+      std::printf("accuracy-report %s\n", MINRT_VERSION);
+      return 0;
+    } else if (!a.empty() && a[0] == '-') {
+      return usage("unknown option '" + a + "'");
+    } else if (!scene_path.empty()) {
+      return usage("more than one scene file given");
     } else {
-      return usage(("unexpected argument " + a).c_str());
+      scene_path = a;
     }
   }
-  if (scene_path.empty()) return usage("no scene");
+  if (scene_path.empty()) return usage("no scene file given");
   if (chosen.empty())
     for (const Variant& v : all_variants()) chosen.push_back(&v);
+  std::string why;
+  if (!out_dir.empty() && !check_out_dir(out_dir, why)) {
+    std::fprintf(stderr, "accuracy-report: error: %s\n", why.c_str());
+    return 2;
+  }
 
   std::ifstream in(scene_path, std::ios::binary);
-  if (!in) {
-    std::fprintf(stderr, "accuracy-report: cannot read %s\n", scene_path.c_str());
+  struct stat scene_st {};
+  if (!in || (::stat(scene_path.c_str(), &scene_st) == 0 && S_ISDIR(scene_st.st_mode))) {
+    const int e = !in ? errno : EISDIR;
+    std::fprintf(stderr, "accuracy-report: error: cannot read %s: %s\n", scene_path.c_str(), std::strerror(e));
     return 2;
   }
   std::ostringstream text;
@@ -98,14 +157,14 @@ int main(int argc, char** argv) {
       const std::string path = out_dir + "/" + stem_of(scene_path) + "." + v->tag + ".ppm";
       std::string why;
       if (!minrt::host::write_file_atomically(path, r.image, false, why)) {
-        std::fprintf(stderr, "accuracy-report: %s\n", why.c_str());
-        status = 1;
+        std::fprintf(stderr, "accuracy-report: error: %s\n", why.c_str());
+        return 1;
       }
     }
     if (!stats) continue;
     if (std::strcmp(v->name, "double/libm") == 0) reference = r.image;
     if (reference.empty()) {
-      std::fprintf(stderr, "accuracy-report: --stats needs double/libm first\n");
+      std::fprintf(stderr, "accuracy-report: error: --stats needs double/libm first\n");
       return 2;
     }
     const ImageDiff d = diff_p6(reference, r.image);

@@ -25,9 +25,18 @@
 
 namespace {
 
-void usage() {
+#ifndef MINRT_VERSION
+#define MINRT_VERSION "0"
+#endif
+
+void print_help() {
   std::fputs(
-      "usage: fault-relay [OPTIONS] BOARD_TTY\n"
+      "Usage: fault-relay [OPTIONS] BOARD_TTY\n"
+      "Relays bytes between BOARD_TTY (e.g. the pseudo-terminal firmware-sim --pty\n"
+      "announced) and a new pseudo-terminal for the host, damaging the line on\n"
+      "purpose and reproducibly. Prints 'fault-relay: uart on /dev/pts/N' on standard\n"
+      "error, and at the end what it did. Probabilities P are 0..1.\n"
+      "\n"
       "  --seed N          fault sequence (default 1)\n"
       "  --drop P          probability of dropping a byte\n"
       "  --flip P          probability of flipping one bit of a byte\n"
@@ -40,8 +49,17 @@ void usage() {
       "  --drop-at N       drop board->host byte N (0-based), whatever the rates\n"
       "  --dup-at N        send board->host byte N twice\n"
       "  --flip-at N       flip the lowest bit of board->host byte N\n"
-      "  --both-ways       damage host->board bytes too (own seed + 1)\n",
-      stderr);
+      "  --both-ways       damage host->board bytes too (own seed + 1)\n"
+      "  -h, --help        this text\n"
+      "  --version         version\n"
+      "\n"
+      "exit status: 0 the host closed its end, 1 a terminal error, 2 usage error.\n",
+      stdout);
+}
+
+[[noreturn]] void usage_error(const std::string& msg) {
+  std::fprintf(stderr, "fault-relay: error: %s (see fault-relay --help)\n", msg.c_str());
+  std::exit(2);
 }
 
 int open_raw(const char* path) {
@@ -88,11 +106,13 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto num = [&](double& v) {
-      if (i + 1 >= argc) {
-        usage();
-        std::exit(2);
-      }
-      v = std::strtod(argv[++i], nullptr);
+      if (i + 1 >= argc) usage_error(a + " needs a value");
+      char* end = nullptr;
+      const char* text = argv[++i];
+      v = std::strtod(text, &end);
+      const bool probability = a == "--drop" || a == "--flip" || a == "--dup" || a == "--delay" || a == "--stall";
+      if (end == text || *end != 0 || v < 0 || (probability && v > 1) || v > 1e15)
+        usage_error("bad " + a + " '" + text + "': expected " + (probability ? "a probability 0..1" : "a number >= 0"));
     };
     double v = 0;
     if (a == "--seed") { num(v); seed = static_cast<unsigned long long>(v); }
@@ -108,22 +128,21 @@ int main(int argc, char** argv) {
     else if (a == "--dup-at") { num(v); rates.dup_at = static_cast<std::int64_t>(v); }
     else if (a == "--flip-at") { num(v); rates.flip_at = static_cast<std::int64_t>(v); }
     else if (a == "--both-ways") both = true;
-    else if (a == "-h" || a == "--help") { usage(); return 0; }
-    else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "fault-relay: unknown option '%s'\n", a.c_str()); return 2; }
+    else if (a == "-h" || a == "--help") { print_help(); return 0; }
+    else if (a == "--version") { std::printf("fault-relay %s\n", MINRT_VERSION); return 0; }
+    else if (!a.empty() && a[0] == '-') usage_error("unknown option '" + a + "'");
+    else if (board_path != nullptr) usage_error("more than one BOARD_TTY given");
     else board_path = argv[i];
   }
-  if (board_path == nullptr) {
-    usage();
-    return 2;
-  }
+  if (board_path == nullptr) usage_error("no BOARD_TTY given");
   const int board = open_raw(board_path);
   if (board < 0) {
-    std::fprintf(stderr, "fault-relay: cannot open %s: %s\n", board_path, std::strerror(errno));
+    std::fprintf(stderr, "fault-relay: error: cannot open %s: %s\n", board_path, std::strerror(errno));
     return 1;
   }
   const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
   if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) {
-    std::perror("fault-relay: pty");
+    std::fprintf(stderr, "fault-relay: error: cannot open a pseudo-terminal: %s\n", std::strerror(errno));
     return 1;
   }
   const char* name = ::ptsname(master);

@@ -23,6 +23,33 @@ namespace {
 
 using namespace shim_ulp;
 
+#ifndef MINRT_VERSION
+#define MINRT_VERSION "0"
+#endif
+
+void print_help() {
+  std::fputs(
+      "Usage: shim-ulp-table [OPTIONS]\n"
+      "Prints a Markdown table of the accuracy of each math policy (C library float,\n"
+      "portable minimum, fast and accurate) over the ranges the renderer uses, and the\n"
+      "int <-> float conversion checks (docs/shims.md).\n"
+      "\n"
+      "  --refine N        divide the sampling strides by N (default 16)\n"
+      "  --exhaustive      visit every float of every range (minutes per function)\n"
+      "  --only FN         one function: sqrt, floor, sin, cos, atan, or conv\n"
+      "  --no-libm         leave out the C library rows\n"
+      "  --renderer        keep only the ranges the renderer uses\n"
+      "  --level 0|1|2     keep one portable level (and drop the libm rows)\n"
+      "  -h, --help        this text\n"
+      "  --version         version\n",
+      stdout);
+}
+
+[[noreturn]] void usage_error(const std::string& msg) {
+  std::fprintf(stderr, "shim-ulp-table: error: %s (see shim-ulp-table --help)\n", msg.c_str());
+  std::exit(2);
+}
+
 std::string log2_text(double v) {
   if (v == 0.0) return "0";
   if (!std::isfinite(v)) return "inf";
@@ -85,26 +112,36 @@ int main(int argc, char** argv) {
   bool renderer_only = false;
   int level = -1;  // all
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--refine") == 0 && i + 1 < argc) {
-      refine = std::atoll(argv[++i]);
-      if (refine < 1) refine = 1;
+    const std::string a = argv[i];
+    const bool takes_value = a == "--refine" || a == "--only" || a == "--level";
+    if (takes_value && i + 1 >= argc) usage_error(a + " needs a value");
+    if (a == "-h" || a == "--help") {
+      print_help();
+      return 0;
+    } else if (a == "--version") {
+      std::printf("shim-ulp-table %s\n", MINRT_VERSION);
+      return 0;
+    } else if (a == "--refine") {
+      char* end = nullptr;
+      refine = std::strtoll(argv[++i], &end, 10);
+      if (end == argv[i] || *end != 0 || refine < 1) usage_error(std::string("bad --refine '") + argv[i] + "': expected N >= 1");
     } else if (std::strcmp(argv[i], "--exhaustive") == 0) {
       refine = std::int64_t(1) << 40;
-    } else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) {
+    } else if (std::strcmp(argv[i], "--only") == 0) {
       only = argv[++i];
+      if (only != "sqrt" && only != "floor" && only != "sin" && only != "cos" && only != "atan" && only != "conv")
+        usage_error("bad --only '" + only + "': expected sqrt, floor, sin, cos, atan or conv");
     } else if (std::strcmp(argv[i], "--no-libm") == 0) {
       libm = false;
     } else if (std::strcmp(argv[i], "--renderer") == 0) {
       renderer_only = true;
-    } else if (std::strcmp(argv[i], "--level") == 0 && i + 1 < argc) {
-      level = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--level") == 0) {
+      const std::string v = argv[++i];
+      if (v != "0" && v != "1" && v != "2") usage_error("bad --level '" + v + "': expected 0, 1 or 2");
+      level = v[0] - '0';
       libm = false;
     } else {
-      std::fprintf(stderr,
-                   "usage: %s [--refine N] [--exhaustive] [--only FN|conv] [--no-libm] "
-                   "[--renderer] [--level 0|1|2]\n",
-                   argv[0]);
-      return 2;
+      usage_error("unknown option '" + a + "'");
     }
   }
   if (only != "conv") {
