@@ -17,12 +17,10 @@ import sys
 import time
 
 import numpy as np
-import matplotlib
 
-from safe_output import install_signal_handlers, save_figure, write_atomically
+from safe_output import install_signal_handlers, write_atomically
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import plots
 
 VARIANTS = [  # (name, file tag), reference first
     ("double/libm", "double-libm"),
@@ -37,23 +35,41 @@ MODEL = "float-portable"
 SIZE = 128
 SPEED_SCENE = "contest"
 
-# The rv32imf firmware under FPU models of a course team's unit (firmware-sim
-# --fpu, docs/firmware_sim.md "FPU models"): (name, file tag, --fpu items).
-FPU_VARIANTS = [
-    ("fdiv recip-mul T=10 N=1", "fpu-recip10n1",
-     "div=recip-mul,recip_table_bits=10,recip_newton_steps=1"),
-    ("fdiv recip-mul T=8 N=1", "fpu-recip8n1",
-     "div=recip-mul,recip_table_bits=8,recip_newton_steps=1"),
-    ("fdiv recip-mul T=12 N=0", "fpu-recip12n0",
-     "div=recip-mul,recip_table_bits=12,recip_newton_steps=0"),
-    ("fsqrt table-newton T=11 N=1", "fpu-rsqrt11n1",
-     "sqrt=table-newton,rsqrt_table_bits=11,rsqrt_newton_steps=1"),
-    ("truncating unit", "fpu-truncating",
-     "div=recip-mul,recip_table_bits=10,recip_newton_steps=1,sqrt=table-newton,"
-     "rsqrt_table_bits=11,rsqrt_newton_steps=1,mul=truncate,add=truncate"),
-]
+# The rv32imf firmware under models of a course team's FPU: every
+# firmware-sim model file (--fpu-model, docs/firmware_sim.md "FPU models") in
+# this folder, each named by its "# unit: NAME" line; the IEEE row is the
+# simulator's own exact model file.
+FPU_MODEL_DIR = os.path.join("bench", "accuracy", "fpu-models")
+IEEE_MODEL = os.path.join("firmware_sim", "models", "fpu-ieee.cfg")
 FPU_ISA = "rv32imf"
 CHECK_OPS = ["fadd", "fsub", "fmul", "fdiv", "fsqrt"]
+
+
+def read_model(path):
+    """(unit name, {key: value}) of a firmware-sim FPU model file."""
+    name, keys = None, {}
+    for line in open(path):
+        m = re.match(r"\s*#\s*unit:\s*(.+?)\s*$", line)
+        if m and name is None:
+            name = m.group(1)
+        line = line.split("#", 1)[0]
+        if "=" in line:
+            key, value = line.split("=", 1)
+            keys[key.strip()] = value.strip()
+    return name or os.path.splitext(os.path.basename(path))[0], keys
+
+
+def fpu_models(root):
+    """[(unit name, file tag, model path relative to root, {key: value})], by file name
+    with numbers in numeric order (recip8n1 before recip10n1)."""
+    def natural(path):
+        return [int(p) if p.isdigit() else p for p in re.split(r"(\d+)", os.path.basename(path))]
+    models = []
+    for path in sorted(glob.glob(os.path.join(root, FPU_MODEL_DIR, "*.cfg")), key=natural):
+        name, keys = read_model(path)
+        tag = "fpu-" + os.path.splitext(os.path.basename(path))[0]
+        models.append((name, tag, os.path.relpath(path, root), keys))
+    return models
 
 
 def read_ppm(path):
@@ -142,9 +158,9 @@ def run_firmware(sim, elf, scene, outfile, cache_dir, options=("--cycle-model", 
             "fp_sqrt": int(mix("fp_sqrt").group(1)) if mix("fp_sqrt") else 0}
 
 
-def fpu_check(sim, fpu):
-    """firmware-sim --fpu-check: op -> (max error as printed, "meet"/"MISS")."""
-    r = subprocess.run([sim, "--fpu", fpu, "--fpu-check"], capture_output=True, text=True)
+def fpu_check(sim, model):
+    """firmware-sim --fpu-model FILE --fpu-check: op -> (max error as printed, "meet"/"MISS")."""
+    r = subprocess.run([sim, "--fpu-model", model, "--fpu-check"], capture_output=True, text=True)
     out = {}
     for line in r.stdout.splitlines():
         words = line.split()
@@ -163,12 +179,11 @@ def default_latencies(root):
     return lat
 
 
-def unit_latencies(fpu, lat):
-    """fp_div and fp_sqrt of the unit an --fpu list describes, assuming one cycle for the
+def unit_latencies(keys, lat):
+    """fp_div and fp_sqrt of the unit a model file describes, assuming one cycle for the
     table, the default model's fp_mul/fp_add per dependent operation, no pipelining:
     reciprocal step = 2 mul + 1 sub, inverse-square-root step = 3 mul + 1 sub, then the
     final multiply. Exact ops keep the default model's latency."""
-    keys = dict(item.split("=", 1) for item in fpu.split(","))
     div, sqrt = lat["fp_div"], lat["fp_sqrt"]
     if keys.get("div") == "recip-mul":
         n = int(keys.get("recip_newton_steps", 1))
@@ -193,21 +208,9 @@ def fmt_psnr(p):
 
 
 def heat_map(scene, images, outpath):
-    shown = [t for _, t in VARIANTS if t != REF]
-    fig, axes = plt.subplots(1, 1 + len(shown), figsize=(3 * (1 + len(shown)), 3.6))
-    axes[0].imshow(images[REF], interpolation="nearest")
-    axes[0].set_title("double/libm (reference)", fontsize=8)
-    for ax, tag in zip(axes[1:], shown):
-        err = np.abs(images[tag].astype(np.int32) - images[REF].astype(np.int32)).max(axis=2)
-        im = ax.imshow(err, cmap="inferno", vmin=0, vmax=255, interpolation="nearest")
-        name = dict((t, n) for n, t in VARIANTS)[tag]
-        ax.set_title(f"{name}\n|diff|, max {err.max()}", fontsize=8)
-    for ax in axes:
-        ax.axis("off")
-    fig.colorbar(im, ax=list(axes), shrink=0.8, label="max channel error")
-    fig.suptitle(f"{scene} at {SIZE}x{SIZE}")
-    save_figure(fig, outpath, dpi=80)
-    plt.close(fig)
+    plots.heat_map(f"{scene} at {SIZE}x{SIZE}: largest channel error per pixel against double/libm",
+                   images[REF], "double/libm",
+                   [(name, images[tag]) for name, tag in VARIANTS if tag != REF], outpath)
 
 
 def main():
@@ -257,22 +260,24 @@ def main():
     ieee_check = None
     fpu_elf = os.path.join(args.firmware_dir or "", f"minrt-{FPU_ISA}.elf")
     lat = default_latencies(args.root)
+    models = fpu_models(args.root)
     if fw_jobs and FPU_ISA in fw_jobs and os.path.exists(fpu_elf):
         fpu_dir = os.path.join(args.work, "fpu-models")
         os.makedirs(fpu_dir, exist_ok=True)
-        ieee_check = pool.submit(fpu_check, args.sim, "div=exact")
-        for _, tag, fpu in FPU_VARIANTS:
-            div, sqrt = unit_latencies(fpu, lat)
+        ieee_check = pool.submit(fpu_check, args.sim, os.path.join(args.root, IEEE_MODEL))
+        for _, tag, model, keys in models:
+            model = os.path.join(args.root, model)
+            div, sqrt = unit_latencies(keys, lat)
             cfg = os.path.join(fpu_dir, tag + ".cfg")
             write_atomically(cfg, f"# the default model with this unit's latencies\nfp_div = {div}\n"
                              f"fp_sqrt = {sqrt}\n")
-            jobs = {"check": pool.submit(fpu_check, args.sim, fpu), "latency": (div, sqrt)}
+            jobs = {"check": pool.submit(fpu_check, args.sim, model), "latency": (div, sqrt)}
             for scene in course:
                 image = os.path.join(fpu_dir, f"{stem(scene)}.{tag}.ppm")
                 timed = stem(scene) == SPEED_SCENE
-                options = ["--fpu", fpu] + (["--cycle-model", cfg] if timed else [])
+                options = ["--fpu-model", model] + (["--cycle-model", cfg] if timed else [])
                 jobs[stem(scene)] = (pool.submit(run_firmware, args.sim, fpu_elf, scene, image,
-                                                 cache_dir, options, [cfg] if timed else []),
+                                                 cache_dir, options, [model] + ([cfg] if timed else [])),
                                      image)
             fpu_jobs[tag] = jobs
     failures = []
@@ -315,7 +320,7 @@ def main():
     fpu_runs = []  # every FPU-model run's --stats figures
     for tag, jobs in fpu_jobs.items():
         entry = {"check": jobs["check"].result(), "latency": jobs["latency"], "rows": {},
-                 "speed": None}
+                 "speed": None, "images": {}}
         for scene in course:
             job, image = jobs[stem(scene)]
             res = job.result()
@@ -326,6 +331,7 @@ def main():
             if stem(scene) == SPEED_SCENE:
                 entry["speed"] = res
             img = read_ppm(image)
+            entry["images"][stem(scene)] = img
             entry["rows"][stem(scene)] = (compare(img, images[stem(scene)][REF]),
                                           compare(img, images[stem(scene)][MODEL]))
         fpu[tag] = entry
@@ -345,7 +351,7 @@ def main():
     w("# Accuracy of the math variants\n")
     w("Generated by `bench/accuracy/run.sh` (do not edit by hand); the exact command is at "
       "the end. Every scene is rendered at "
-      f"{SIZE}x{SIZE} by `build-acc/tools/accuracy/accuracy-report` in each variant, in-process:\n")
+      f"{SIZE}x{SIZE} by `{os.path.relpath(args.tool, args.root)}` in each variant, in-process:\n")
     w("| variant | what |\n|---|---|")
     w("| double/libm | `LibmDouble`: the reference, byte-identical to the original program |")
     w("| float/libm | `LibmFloat`: float with glibc's `sqrtf sinf cosf atanf floorf` |")
@@ -461,7 +467,7 @@ def main():
 
 
     # FPU models: the units, then speed and error.
-    fpu_shown = [(n, t, f) for n, t, f in FPU_VARIANTS if t in fpu and fpu[t]["rows"]]
+    fpu_shown = [(n, t, m) for n, t, m, _ in models if t in fpu and fpu[t]["rows"]]
     ieee_fw = firmware.get(FPU_ISA, (None, None))[0]
     if fpu_shown:
         def fpu_totals(tag, which):
@@ -484,14 +490,15 @@ def main():
 
         w("## FPU models in the firmware\n")
         w(f"The {FPU_ISA} firmware rendered by `firmware-sim` with a model of a course team's FPU "
-          "in place of the exact IEEE one (`firmware-sim --fpu ITEMS`; the arithmetic is defined "
+          "in place of the exact IEEE one (`firmware-sim --fpu-model FILE`, one file per unit in "
+          f"[{FPU_MODEL_DIR}](../{FPU_MODEL_DIR}); the arithmetic is defined "
           "bit for bit in [firmware_sim.md](firmware_sim.md#fpu-models)). The firmware is "
           "unchanged: its shims build sin, cos and atan from the modelled add, mul and div, so "
           "the model's error reaches them too. Every course scene is rendered at "
           f"{SIZE}x{SIZE}, and {SPEED_SCENE}.sld also under the cycle model for the counts. The "
           "IEEE row is the same firmware with the exact FPU, whose output is the host's "
           "float/portable image (the firmware tests check that on every course scene).\n")
-        w("The error columns of the first table are `firmware-sim --fpu ITEMS --fpu-check`: the "
+        w("The error columns of the first table are `firmware-sim --fpu-model FILE --fpu-check`: the "
           "largest error of each operation over random, edge and exhaustive operands, as the "
           "course's rules measure it (relative, with a floor of 2^-126), against the rules "
           "2^-23 (fadd, fsub), 2^-22 (fmul), 2^-20 (fdiv, fsqrt).\n")
@@ -501,13 +508,18 @@ def main():
           f"{lat['fp_add']} cycles), without pipelining: 1 + N (2 mul + 1 sub) + 1 mul for the "
           "divider, 1 + N (3 mul + 1 sub) + 1 mul for the square root. An exact divider or "
           f"square root keeps the default's {lat['fp_div']} and {lat['fp_sqrt']}.\n")
-        w("| unit | `--fpu` | fadd | fsub | fmul | fdiv | fsqrt | fp_div / fp_sqrt cycles |")
+        def model_cell(path):
+            keys = read_model(os.path.join(args.root, path))[1]
+            return (f"[{os.path.basename(path)}](../{path})" +
+                    (": " + ", ".join(f"`{k}={v}`" for k, v in keys.items()) if path != IEEE_MODEL else ""))
+
+        w("| unit | model file | fadd | fsub | fmul | fdiv | fsqrt | fp_div / fp_sqrt cycles |")
         w("|---|---|---|---|---|---|---|---:|")
-        w("| IEEE | (none) | " + " | ".join(check_cell(ieee_check, op) for op in CHECK_OPS)
+        w(f"| IEEE | {model_cell(IEEE_MODEL)} | " + " | ".join(check_cell(ieee_check, op) for op in CHECK_OPS)
           + f" | {lat['fp_div']} / {lat['fp_sqrt']} |")
-        for name, tag, items in fpu_shown:
+        for name, tag, model in fpu_shown:
             div, sqrt = fpu[tag]["latency"]
-            w(f"| {name} | `{items}` | "
+            w(f"| {name} | {model_cell(model)} | "
               + " | ".join(check_cell(fpu[tag]["check"], op) for op in CHECK_OPS)
               + f" | {div} / {sqrt} |")
         w("")
@@ -569,6 +581,23 @@ def main():
                              f"{fmt_psnr(c[1]['psnr'])}" if c else "failed")
             w(f"| {stem(sc)} | " + " | ".join(cells) + " |")
         w("")
+        # What each unit does to the picture: the speed scene and the scene the
+        # units change most, each model's render beside the IEEE one.
+        changed = lambda sc: sum(fpu[t]["rows"][sc][1]["diff"]  # noqa: E731
+                                 for _, t, _ in fpu_shown if sc in fpu[t]["rows"])
+        others = sorted((stem(sc) for sc in course if stem(sc) != SPEED_SCENE), key=changed, reverse=True)
+        gallery = [sc for sc in [SPEED_SCENE] + others[:1]
+                   if all(sc in fpu[t]["images"] for _, t, _ in fpu_shown)]
+        if gallery:
+            plots.fpu_gallery([(sc, "IEEE FPU", images[sc][MODEL],
+                                [(name, fpu[tag]["images"][sc]) for name, tag, _ in fpu_shown])
+                               for sc in gallery], os.path.join(docdir, "fpu-models.png"))
+            w(f"What each unit does to the picture ({' and '.join(s + '.sld' for s in gallery)} at "
+              f"{SIZE}x{SIZE}; {gallery[-1]} is the course scene the units change most): the IEEE "
+              "firmware's render (the host's float/portable image) beside each model's, and under "
+              "each render its largest channel error per pixel against the IEEE one (the heat "
+              "maps' power scale).\n")
+            w("![the FPU models' renders](accuracy/fpu-models.png)\n")
 
     w(f"## Speed: {SPEED_SCENE}.sld at {SIZE}x{SIZE}\n")
     w("| variant | RV32 firmware instructions | RV32 modelled cycles (default model) | "
@@ -601,55 +630,27 @@ def main():
       "They are x86-64 instructions of a `-O3` host build and are not comparable with the "
       "RV32 counts.\n")
 
-    # Speed against error plot.
-    fig, axes = plt.subplots(1, 3 if fpu_shown else 2, figsize=(16.5 if fpu_shown else 11, 4.2))
-    ax = axes[0]
-    for name, tag in VARIANTS:
-        cg = callgrind.get(tag)
-        if not cg:
-            continue
-        err = totals(course, tag, 0)["diff"]
-        ax.scatter([err], [cg / 1e6])
-        ax.annotate(name, (err, cg / 1e6), fontsize=8, xytext=(4, 4), textcoords="offset points")
-    ax.set_xlabel("pixels differing from double/libm, 25 course scenes")
-    ax.set_ylabel(f"x86-64 Minstructions ({SPEED_SCENE} {SIZE}x{SIZE})")
-    ax.set_title("host (callgrind)")
-    ax.grid(alpha=0.3)
-    ax = axes[1]
-    err = totals(course, MODEL, 0)["diff"]
-    for isa, (res, _) in firmware.items():
-        if res:
-            ax.scatter([err], [res["cycles"] / 1e6])
-            ax.annotate(f"float/portable {isa}", (err, res["cycles"] / 1e6), fontsize=8,
-                        xytext=(4, 4), textcoords="offset points")
-    ax.set_yscale("log")
-    ax.set_xlabel("pixels differing from double/libm, 25 course scenes")
-    ax.set_ylabel(f"RV32 Mcycles, modelled ({SPEED_SCENE} {SIZE}x{SIZE})")
-    ax.set_title("firmware (firmware-sim, default cycle model)")
-    ax.grid(alpha=0.3)
+    # Speed against error: the host variants, the firmware, the FPU models.
+    course_n = len(course)
+    host_points = [(name, totals(course, tag, 0)["diff"], callgrind[tag])
+                   for name, tag in VARIANTS if callgrind.get(tag)]
+    isa_label = {"rv32imf": "rv32imf\n(hardware F)", "rv32im": "rv32im\n(soft float)"}
+    firmware_bars = [(isa_label.get(isa, isa), res["cycles"]) for isa, (res, _) in firmware.items() if res]
+    fpu_points = []
     if fpu_shown:
-        ax = axes[2]
-        points = [("IEEE", 0, ieee_fw["cycles"] if ieee_fw else None, True)]
+        fpu_points.append(("IEEE", 0, ieee_fw["cycles"] if ieee_fw else None, True))
         for name, tag, _ in fpu_shown:
             sp = fpu[tag]["speed"]
-            points.append((name, fpu_totals(tag, 1)["diff"], sp["cycles"] if sp else None,
-                           meets(fpu[tag]["check"])))
-        # Most units cost about the same: a legend instead of labels that would overlap.
-        for (name, x, cyc, ok), marker in zip(points, "osD^vPX*"):
-            if cyc is None:
-                continue
-            ax.scatter([x], [cyc / 1e6], color="tab:green" if ok else "tab:red", marker=marker,
-                       label=name)
-        ax.legend(fontsize=7, loc="upper left", title="green: meets the rules, red: misses",
-                  title_fontsize=7)
-        ax.set_xscale("symlog", linthresh=10)
-        ax.set_xlabel("pixels differing from float/portable, 25 course scenes")
-        ax.set_ylabel(f"RV32 Mcycles, modelled ({SPEED_SCENE} {SIZE}x{SIZE})")
-        ax.set_title(f"FPU models ({FPU_ISA} firmware, unit latencies)")
-        ax.grid(alpha=0.3)
-    fig.tight_layout()
-    save_figure(fig, os.path.join(docdir, "speed-vs-error.png"), dpi=80)
-    plt.close(fig)
+            fpu_points.append((name, fpu_totals(tag, 1)["diff"], sp["cycles"] if sp else None,
+                               meets(fpu[tag]["check"])))
+    plots.speed_vs_error(host_points, firmware_bars, fpu_points, {
+        "host_x": f"pixels differing from double/libm\n({course_n} course scenes)",
+        "host_y": f"x86-64 million instructions\n({SPEED_SCENE} {SIZE}x{SIZE})",
+        "fw_x": f"million RV32 cycles, default cycle model\n({SPEED_SCENE} {SIZE}x{SIZE})",
+        "fpu_x": f"pixels differing from float/portable\n({course_n} course scenes)",
+        "fpu_y": f"million RV32 cycles, unit latencies\n({SPEED_SCENE} {SIZE}x{SIZE})",
+        "fpu_title": f"FPU models ({FPU_ISA} firmware)",
+    }, os.path.join(docdir, "speed-vs-error.png"))
     w("![speed against error](accuracy/speed-vs-error.png)\n")
 
     # Heat maps of the worst scenes: most pixels off by more than 8, any variant.
@@ -659,8 +660,9 @@ def main():
     worst = [s for s in sorted(course + hard, key=badness, reverse=True)[:6]
              if badness(s)[1] > 0]
     w("## Where the differences are\n")
-    w("Heat maps (largest channel error per pixel, against double/libm) of the six scenes "
-      "with the most pixels off by more than 8 in any variant:\n")
+    w("Heat maps (largest channel error per pixel, against double/libm, on a power scale so "
+      "that an error of 1 shows; the title of each map gives its largest error and the pixels "
+      "that differ) of the six scenes with the most pixels off by more than 8 in any variant:\n")
     for s in worst:
         png = f"heat-{stem(s)}.png"
         heat_map(stem(s), images[stem(s)], os.path.join(docdir, png))

@@ -1,24 +1,31 @@
 #!/bin/sh
 # Regenerates docs/accuracy.md and docs/accuracy/*.png: builds accuracy-report
-# in build-acc/, renders every scene of ../shared/scenes and sld/hard at
-# 128x128 in every math variant, measures contest.sld on the firmware
-# (build/release/firmware, build/release/firmware_sim) and under callgrind,
-# and renders the course scenes on the rv32imf firmware under the FPU models
-# listed in make_report.py (firmware-sim --fpu).
-# Environment: BUILD (default build-acc), MINRT_SHARED_DIR (default ../shared),
-# FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS (default
-# rv32imf,rv32im), NO_CACHE=1 to rerun the firmware even when its counts are
-# cached in $BUILD/accuracy-work/firmware-cache (keyed by a hash of the
-# simulator, ELF, scene, arguments and cycle/FPU model; the soft-float run
-# takes many minutes, the FPU-model renders several).
+# (in build/release, the preset's folder), renders every scene of ../shared/scenes
+# and sld/hard at 128x128 in every math variant, measures contest.sld on the
+# firmware (build/release/firmware, build/release/firmware_sim) and under
+# callgrind, and renders the course scenes on the rv32imf firmware under every
+# FPU model file in bench/accuracy/fpu-models/ (firmware-sim --fpu-model).
+# Environment: BUILD (default build/release), MINRT_SHARED_DIR (default
+# ../shared), FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS
+# (default rv32imf,rv32im), NO_CACHE=1 to rerun the firmware even when its
+# counts are cached in $BUILD/accuracy-work/firmware-cache (keyed by a hash of
+# the simulator, ELF, scene, arguments and cycle/FPU model; the soft-float run
+# takes minutes, the FPU-model renders several).
+# Needs Debian's python3-numpy and python3-matplotlib (run with /usr/bin/python3).
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build=${BUILD:-$root/build-acc}
+build=${BUILD:-$root/build/release}
 shared=${MINRT_SHARED_DIR:-$root/../shared}
 fw_build=${FW_BUILD:-$root/build/release}
 jobs=${JOBS:-2}
 
-[ -f "$build/CMakeCache.txt" ] || cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  if [ "$build" = "$root/build/release" ]; then
+    (cd "$root" && cmake --preset host-release)
+  else
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+  fi
+fi
 cmake --build "$build" --target accuracy-report -j "$jobs"
 
 command=bench/accuracy/run.sh
