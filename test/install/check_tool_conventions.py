@@ -9,8 +9,9 @@
 - tool-specific cases: host-send's short options (-p PORT, -b BAUD), output
   paths checked before any work, with the reason (strerror).
 
-Usage: check_tool_conventions.py --bin DIR --version V [--shared DIR] [--tool PATH]...
-Every executable in DIR is checked, and every --tool.
+Usage: check_tool_conventions.py --bin DIR --version V [--shared DIR] [--tool PATH]... [--script PATH]...
+Every executable in DIR is checked, and every --tool; each --script's --help
+must answer at once, without setting up or building.
 """
 import argparse
 import os
@@ -95,12 +96,26 @@ def check_specific(tools, shared, scratch):
         one_error_line(r, "shim-ulp-table", 2, ["bad --only 'tan'"], "shim-ulp-table --only tan")
 
 
+def check_script(path):
+    """A script's --help answers at once (no set-up, no build) on standard output."""
+    name = os.path.basename(path)
+    try:
+        r = run([path, "--help"], timeout=20)
+    except subprocess.TimeoutExpired:
+        failures.append(f"{name} --help: still running after 20 s (it must not set up or build)")
+        return
+    expect(r.returncode == 0, f"{name} --help: status {r.returncode}")
+    expect(r.stdout.strip() != "", f"{name} --help: printed nothing on stdout")
+    expect(r.stderr == "", f"{name} --help: wrote to stderr: {r.stderr[:200]!r}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--bin", required=True)
     ap.add_argument("--version", required=True)
     ap.add_argument("--shared", default="../shared")
     ap.add_argument("--tool", action="append", default=[])
+    ap.add_argument("--script", action="append", default=[], help="a script whose --help is checked")
     args = ap.parse_args()
     paths = sorted(os.path.join(args.bin, n) for n in os.listdir(args.bin)
                    if os.access(os.path.join(args.bin, n), os.X_OK))
@@ -114,9 +129,12 @@ def main():
     scratch = os.path.join(os.path.dirname(os.path.abspath(args.bin)), "conventions-scratch")
     os.makedirs(scratch, exist_ok=True)
     check_specific(tools, args.shared, scratch)
+    for s in args.script:
+        check_script(s)
     for f in failures:
         print("FAIL " + f)
-    print(f"check_tool_conventions: {len(paths)} tools ({', '.join(sorted(tools))}), {len(failures)} failures")
+    print(f"check_tool_conventions: {len(paths)} tools ({', '.join(sorted(tools))}), {len(args.script)} scripts, "
+          f"{len(failures)} failures")
     return 1 if failures else 0
 
 
