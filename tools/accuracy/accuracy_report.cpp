@@ -158,7 +158,7 @@ int main(int argc, char** argv) {
       std::string why;
       if (!minrt::host::write_file_atomically(path, r.image, false, why)) {
         std::fprintf(stderr, "accuracy-report: error: %s\n", why.c_str());
-        return 1;
+        status = 1;  // the other variants' images are still written
       }
     }
     if (!stats) continue;
