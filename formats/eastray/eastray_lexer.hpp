@@ -22,7 +22,7 @@ struct Token {
   bool is(const char* w) const {
     int i = 0;
     for (; i < length; ++i)
-      if (w[i] != s[i]) return false;
+      if (w[i] == 0 || w[i] != s[i]) return false;  // a NUL inside the token ends no word
     return w[i] == 0;
   }
   bool is(char c) const { return length == 1 && s[0] == c; }
