@@ -383,12 +383,14 @@ int run(const Options& options) {
   // statement, the scene's name with .png).
   const bool eastray = format == minrt::host::SceneFormat::kEastray;
   if (eastray) {
-    if (o.protocol != Protocol::kRaw)
-      return fail(kExitUsage, "EASTRAY scenes go over --protocol raw; course and framed carry SLD only, for now");
-    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
+    // The scene is checked first, so a bad one gets its located message
+    // whatever protocol was asked for.
     std::string expanded, statement;
     if (!minrt::host::eastray_board_text(o.scene, scene, expanded, png_width, png_height, statement, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
+    if (o.protocol != Protocol::kRaw)
+      return fail(kExitUsage, "EASTRAY scenes go over --protocol raw; course and framed carry SLD only, for now");
+    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
     scene = expanded;
     bool tiff = false;
     std::string warning;

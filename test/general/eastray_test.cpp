@@ -666,19 +666,22 @@ TEST_CASE("eastray: the invalid scene files are refused by minrt and by host-sen
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK_FALSE(exists(out));
     // host-send checks the scene with the board's reader before it starts
-    // a link: the same located message, and no image.
+    // a link, whatever the protocol: the same located message, no image.
     char errf[] = "/tmp/minrt-ea-send-XXXXXX";
     const int fd = mkstemp(errf);
     REQUIRE(fd >= 0);
     close(fd);
-    const int rc = std::system(("cd '" + dir + "' && " + std::string(MINRT_SEND_BIN) + " --sim " + file + " -o " + out +
-                                " 2>" + errf + " </dev/null >/dev/null").c_str());
-    const std::string err = minrt::test::read_file(errf);
+    for (const char* protocol : {"raw", "course", "framed"}) {
+      INFO(protocol);
+      const int rc = std::system(("cd '" + dir + "' && " + std::string(MINRT_SEND_BIN) + " --sim --protocol " + protocol +
+                                  " " + file + " -o " + out + " 2>" + errf + " </dev/null >/dev/null").c_str());
+      const std::string err = minrt::test::read_file(errf);
+      INFO(err);
+      CHECK((WIFEXITED(rc) && WEXITSTATUS(rc) != 0));
+      CHECK(err.find("scene rejected before sending: " + file + ":" + expect) != std::string::npos);
+      CHECK_FALSE(exists(out));
+    }
     std::remove(errf);
-    INFO(err);
-    CHECK((WIFEXITED(rc) && WEXITSTATUS(rc) != 0));
-    CHECK(err.find("scene rejected before sending: " + file + ":" + expect) != std::string::npos);
-    CHECK_FALSE(exists(out));
   }
 }
 
