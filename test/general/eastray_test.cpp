@@ -585,6 +585,20 @@ TEST_CASE("eastray: shading laws", "[eastray]") {
     CHECK(f.r == 127);
     CHECK(f.b == 255);
   }
+  SECTION("transparency: light inside a body halves every half distance") {
+    // A clear slab 1 thick (ior 1: no bending, no Fresnel loss) in front of
+    // a constant white wall: half distance 1 gives half the white, 0.5 a
+    // quarter.
+    auto through = [&](const char* half) {
+      const std::string colors = std::string("slab 0 0 0  0 0 0  1 1 1  1 ") + half +
+                                 "  0  0 0 1 ;  white 0 0 0  0 0 0  0 0 0  1 1  0  5 1 1 1  1 1 1  0 ;";
+      return px(render_text(lit("condition 4 0 0.00001 0 ;\nenv 0 0 0 ;\n", "", colors,
+                                "16 slab 1  0 0 0  3 3 0.5 ;  1 white 1  0 0 -3  0 0 1 ;")),
+                32, 24);
+    };
+    CHECK(std::abs(through("1").r - 127) <= 1);
+    CHECK(std::abs(through("0.5").r - 63) <= 1);
+  }
   SECTION("condition 0 and 1: no reflection; 2: one") {
     const std::string colors = "mirror 0 0 0  1 1 1  0 0 0  1 1  0  0 0 1 ;  red 1 0 0  0 0 0  0 0 0  1 1  0  0 0 1 ;";
     // A mirror at 45 degrees sends the centre ray up to a red ball out of view.
