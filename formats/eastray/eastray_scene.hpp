@@ -2,9 +2,9 @@
 // global settings, lights, colours (materials), primitives in their local
 // frames with the world-to-local transform, the CSG tree of OR / AND /
 // RANGE blocks over them, and the triangles of polygon meshes. Plain arrays
-// in the arena with capacities fixed before parsing: parts called many
-// times multiply the items, so the capacities come from the arena's size,
-// not from the text's.
+// in the arena with capacities fixed before parsing (Capacities: from the
+// text's size on the host, with floors for parts called many times; fixed
+// on the board).
 #pragma once
 
 #include <stdint.h>
