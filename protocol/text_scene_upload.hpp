@@ -35,7 +35,7 @@ inline constexpr uint32_t kTextSceneMarker = 0x7FF45854;  // exponent all ones, 
 inline constexpr size_t kHeaderBytes = 12;
 
 inline bool is_text_format(uint32_t tag) {
-  return tag == MINRT_SCENE_FORMAT_CS418 || tag == MINRT_SCENE_FORMAT_JAWORSKI;
+  return tag == MINRT_SCENE_FORMAT_CS418 || tag == MINRT_SCENE_FORMAT_JAWORSKI || tag == MINRT_SCENE_FORMAT_EASTRAY;
 }
 
 // The scene bytes as they arrived (texture preamble and text), in memory.

@@ -18,23 +18,38 @@ constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096,
 
 bool is_eastray_start(int first_byte) { return first_byte == '/'; }
 
-EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+EastrayResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
   using R = Math::real;
   eastray::Scene<R> scene;
   if (!scene.allocate(arena, kCapacity)) {
     error.text("no room for the scene tables");
     return EastrayResult::kOutOfMemory;
   }
-  // The text, whole: parts are read again at every call. What is left
-  // after the reader's part table and the rows may hold it.
+  eastray::Reader<Math> reader(text, size, scene, arena);
+  if (!reader.read(error)) return EastrayResult::kSceneError;
+  eastray::build_triangle_bvh<Math>(scene, arena);  // without room, the same image, slower
+  R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (linear == nullptr || row == nullptr) {
+    error.text("image row does not fit in the board's memory");
+    return EastrayResult::kOutOfMemory;
+  }
+  eastray::Tracer<Math>(scene).render(rows, linear, row);
+  return EastrayResult::kOk;
+}
+
+EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+  // The text, whole, at the arena's top: parts are read again at every
+  // call. Room is left below it for the scene, the reader's part table and
+  // the rows.
   const size_t room = arena.capacity() - arena.used();
-  const size_t reserve = eastray::Reader<Math>::scratch_bytes() + 64 * 1024;
+  const size_t reserve = eastray::Scene<Math::real>::bytes_for(kCapacity) + eastray::Reader<Math>::scratch_bytes() +
+                         64 * 1024;
   if (room <= reserve) {
     error.text("no room for the scene text");
     return EastrayResult::kOutOfMemory;
   }
   const size_t limit = room - reserve;
-  const size_t text_mark = arena.top_mark();
   char* text = arena.alloc_top<char>(limit);
   size_t size = 0;
   for (int c; (c = in.get()) >= 0;) {
@@ -44,19 +59,8 @@ EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnost
     }
     text[size++] = static_cast<char>(c);
   }
-  eastray::Reader<Math> reader(text, size, scene, arena);
-  if (!reader.read(error)) return EastrayResult::kSceneError;
-  arena.release_top(text_mark);  // the text is no longer needed
-  eastray::build_triangle_bvh<Math>(scene, arena);  // without room, the same image, slower
-  R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
-  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
-  if (linear == nullptr || row == nullptr) {
-    error.text("image row does not fit in the board's memory");
-    return EastrayResult::kOutOfMemory;
-  }
   PngStoredWriter png(out);
-  eastray::Tracer<Math>(scene).render(rgba_row_sink_of(png), linear, row);
-  return EastrayResult::kOk;
+  return render_eastray_rows(text, size, rgba_row_sink_of(png), arena, error);
 }
 
 }  // namespace minrt::fw

@@ -6,6 +6,7 @@
 #include "core/image/png_writer.hpp"
 #include "cs418_board.hpp"
 #include "jaworski_board.hpp"
+#include "eastray_board.hpp"
 #include "protocol/texture_blobs.hpp"
 
 namespace minrt::fw {
@@ -18,6 +19,14 @@ TextSceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaR
       case JaworskiResult::kOk: return TextSceneResult::kOk;
       case JaworskiResult::kSceneError: return TextSceneResult::kSceneError;
       case JaworskiResult::kOutOfMemory: return TextSceneResult::kOutOfMemory;
+    }
+    return TextSceneResult::kSceneError;
+  }
+  if (scene.format == MINRT_SCENE_FORMAT_EASTRAY) {  // expanded by host-send, read in place
+    switch (render_eastray_rows(reinterpret_cast<const char*>(scene.bytes), scene.size, rows, arena, error)) {
+      case EastrayResult::kOk: return TextSceneResult::kOk;
+      case EastrayResult::kSceneError: return TextSceneResult::kSceneError;
+      case EastrayResult::kOutOfMemory: return TextSceneResult::kOutOfMemory;
     }
     return TextSceneResult::kSceneError;
   }

@@ -388,8 +388,6 @@ int run(const Options& options) {
     std::string expanded, statement;
     if (!minrt::host::eastray_board_text(o.scene, scene, expanded, png_width, png_height, statement, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
-    if (o.protocol != Protocol::kRaw)
-      return fail(kExitUsage, "EASTRAY scenes go over --protocol raw; course and framed carry SLD only, for now");
     if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
     scene = expanded;
     bool tiff = false;
@@ -400,7 +398,7 @@ int run(const Options& options) {
       if (!warning.empty() || tiff)
         std::fprintf(stderr, "host-send: warning: the board sends PNG; writing %s\n", o.output.c_str());
     }
-    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   const bool png_reply = cs418 || minirt || eastray;
@@ -505,28 +503,28 @@ int run(const Options& options) {
   TransferResult r;
   CourseHostOptions course_options;
   course_options.big_endian = o.big_endian;
-  if (jaworski || cs418) {
+  if (jaworski || cs418 || eastray) {
     // Course and framed carry these formats as text behind a header
     // (protocol/text_scene_upload.hpp); the image is the format's own.
     const std::string bytes = cs418 ? texture_preamble + scene : scene;
-    const std::uint32_t tag = cs418 ? MINRT_SCENE_FORMAT_CS418 : MINRT_SCENE_FORMAT_JAWORSKI;
+    const std::uint32_t tag = cs418 ? MINRT_SCENE_FORMAT_CS418 : eastray ? MINRT_SCENE_FORMAT_EASTRAY : MINRT_SCENE_FORMAT_JAWORSKI;
     if (o.protocol == Protocol::kFramed) {
       r = run_framed_text(ex, tag, bytes, png_width, png_height);
     } else if (o.protocol == Protocol::kCourse) {
       const std::string words = text_scene_course_words(tag, bytes, o.big_endian);
-      if (cs418) {
+      if (cs418 || eastray) {
         PngReceiver rx(png_width, png_height);
         r = run_course_words(ex, words, program, course_options, rx);
       } else {
         BmpReceiver rx;
         r = run_course_words(ex, words, program, course_options, rx);
       }
-    } else if (cs418) {
+    } else if (cs418 || eastray) {
       r = run_raw_png(ex, bytes, png_width, png_height);
     } else {
       r = run_raw_bmp(ex, bytes);
     }
-  } else if (png_reply) {  // miniRT, EASTRAY: raw only, checked above
+  } else if (png_reply) {  // miniRT: raw only, checked above
     r = run_raw_png(ex, texture_preamble + scene, png_width, png_height);
   } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);

@@ -3,12 +3,12 @@
 # firmware in firmware-sim (raw protocol), which renders it in float with the
 # portable shims and streams a PNG back; its pixels must equal those of the
 # host's float model (minrt --precision float --shims portable).
-# Usage: eastray_firmware_check.sh SIM FIRMWARE HOST_SEND MINRT IMAGE_COMPARE SCENE WORKDIR
+# Usage: eastray_firmware_check.sh SIM FIRMWARE HOST_SEND MINRT IMAGE_COMPARE SCENE WORKDIR [PROTOCOL]
 set -euo pipefail
-sim=$1 fw=$2 send=$3 minrt=$4 compare=$5 scene=$6 work=$7
+sim=$1 fw=$2 send=$3 minrt=$4 compare=$5 scene=$6 work=$7 protocol=${8:-raw}
 mkdir -p "$work"
-name=$(basename "$scene" .ray)
-"$send" -q --sim-binary "$sim" --sim "$fw" "$scene" -o "$work/$name-fw.png"
+name=$(basename "$scene" .ray)-$protocol
+"$send" -q --sim-binary "$sim" --sim "$fw" --protocol "$protocol" "$scene" -o "$work/$name-fw.png"
 "$minrt" -q --precision float --shims portable "$scene" -o "$work/$name-host.png"
 "$compare" --identical "$work/$name-fw.png" "$work/$name-host.png" >/dev/null
-echo "$name: firmware image identical to the host float model"
+echo "$name: firmware image over $protocol identical to the host float model"
