@@ -85,7 +85,8 @@ class Tracer : private TracerState<M> {
   // too small (arena_bytes tells how much is needed).
   bool init(const Scene<R>& scene, int width, int height, Arena& arena);
 
-  // Renders the whole image, handing each row to `out` as it is finished.
+  // Renders the whole image, handing each row to `out` as it is finished;
+  // once per init (the pixel lines start zeroed, as the original's do).
   void render(const RowSink& out);
 
   // Rows y0..y1-1 to `out` (no begin/end), the same bytes as render gives
