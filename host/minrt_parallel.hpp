@@ -15,6 +15,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -114,7 +115,11 @@ bool render_minrt_parallel(const Scene<typename M::real>& scene, int width, int 
       t.render_rows(y0, std::min(y0 + band, height), into_image, shared);
   };
   std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work, std::ref(*workers[static_cast<size_t>(i)].tracer));
+  try {
+    for (int i = 1; i < threads; ++i) pool.emplace_back(work, std::ref(*workers[static_cast<size_t>(i)].tracer));
+  } catch (const std::system_error&) {
+    // Fewer threads than asked: the bands go to those that started.
+  }
   work(*workers[0].tracer);
   for (std::thread& t : pool) t.join();
 
