@@ -12,6 +12,9 @@ template <MathPolicy M>
 inline auto Tracer<M>::setup_dirvec_constants(DirVec& dv) -> void {
   const R* v = dv.v;
   dv.code = direction_code(v);
+  dv.octant = v[0] == R(0) || v[1] == R(0) || v[2] == R(0)
+                  ? -1
+                  : int32_t{v[0] < R(0)} | int32_t{v[1] < R(0)} << 1 | int32_t{v[2] < R(0)} << 2;
   for (int i = n_objects_ - 1; i >= 0; --i) {
     const Object& m = objects_[i];
     R* c = const_cast<R*>(consts_of(dv, m));
@@ -108,6 +111,24 @@ inline auto Tracer<M>::setup_forward_culling() -> void {
       all &= mask;
     }
     row.fwd_all = all;
+  }
+  // A row left without networks is dropped with its range test, whose only
+  // effect would be on solver_dist_, which nothing reads afterwards.
+  for (int o = 0; o < 8; ++o) {
+    const uint32_t code = ((o & 1) != 0 ? 2u : 1u) | ((o & 2) != 0 ? 8u : 4u) | ((o & 4) != 0 ? 32u : 16u);
+    LiveRow* lr = live_rows_ + o * (n_or_rows_ + 1);
+    ObjectList* ln = live_nets_ + o * live_nets_stride_;
+    for (int r = 0; r < n_or_rows_; ++r) {
+      const OrRow& row = or_rows_[r];
+      if ((row.fwd_all & code) != 0) continue;
+      ObjectList* first = ln;
+      for (int k = 0; row.nets[k] != nullptr; ++k)
+        if ((row.fwd[k] & code) == 0) *ln++ = row.nets[k];
+      if (ln == first) continue;
+      *ln++ = nullptr;
+      *lr++ = LiveRow{row.range, first};
+    }
+    *lr = LiveRow{nullptr, nullptr};
   }
 }
 

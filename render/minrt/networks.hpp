@@ -169,8 +169,32 @@ inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
 
 template <MathPolicy M>
 template <bool kCull>
+MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> void {
+  for (ObjectList e = net; *e != nullptr; ++e) {
+    const Object& m = **e;
+    // A box the ray can only meet behind its start records nothing; as
+    // the network's last member nothing else depends on its result.
+    if (kCull && (m.ahead & dv.code) == 0 && e[1] == nullptr) break;
+    const int t0 = solver_fast2<true>(m, dv);
+    if (t0 != 0)
+      record_hit(net, m, t0, dv.v, startp_fast_);
+    else if (!m.inverted)
+      break;
+  }
+}
+
+template <MathPolicy M>
+template <bool kCull>
 inline auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
   tmin_ = R(1000000000.0);
+  if (kCull && dv.octant >= 0) {
+    // The rows and networks the masks leave for this octant, in order.
+    for (const LiveRow* lr = live_rows_ + dv.octant * (n_or_rows_ + 1); lr->nets != nullptr; ++lr) {
+      if (lr->range != nullptr && !(solver_fast2(*lr->range, dv) != 0 && solver_dist_ < tmin_)) continue;
+      for (const ObjectList* a = lr->nets; *a != nullptr; ++a) trace_network<true>(*a, dv);
+    }
+    return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
+  }
   const uint32_t code = dv.code;
   for (int r = 0; r < n_or_rows_; ++r) {
     const OrRow& row = or_rows_[r];
@@ -179,18 +203,7 @@ inline auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
       continue;
     for (int k = 0; row.nets[k] != nullptr; ++k) {
       if (kCull && (row.fwd[k] & code) != 0) continue;
-      const ObjectList net = row.nets[k];
-      for (ObjectList e = net; *e != nullptr; ++e) {
-        const Object& m = **e;
-        // A box the ray can only meet behind its start records nothing; as
-        // the network's last member nothing else depends on its result.
-        if (kCull && (m.ahead & code) == 0 && e[1] == nullptr) break;
-        const int t0 = solver_fast2<true>(m, dv);
-        if (t0 != 0)
-          record_hit(net, m, t0, dv.v, startp_fast_);
-        else if (!m.inverted)
-          break;
-      }
+      trace_network<kCull>(row.nets[k], dv);
     }
   }
   return R(-0.1) < tmin_ && tmin_ < R(100000000.0);

@@ -22,6 +22,11 @@ inline auto Tracer<M>::init(const Scene<R>& scene, int width, int height, Arena&
 
   const int stride = consts_total(scene);
   R* consts = arena.alloc_zeroed<R>(size_t{kDirvecCount} * stride);
+  const int or_entries = or_entries_total(scene);
+  live_nets_stride_ = or_entries + n_or_rows_;
+  live_rows_ = arena.alloc_zeroed<LiveRow>(8 * static_cast<size_t>(n_or_rows_ + 1));
+  live_nets_ = arena.alloc_zeroed<ObjectList>(8 * static_cast<size_t>(live_nets_stride_));
+  if (live_rows_ == nullptr || live_nets_ == nullptr) return false;
   // Zeroed like the original's fresh arrays, whose stale slots are read.
   Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<size_t>(width));
   row_ = arena.alloc_zeroed<uint8_t>(3 * static_cast<size_t>(width));

@@ -66,12 +66,21 @@ class Tracer : private TracerState<M> {
 
   // Arena bytes needed to render `scene` at image width `width`.
   static size_t arena_bytes(const Scene<R>& scene, int width) {
-    return Arena::footprint<R>(size_t{kDirvecCount} * consts_total(scene)) + pixel_line_bytes(width);
+    return Arena::footprint<R>(size_t{kDirvecCount} * consts_total(scene)) +
+           live_list_bytes(scene.or_count, or_entries_total(scene)) + pixel_line_bytes(width);
   }
 
   // Arena bytes that suffice for any valid scene at this width.
   static constexpr size_t max_arena_bytes(int width) {
-    return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * 6) + pixel_line_bytes(width);
+    return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * 6) +
+           live_list_bytes(limits::kMaxOrNetworks, limits::kMaxOrNetworks * limits::kMaxOrNetworkLength) +
+           pixel_line_bytes(width);
+  }
+
+  // The per-octant lists of live rows and networks (setup_forward_culling).
+  static constexpr size_t live_list_bytes(int rows, int nets) {
+    return Arena::footprint<typename S::LiveRow>(8 * static_cast<size_t>(rows + 1)) +
+           Arena::footprint<typename S::ObjectList>(8 * static_cast<size_t>(nets + rows));
   }
 
   // The three rows of per-pixel state the diffuse pass works on, and the
@@ -120,6 +129,10 @@ class Tracer : private TracerState<M> {
   using S::net_objects_;
   using S::or_rows_;
   using S::n_or_rows_;
+  using S::live_rows_;
+  using S::live_nets_;
+  using S::live_nets_stride_;
+  using typename S::LiveRow;
   using S::dirvecs_;
   using S::light_dirvec_;
   using S::reflections_;
@@ -145,6 +158,13 @@ class Tracer : private TracerState<M> {
 
   static int consts_count(int32_t form) {
     return form == kFormBox ? 6 : form == kFormPlane ? 4 : 6;
+  }
+  // AND networks listed in the OR rows, all rows together.
+  static int or_entries_total(const Scene<R>& scene) {
+    int n = 0;
+    for (int r = 0; r < scene.or_count; ++r)
+      for (int k = 1; scene.or_nets[r][k] != -1; ++k) ++n;
+    return n;
   }
   static int consts_total(const Scene<R>& scene) {
     int n = 0;
@@ -259,7 +279,9 @@ class Tracer : private TracerState<M> {
 
   // Masks for forward culling from the point given to setup_startp: per
   // network in each OR row, and for each row the bits all its networks
-  // share (any of them culls the whole row).
+  // share (any of them culls the whole row). Then, for each octant of
+  // directions, the rows and networks those masks leave: a ray with no zero
+  // component walks that list instead of testing every mask.
   void setup_forward_culling();
 
   // Forward culling. A ray from the start point along v reaches points q
@@ -302,6 +324,11 @@ class Tracer : private TracerState<M> {
   MINRT_INLINE void record_hit(ObjectList and_net, const Object& m, int t0, const R* v,
                                const R* start);
   bool judge_intersection(const R* dir);
+
+  // One AND network's members along dv from the start point (kCull: the
+  // box masks of setup_startp<true> are valid).
+  template <bool kCull>
+  MINRT_INLINE void trace_network(ObjectList net, const DirVec& dv);
 
   // kCull: skip the networks forward culling rules out (the masks must be
   // set up for the current start point).

@@ -29,6 +29,7 @@ struct TracerState {
     R v[3];
     R* c;
     uint32_t code;  // direction_code(v)
+    int32_t octant;  // bit k: v_k < 0; -1 when a component is 0
   };
   // Fields the intersection loops touch come first, to share cache lines.
   struct Object {
@@ -111,6 +112,17 @@ struct TracerState {
   const Object* net_objects_[limits::kMaxAndNetworkDefinitions][limits::kMaxAndNetworkLength + 1];
   OrRow or_rows_[limits::kMaxOrNetworks];
   int n_or_rows_ = 0;
+
+  // For the current diffuse start point and each octant of directions, the
+  // OR rows with the AND networks forward culling leaves, in order (see
+  // setup_forward_culling); arena tables, live_stride_ entries an octant.
+  struct LiveRow {
+    const Object* range;
+    const ObjectList* nets;  // null-terminated; null for the end of the list
+  };
+  LiveRow* live_rows_ = nullptr;
+  ObjectList* live_nets_ = nullptr;
+  int live_nets_stride_ = 0;
 
   DirVec dirvecs_[kDirvecGroups][kDirvecsPerGroup];
   DirVec light_dirvec_{};
