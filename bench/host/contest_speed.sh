@@ -114,7 +114,7 @@ if ((callgrind)); then
       awk '/Collected/ {print $NF}')
     printf '  %-12s %15s\n' "${names[$i]}" "${ir[$i]}"
   done
-  for i in "${!ir[@]}"; do
-    ((i >= 2)) && printf '  %s / minrt-1: %s\n' "${names[$i]}" "$(ratio "${ir[$i]}" "${ir[0]}")"
+  for i in "${!names[@]}"; do
+    if ((i >= 2)); then printf '  %s / minrt-1: %s\n' "${names[$i]}" "$(ratio "${ir[$i]}" "${ir[0]}")"; fi
   done
 fi
