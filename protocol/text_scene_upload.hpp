@@ -1,13 +1,15 @@
-// How a scene in one of the keyword-text formats (CS418, Jaworski) travels
-// over the course and framed protocols, shared by host and board.
+// How a scene in one of the text formats (CS418, Jaworski, miniRT, EASTRAY)
+// travels over the course and framed protocols, shared by host and board.
 // Freestanding: <stdint.h>/<stddef.h> and the core's base only.
 //
 //   word 0  kTextSceneMarker, a NaN bit pattern
-//   word 1  the format tag (MINRT_SCENE_FORMAT_CS418 or _JAWORSKI)
+//   word 1  the format tag (MINRT_SCENE_FORMAT_CS418, _JAWORSKI, _MINIRT
+//           or _EASTRAY)
 //   word 2  N, the number of bytes that follow
 //   N bytes exactly what the raw protocol sends before its 0x04: for CS418
-//           the texture preamble when the scene names textures
-//           (include/minrt/serial_protocol.h), then the scene text
+//           and miniRT the texture preamble when the scene names textures
+//           (include/minrt/serial_protocol.h), then the scene text (EASTRAY:
+//           as host-send's preprocessor expanded it)
 //
 // Course: after 0xaa, in place of the SLD words; words in the chosen byte
 // order, the N bytes zero-padded to a multiple of 4 so that everything after
@@ -35,7 +37,8 @@ inline constexpr uint32_t kTextSceneMarker = 0x7FF45854;  // exponent all ones, 
 inline constexpr size_t kHeaderBytes = 12;
 
 inline bool is_text_format(uint32_t tag) {
-  return tag == MINRT_SCENE_FORMAT_CS418 || tag == MINRT_SCENE_FORMAT_JAWORSKI || tag == MINRT_SCENE_FORMAT_EASTRAY;
+  return tag == MINRT_SCENE_FORMAT_CS418 || tag == MINRT_SCENE_FORMAT_JAWORSKI || tag == MINRT_SCENE_FORMAT_MINIRT ||
+         tag == MINRT_SCENE_FORMAT_EASTRAY;
 }
 
 // The scene bytes as they arrived (texture preamble and text), in memory.

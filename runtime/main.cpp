@@ -69,7 +69,7 @@ minrt::RenderStatus status_of(minrt::fw::TextSceneResult r) {
   return minrt::RenderStatus::kSceneError;
 }
 
-// Course protocol, a CS418 or Jaworski scene after its marker word: the
+// Course protocol, a CS418, Jaworski, miniRT or EASTRAY scene after its marker word: the
 // bytes into the arena, the format's image (PNG, BMP) back as in raw.
 minrt::RenderStatus serve_course_text(minrt::ByteSource in, minrt::send::course::Endian endian, minrt::ByteSink out,
                                       const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
@@ -78,7 +78,8 @@ minrt::RenderStatus serve_course_text(minrt::ByteSource in, minrt::send::course:
   bool too_large = false;
   if (!minrt::send::text::read_course(in, endian, arena, scene, too_large, error))
     return too_large ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
-  return status_of(minrt::fw::stream_text_scene(scene, out, arena, options.all_features, error));
+  return status_of(minrt::fw::stream_text_scene(scene, out, arena, options.render.width, options.render.height,
+                                                options.all_features, error));
 }
 
 // Course protocol (protocol/protocol_course_board.hpp). Stage 1, the boot
@@ -110,7 +111,7 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
   const bool ok = serve_scene(
       in, out,
       [&](minrt::ByteSource words) {
-        // The first word tells a CS418 or Jaworski upload (text_scene_upload.hpp)
+        // The first word tells a text-format upload (text_scene_upload.hpp)
         // from SLD words; for SLD it is handed back to the reader.
         uint8_t first[4];
         int got = 0;
@@ -135,7 +136,7 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
 // top end) and moved to the very top once complete, so the scene text, and
 // a CS418 scene's textures read in place, take no more than their size. An
 // SLD scene renders as P6 into the RowFramer over a 3*W*H-byte row store; a
-// CS418 or Jaworski upload (text_scene_upload.hpp) sends RGBA rows over a
+// text-format upload (text_scene_upload.hpp) sends RGBA rows over a
 // 4*W*H store taken once the scene gives the size. Without room for the
 // store the rows are sent once, but Q cannot be answered.
 constexpr size_t kFramedPayload = 4096;
@@ -192,7 +193,8 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
           rows.set_pixel_bytes(4);
           StoreOnBegin sink{rows, arena};
           status = status_of(
-              minrt::fw::render_text_scene_rows(text, minrt::rgba_row_sink_of(sink), arena, options.all_features, error));
+              minrt::fw::render_text_scene_rows(text, minrt::rgba_row_sink_of(sink), arena, options.render.width,
+                                                options.render.height, options.all_features, error));
           return status == minrt::RenderStatus::kOk;
         }
         const minrt::RenderOptions& render = options.render;

@@ -36,6 +36,12 @@ bool is_minirt_start(const char* first_word) {
 
 MinirtResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
                            const send::textures::Table* textures, Diagnostic& error) {
+  PngStoredWriter png(out);
+  return render_minirt_rows(in, rgba_row_sink_of(png), arena, width, height, all_features, textures, error);
+}
+
+MinirtResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
+                                bool all_features, const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   model::SceneBuilder<R> builder(arena);
   minirt::Reader<Math> reader(
@@ -66,8 +72,7 @@ MinirtResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width,
         " bytes)");
     return MinirtResult::kOutOfMemory;
   }
-  PngStoredWriter png(out);
-  renderer.render(rgba_row_sink_of(png), row);
+  renderer.render(rows, row);
   return MinirtResult::kOk;
 }
 

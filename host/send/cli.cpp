@@ -355,8 +355,6 @@ int run(const Options& options) {
   // as minrt), written by default to the scene's stem with .png.
   const bool minirt = format == minrt::host::SceneFormat::kMinirt;
   if (minirt) {
-    if (o.protocol != Protocol::kRaw)
-      return fail(kExitUsage, "miniRT scenes go over --protocol raw; course and framed carry SLD only, for now");
     if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to miniRT scenes");
     if (!minrt::host::has_rt_extension(o.scene))
       return fail(kExitFirmware, "scene rejected before sending: " + o.scene + ": a miniRT scene file's name must end in .rt");
@@ -375,7 +373,7 @@ int run(const Options& options) {
     const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
     if (!build_minirt_texture_preamble(scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
-    if (scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   // An EASTRAY scene: preprocessed and checked here, sent expanded; the
@@ -503,29 +501,31 @@ int run(const Options& options) {
   TransferResult r;
   CourseHostOptions course_options;
   course_options.big_endian = o.big_endian;
-  if (jaworski || cs418 || eastray) {
+  if (jaworski || png_reply) {
     // Course and framed carry these formats as text behind a header
-    // (protocol/text_scene_upload.hpp); the image is the format's own.
-    const std::string bytes = cs418 ? texture_preamble + scene : scene;
-    const std::uint32_t tag = cs418 ? MINRT_SCENE_FORMAT_CS418 : eastray ? MINRT_SCENE_FORMAT_EASTRAY : MINRT_SCENE_FORMAT_JAWORSKI;
+    // (protocol/text_scene_upload.hpp), the bytes raw would send; the image
+    // is the format's own.
+    const std::string bytes = texture_preamble + scene;  // no preamble: Jaworski, EASTRAY, untextured
+    const std::uint32_t tag = cs418      ? MINRT_SCENE_FORMAT_CS418
+                              : minirt   ? MINRT_SCENE_FORMAT_MINIRT
+                              : eastray  ? MINRT_SCENE_FORMAT_EASTRAY
+                                         : MINRT_SCENE_FORMAT_JAWORSKI;
     if (o.protocol == Protocol::kFramed) {
       r = run_framed_text(ex, tag, bytes, png_width, png_height);
     } else if (o.protocol == Protocol::kCourse) {
       const std::string words = text_scene_course_words(tag, bytes, o.big_endian);
-      if (cs418 || eastray) {
+      if (png_reply) {
         PngReceiver rx(png_width, png_height);
         r = run_course_words(ex, words, program, course_options, rx);
       } else {
         BmpReceiver rx;
         r = run_course_words(ex, words, program, course_options, rx);
       }
-    } else if (cs418 || eastray) {
+    } else if (png_reply) {
       r = run_raw_png(ex, bytes, png_width, png_height);
     } else {
       r = run_raw_bmp(ex, bytes);
     }
-  } else if (png_reply) {  // miniRT: raw only, checked above
-    r = run_raw_png(ex, texture_preamble + scene, png_width, png_height);
   } else if (o.protocol == Protocol::kRaw) {
     r = run_raw(ex, scene, o.spec);
   } else if (o.protocol == Protocol::kCourse) {

@@ -77,8 +77,8 @@
 
 /* The scene formats, by the tag a protocol uses to say which one it carries.
  * Raw tells them apart by content; course and framed carry SLD as they
- * always did and CS418 and Jaworski scenes behind a header with their tag
- * (protocol/text_scene_upload.hpp). Values are fixed: boards and hosts of
+ * always did and CS418, Jaworski, miniRT and EASTRAY scenes behind a header
+ * with their tag (protocol/text_scene_upload.hpp). Values are fixed: boards and hosts of
  * different versions must agree. */
 #define MINRT_SCENE_FORMAT_SLD 0
 #define MINRT_SCENE_FORMAT_CS418 1

@@ -1,0 +1,175 @@
+// miniRT and EASTRAY scenes over the course and framed protocols
+// (protocol/text_scene_upload.hpp, tags MINRT_SCENE_FORMAT_MINIRT and
+// _EASTRAY): end to end against firmware-sim running the firmware, the PNG
+// byte for byte the raw protocol's and its pixels the host float model's;
+// broken files get their located error, a non-zero status and no file.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include <minrt/serial_protocol.h>
+
+#include "png_io.hpp"
+#include "protocol/text_scene_upload.hpp"
+#include "protocol_course_host.hpp"
+#include "test_support.hpp"
+
+using hs_test::run;
+using hs_test::RunResult;
+
+namespace {
+
+// Small images keep the run short: miniRT files have no size of their own.
+const std::vector<std::string> kMinirtSize = {"--size", "48x36"};
+
+RunResult send_sim(const std::string& scene, const std::string& out, const std::vector<std::string>& extra) {
+  std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  argv.push_back(scene);
+  argv.push_back("-o");
+  argv.push_back(out);
+  return run(argv);
+}
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+const std::vector<std::vector<std::string>>& text_protocols() {
+  static const std::vector<std::vector<std::string>> p = {
+      {"--protocol", "course"}, {"--protocol", "course", "--endian", "big"}, {"--protocol", "framed"}};
+  return p;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
+  return s;
+}
+
+// Every protocol gives the raw protocol's PNG, and its pixels are minrt's
+// `--precision float --shims portable` image.
+void check_scene(hs_test::TempDir& dir, const std::string& scene, const std::vector<std::string>& size) {
+  const std::string host = dir.file("host.png");
+  const RunResult m =
+      run(with({HS_MINRT, "-q", "--precision", "float", "--shims", "portable", scene, "-o", host}, size));
+  INFO(scene << "\n" << m.err);
+  REQUIRE(m.status == 0);
+  const std::string raw = dir.file("raw.png");
+  const RunResult r = send_sim(scene, raw, size);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  minrt::host::RgbaImage want;
+  std::string why;
+  REQUIRE(minrt::host::read_png(host, want, why));
+  for (const auto& protocol : text_protocols()) {
+    const std::string got = dir.file("got.png");
+    const RunResult p = send_sim(scene, got, with(protocol, size));
+    INFO(joined(protocol) << "\n" << p.err);
+    REQUIRE(p.status == 0);
+    CHECK(hs_test::read_file(got) == hs_test::read_file(raw));
+    minrt::host::RgbaImage img;
+    REQUIRE(minrt::host::read_png(got, img, why));
+    CHECK(img.width == want.width);
+    CHECK(img.height == want.height);
+    CHECK(img.rgba == want.rgba);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("text-scene upload: miniRT and EASTRAY tags are accepted, in both byte orders of the course words",
+          "[course][framed]") {
+  using namespace minrt::send;
+  CHECK(text::is_text_format(MINRT_SCENE_FORMAT_MINIRT));
+  CHECK(text::is_text_format(MINRT_SCENE_FORMAT_EASTRAY));
+  CHECK_FALSE(text::is_text_format(MINRT_SCENE_FORMAT_SLD));
+  CHECK_FALSE(text::is_text_format(MINRT_SCENE_FORMAT_EASTRAY + 1));
+  for (const bool big : {false, true}) {
+    const std::string words = text_scene_course_words(MINRT_SCENE_FORMAT_EASTRAY, "/* EASTRAY */", big);
+    std::vector<unsigned char> mem(256);
+    minrt::Arena arena(mem.data(), mem.size());
+    minrt::MemorySource src{reinterpret_cast<const uint8_t*>(words.data()) + 4, words.size() - 4};
+    text::TextScene scene;
+    bool too_large = false;
+    minrt::Diagnostic d;
+    REQUIRE(text::read_course(src.source(), big ? course::Endian::kBig : course::Endian::kLittle, arena, scene,
+                              too_large, d));
+    CHECK(scene.format == MINRT_SCENE_FORMAT_EASTRAY);
+    CHECK(std::string(reinterpret_cast<const char*>(scene.bytes), scene.size) == "/* EASTRAY */");
+  }
+}
+
+TEST_CASE("miniRT scenes over course and framed: the raw protocol's PNG, pixels the host float model's",
+          "[e2e][firmware][minirt]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string valid = hs_test::shared_dir() + "/formats/minirt/valid/";
+  // earth: a texture travels ahead of the text (the preamble, read in place).
+  for (const char* name : {"mandatory_basic", "bonus_cone", "earth"})
+    check_scene(dir, valid + name + ".rt", kMinirtSize);
+}
+
+TEST_CASE("EASTRAY scenes over course and framed: the raw protocol's PNG, pixels the host float model's",
+          "[e2e][firmware][eastray]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string ray = hs_test::shared_dir() + "/formats/eastray/";
+  // preproc_define_include: host-send expands #include and #define first.
+  for (const char* name : {"basic_sphere_floor_elight", "preproc_define_include", "kinds_20_polygon_mesh"})
+    check_scene(dir, ray + name + ".ray", {});
+}
+
+TEST_CASE("broken miniRT and EASTRAY files over course and framed: located error, status 3, no file",
+          "[e2e][firmware][bad]") {
+  HS_NEEDS_FIRMWARE();
+  hs_test::TempDir dir;
+  const std::string source = HS_SOURCE_DIR;
+  // miniRT: minrt says "Error" then "FILE:LINE: MESSAGE"; the board, which
+  // reads these, says "LINE:COL: MESSAGE".
+  for (const char* name : {"camera_zero_vector", "colour_256", "brightness_two"}) {
+    const std::string scene = source + "/test/minirt/bad/" + name + ".rt";
+    const RunResult m = run(with({HS_MINRT, scene, "-o", dir.file("m.png")}, kMinirtSize));
+    REQUIRE(m.status != 0);
+    const std::size_t nl = m.err.find('\n');
+    REQUIRE(nl != std::string::npos);
+    const std::string second = m.err.substr(nl + 1, m.err.find('\n', nl + 1) - nl - 1);
+    REQUIRE(second.rfind(scene + ":", 0) == 0);
+    const std::string rest = second.substr(scene.size() + 1);  // LINE: MESSAGE
+    const std::string line = rest.substr(0, rest.find(':'));
+    const std::string message = rest.substr(rest.find(": ") + 2);
+    for (const auto& protocol : {text_protocols()[0], text_protocols()[2]}) {
+      const std::string out = dir.file("out.png");
+      const RunResult r = send_sim(scene, out, with(protocol, kMinirtSize));
+      INFO(scene << " " << joined(protocol) << "\n" << r.err << "minrt: " << second);
+      CHECK(r.status == 3);
+      const std::string prefix = "the board reported an error: " + line + ":";
+      const std::size_t at = r.err.find(prefix);
+      REQUIRE(at != std::string::npos);
+      const std::string said = r.err.substr(at + prefix.size(), r.err.find('\n', at) - at - prefix.size());
+      CHECK(said.size() > message.size());
+      CHECK(said.substr(said.size() - message.size()) == message);  // after the column
+      CHECK_FALSE(hs_test::file_exists(out));
+    }
+  }
+  // EASTRAY: host-send checks the expanded scene before sending, with
+  // minrt's own "FILE:LINE:COL: error: MESSAGE".
+  for (const char* name : {"bad-number", "undefined-vertex", "unterminated-block", "range-kind"}) {
+    const std::string scene = source + "/test/general/eastray_bad/" + name + ".ray";
+    const RunResult m = run({HS_MINRT, "--precision", "float", "--shims", "portable", scene, "-o", dir.file("m.png")});
+    REQUIRE(m.status != 0);
+    std::string line = m.err.substr(0, m.err.find('\n'));
+    if (line.rfind("minrt: ", 0) == 0) line = line.substr(7);
+    REQUIRE(line.rfind(scene + ":", 0) == 0);
+    for (const auto& protocol : {text_protocols()[0], text_protocols()[2]}) {
+      const std::string out = dir.file("out.png");
+      const RunResult r = send_sim(scene, out, protocol);
+      INFO(scene << " " << joined(protocol) << "\n" << r.err << "minrt: " << line);
+      CHECK(r.status == 3);
+      CHECK(r.err.find("scene rejected before sending: " + line + "\n") != std::string::npos);
+      CHECK_FALSE(hs_test::file_exists(out));
+    }
+  }
+}
