@@ -1,6 +1,7 @@
 // The board's path for EASTRAY scenes: host-send preprocesses the scene
 // (#include needs files) and sends the expanded text behind a `/* EASTRAY */`
-// marker; the board reads it whole into the arena, renders it in float with
+// marker; the board reads it whole into the arena (over course and framed it
+// is already there: render_eastray_rows), renders it in float with
 // the portable shims like the host's `--precision float --shims portable`,
 // and streams the image back as a stored-deflate PNG.
 #pragma once

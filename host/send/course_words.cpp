@@ -3,7 +3,7 @@
 // rules, checks and messages) and records every value the reader consumes,
 // as an int32 or an IEEE single, in the order it consumed them. The board's
 // reader asks for the same values in the same order (course_word_values.hpp).
-// CS418 and Jaworski scenes travel as text behind a header word the SLD
+// CS418, Jaworski, miniRT and EASTRAY scenes travel as text behind a header word the SLD
 // reader would refuse (protocol/text_scene_upload.hpp).
 #include <bit>
 #include <cstdint>

@@ -83,7 +83,7 @@ std::string framed_rgba_image(FramedImage kind, int width, int height, const std
 namespace {
 
 // The conversation for every kind of image: PPM rows (RGB, the size known
-// from --size) or a CS418/Jaworski scene's RGBA rows (the size from H when
+// from --size) or a text-format scene's RGBA rows (the size from H when
 // `spec` gives none).
 TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, FramedImage kind, const ImageSpec& spec,
                                 const FramedHostOptions& options) {
