@@ -11,8 +11,12 @@
 #include <minrt/serial_protocol.h>
 
 #include "png_io.hpp"
+#include "png_receiver.hpp"
 #include "protocol/text_scene_upload.hpp"
 #include "protocol_course_host.hpp"
+#include "protocol_framed_host.hpp"
+#include "port.hpp"
+#include "sim_launcher.hpp"
 #include "test_support.hpp"
 
 using hs_test::run;
@@ -170,6 +174,50 @@ TEST_CASE("broken miniRT and EASTRAY files over course and framed: located error
       CHECK(r.status == 3);
       CHECK(r.err.find("scene rejected before sending: " + line + "\n") != std::string::npos);
       CHECK_FALSE(hs_test::file_exists(out));
+    }
+  }
+}
+
+TEST_CASE("the board's own EASTRAY and miniRT errors over course and framed: one located error, no image",
+          "[e2e][firmware][bad]") {
+  // host-send checks EASTRAY scenes before sending, so here the uploads go
+  // straight to the firmware: what a host without that check would send.
+  HS_NEEDS_FIRMWARE();
+  using namespace minrt::send;
+  struct Case {
+    std::uint32_t tag;
+    std::string text;
+    std::string error;  // the board's message: LINE:COL: MESSAGE
+  };
+  // The bad field of the miniRT camera line starts at column 9.
+  const std::vector<Case> cases = {
+      {MINRT_SCENE_FORMAT_EASTRAY, "/* EASTRAY */\ndisplay 8 8 0 0 7 7 1 1 1 ;\nbogus 1 ;\n", "3:1: unknown statement 'bogus'"},
+      {MINRT_SCENE_FORMAT_MINIRT, "A 0.2 255,255,255\nC 0,0,0 0,0,0 70\n", "2:9: camera orientation \"0,0,0\" is the zero vector: it has no direction"}};
+  for (const Case& c : cases) {
+    for (const bool framed : {false, true}) {
+      SimLauncher board;
+      SimConfig cfg;
+      cfg.simulator = HS_FIRMWARE_SIM;
+      cfg.firmware = HS_FIRMWARE_ELF;
+      cfg.firmware_args = {"--size", "8x8", framed ? "--protocol=framed" : "--protocol=course"};
+      std::string err;
+      REQUIRE(board.start(cfg, err));
+      SerialPort port;
+      port.open(board.pty_path(), PortSettings{});
+      Exchange ex{port, {20000, 20000}, nullptr};
+      TransferResult r;
+      if (framed) {
+        r = run_framed_text(ex, c.tag, c.text, 8, 8);
+      } else {
+        PngReceiver rx(8, 8);
+        r = run_course_words(ex, text_scene_course_words(c.tag, c.text, false), "", CourseHostOptions{}, rx);
+      }
+      port.close();
+      board.stop(2000);
+      INFO(c.text << (framed ? "framed" : "course") << ": " << r.message);
+      CHECK(r.status == TransferResult::Status::kFirmwareError);
+      CHECK(r.message == c.error);
+      CHECK(r.image.empty());
     }
   }
 }
