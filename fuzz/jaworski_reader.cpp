@@ -29,7 +29,8 @@ void read_one(const uint8_t* data, size_t size) {
   }
   if (static_cast<int64_t>(scene.width) * scene.height > 256 || scene.ray_depth > 8) return;
   std::vector<uint8_t> row(static_cast<size_t>(scene.width) * 4);
-  const minrt::jaworski::Tracer<M> tracer(scene);
+  const minrt::jaworski::Tracer<M> tracer(scene, arena);
+  if (!tracer.ready()) std::abort();  // 4 MB holds the tables of 2048 items and the hierarchy
   for (int y = 0; y < scene.height; ++y) {
     tracer.render_row(y, row.data());
     for (int x = 0; x < scene.width; ++x)

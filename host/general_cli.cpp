@@ -99,7 +99,11 @@ int run_cs418_cli(GeneralCli& cli) {
   WarningSink warnings;
   if (!cli.quiet) warnings = WarningSink{&print_warning, &wctx};
   GeneralResult result;
-  std::string error;
+  std::string error, why;
+  LiveWindow window;
+  if (cli.show && !window.open("minrt: " + shown, why))
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  cli.options.window = &window;
   if (!render_cs418(cli.scene_text, shown, base_dir, cli.options, result, error, warnings)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;
@@ -114,7 +118,6 @@ int run_cs418_cli(GeneralCli& cli) {
   if (out_path.empty()) out_path = result.output_name;
 
   AtomicOutput output;
-  std::string why;
   if (!output.open(out_path, cli.write_through, why)) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
@@ -135,8 +138,7 @@ int run_cs418_cli(GeneralCli& cli) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
   }
-  if (cli.show && !show_image(result.image, "minrt: " + shown, why))
-    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
   return 0;
 }
 

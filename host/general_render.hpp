@@ -13,12 +13,15 @@
 
 namespace minrt::host {
 
+class LiveWindow;
+
 struct GeneralOptions {
   Variant variant;
   uint32_t seed = 1;
   int threads = 0;          // 0: every core
   bool force_full = false;  // take the path with every feature compiled in
   bool full_tree = false;   // trace every secondary ray, however small its weight
+  LiveWindow* window = nullptr;  // --show: each finished row goes there too
 };
 
 struct GeneralResult {

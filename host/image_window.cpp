@@ -1,8 +1,9 @@
 #include "image_window.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <vector>
+#include <future>
 
 #if MINRT_HAVE_SDL2
 #include <SDL.h>
@@ -10,18 +11,96 @@
 
 namespace minrt::host {
 
+namespace {
+
+constexpr int kEmpty = 0, kWriting = 1, kReady = 2;
+
+}  // namespace
+
+LiveWindow::~LiveWindow() { abandon(); }
+
+void LiveWindow::begin(int width, int height) {
+  if (!is_open() || width <= 0 || height <= 0) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (began_) return;
+    height_ = height;
+    pixels_.assign(static_cast<size_t>(width) * height * 3, 0);
+    rows_.reset(new std::atomic<uint8_t>[static_cast<size_t>(height)]);
+    for (int y = 0; y < height; ++y) rows_[y].store(kEmpty, std::memory_order_relaxed);
+    began_ = true;
+    width_.store(width, std::memory_order_release);  // rows may come from now on
+  }
+  changed_.notify_all();
+}
+
+// The row's pixels if this caller is the first to give row y, else null.
+uint8_t* LiveWindow::claim(int y) {
+  const int w = width_.load(std::memory_order_acquire);
+  if (w == 0 || y < 0 || y >= height_) return nullptr;
+  uint8_t expected = kEmpty;
+  if (!rows_[y].compare_exchange_strong(expected, kWriting, std::memory_order_acquire)) return nullptr;
+  return pixels_.data() + static_cast<size_t>(y) * w * 3;
+}
+
+void LiveWindow::publish(int y) {
+  rows_[y].store(kReady, std::memory_order_release);
+  throttle();
+}
+
+void LiveWindow::throttle() const {
+  if (delay_ms_ > 0) std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms_));
+}
+
+void LiveWindow::row_rgba(int y, const uint8_t* rgba) {
+  uint8_t* out = claim(y);
+  if (out == nullptr) return;
+  for (int x = 0, w = width(); x < w; ++x)
+    for (int c = 0; c < 3; ++c)
+      out[3 * x + c] = static_cast<uint8_t>((rgba[4 * x + c] * rgba[4 * x + 3] + 127) / 255);
+  publish(y);
+}
+
+void LiveWindow::row_rgb(int y, const uint8_t* rgb) {
+  uint8_t* out = claim(y);
+  if (out == nullptr) return;
+  for (int i = 0, n = 3 * width(); i < n; ++i) out[i] = rgb[i];
+  publish(y);
+}
+
+void LiveWindow::fill(const RgbaImage& image) {
+  if (image.width != width() || image.height != height_) return;
+  const int saved = delay_ms_;
+  delay_ms_ = 0;
+  for (int y = 0; y < image.height; ++y) row_rgba(y, image.rgba.data() + static_cast<size_t>(y) * image.width * 4);
+  delay_ms_ = saved;
+}
+
+void LiveWindow::abandon() {
+  if (!is_open()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    abandoned_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+bool LiveWindow::finish_and_wait(std::string& why) {
+  if (!is_open()) return true;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    finished_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+  if (!snapshot_ok_) why = snapshot_error_;
+  return snapshot_ok_;
+}
+
 #if MINRT_HAVE_SDL2
 
 namespace {
-
-// What the window shows: the image composited over black, as RGB.
-std::vector<uint8_t> over_black(const RgbaImage& image) {
-  std::vector<uint8_t> rgb(static_cast<size_t>(image.width) * image.height * 3);
-  for (size_t i = 0, n = static_cast<size_t>(image.width) * image.height; i < n; ++i)
-    for (int c = 0; c < 3; ++c)
-      rgb[3 * i + c] = static_cast<uint8_t>((image.rgba[4 * i + c] * image.rgba[4 * i + 3] + 127) / 255);
-  return rgb;
-}
 
 bool save_snapshot(SDL_Renderer* renderer, int w, int h, const char* path) {
   std::vector<uint8_t> rgb(static_cast<size_t>(w) * h * 3);
@@ -36,80 +115,180 @@ bool save_snapshot(SDL_Renderer* renderer, int w, int h, const char* path) {
 
 }  // namespace
 
-bool show_image(const RgbaImage& image, const std::string& title, std::string& why) {
+bool LiveWindow::open(const std::string& title, std::string& why) {
+  if (is_open()) return true;
   if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
       std::getenv("SDL_VIDEODRIVER") == nullptr) {
     why = "no display (DISPLAY is not set)";
     return false;
   }
-  if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-    why = std::string("no display (") + SDL_GetError() + ")";
+  if (const char* d = std::getenv("MINRT_SHOW_ROW_DELAY_MS")) delay_ms_ = std::atoi(d);
+  auto started = std::make_shared<std::promise<std::string>>();
+  std::future<std::string> result = started->get_future();
+  thread_ = std::thread(&LiveWindow::run, this, title, started);
+  why = result.get();
+  if (!why.empty()) {
+    thread_.join();
     return false;
+  }
+  return true;
+}
+
+void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string>> started) {
+  // The render's Ctrl-C must stay the render's (SDL would turn it into a
+  // quit event for a window nobody may be looking at).
+  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+  if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+    started->set_value(std::string("no display (") + SDL_GetError() + ")");
+    return;
   }
   // SDL falls back to drivers that show nothing (offscreen, dummy): a
   // window there would wait for a key nobody can press.
   const char* driver = SDL_GetCurrentVideoDriver();
   const std::string name = driver != nullptr ? driver : "";
   if (name != "x11" && name != "wayland" && name != "kmsdrm" && name != "cocoa" && name != "windows") {
-    why = "no display (SDL video driver '" + name + "'; set DISPLAY or run under a desktop)";
     SDL_Quit();
-    return false;
+    started->set_value("no display (SDL video driver '" + name + "'; set DISPLAY or run under a desktop)");
+    return;
   }
-  SDL_Window* window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, image.width,
-                                        image.height, SDL_WINDOW_RESIZABLE);
+  started->set_value("");
+
+  // The window appears when the size is known.
+  int w = 0, h = 0;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return began_ || abandoned_ || finished_; });
+    if (!began_) {
+      lock.unlock();
+      SDL_Quit();
+      return;
+    }
+    w = width_.load(std::memory_order_relaxed);
+    h = height_;
+  }
+  SDL_Window* window =
+      SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, SDL_WINDOW_RESIZABLE);
   SDL_Renderer* renderer = window != nullptr ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
-  SDL_Texture* texture = renderer != nullptr ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24,
-                                                                 SDL_TEXTUREACCESS_STATIC, image.width, image.height)
-                                             : nullptr;
+  SDL_Texture* texture =
+      renderer != nullptr ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STATIC, w, h) : nullptr;
   if (texture == nullptr) {
-    why = std::string("cannot open a window (") + SDL_GetError() + ")";
+    const std::string program = title.substr(0, title.find(':'));
+    std::fprintf(stderr, "%s: warning: not showing the image: cannot open a window (%s)\n", program.c_str(),
+                 SDL_GetError());
     if (renderer != nullptr) SDL_DestroyRenderer(renderer);
     if (window != nullptr) SDL_DestroyWindow(window);
     SDL_Quit();
-    return false;
+    return;
   }
-  const std::vector<uint8_t> rgb = over_black(image);
-  SDL_UpdateTexture(texture, nullptr, rgb.data(), image.width * 3);
-  SDL_RenderSetLogicalSize(renderer, image.width, image.height);  // keeps the aspect when resized
+  {
+    const std::vector<uint8_t> black(static_cast<size_t>(w) * h * 3, 0);
+    SDL_UpdateTexture(texture, nullptr, black.data(), w * 3);
+  }
+  SDL_RenderSetLogicalSize(renderer, w, h);  // keeps the aspect when resized
   auto draw = [&] {
     SDL_SetRenderDrawColor(renderer, 0, 0, 0, 255);
     SDL_RenderClear(renderer);
     SDL_RenderCopy(renderer, texture, nullptr, nullptr);
   };
   const char* snapshot = std::getenv("MINRT_SHOW_SNAPSHOT");
-  bool running = true;
-  bool ok = true;
-  draw();
-  if (snapshot != nullptr) {
-    ok = save_snapshot(renderer, image.width, image.height, snapshot);
-    if (!ok) why = std::string("cannot save the snapshot ") + snapshot;
-    running = false;
-  }
-  SDL_RenderPresent(renderer);
-  while (running) {
+  const char* partial = std::getenv("MINRT_SHOW_PARTIAL_SNAPSHOT");
+  std::vector<uint8_t> shown(static_cast<size_t>(h), 0);
+  int shown_rows = 0, titled_rows = -1;
+  bool complete_titled = false;
+  using Clock = std::chrono::steady_clock;
+  const auto period = std::chrono::milliseconds(1000 / kRefreshHz);
+  auto last = Clock::now() - period;
+  bool redraw = true;
+  for (;;) {
     SDL_Event e;
-    if (SDL_WaitEvent(&e) == 0) break;
-    if (e.type == SDL_QUIT) running = false;
-    else if (e.type == SDL_KEYDOWN && (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q)) running = false;
-    else if (e.type == SDL_WINDOWEVENT) {
-      draw();  // exposed, resized, restored: the image again
-      SDL_RenderPresent(renderer);
+    bool quit = false;
+    // Complete: nothing changes but what the user does.
+    const bool idle = shown_rows == h && complete_titled;
+    if ((idle ? SDL_WaitEvent(&e) : SDL_WaitEventTimeout(&e, static_cast<int>(period.count()))) != 0) {
+      do {
+        if (e.type == SDL_QUIT) quit = true;
+        else if (e.type == SDL_KEYDOWN && (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q)) quit = true;
+        else if (e.type == SDL_WINDOWEVENT) redraw = true;  // exposed, resized, restored: the image again
+      } while (SDL_PollEvent(&e) != 0);
     }
+    bool finished, abandoned;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      finished = finished_;
+      abandoned = abandoned_;
+    }
+    if (quit || abandoned) break;
+    const auto now = Clock::now();
+    if ((now - last >= period || finished) && shown_rows < h) {
+      last = now;
+      // Upload the rows that became ready, in runs of neighbours.
+      for (int y = 0; y < h;) {
+        if (shown[y] != 0 || rows_[y].load(std::memory_order_acquire) != kReady) {
+          ++y;
+          continue;
+        }
+        int end = y;
+        while (end < h && shown[end] == 0 && rows_[end].load(std::memory_order_acquire) == kReady) shown[end++] = 1;
+        SDL_Rect rect{0, y, w, end - y};
+        SDL_UpdateTexture(texture, &rect, pixels_.data() + static_cast<size_t>(y) * w * 3, w * 3);
+        shown_rows += end - y;
+        redraw = true;
+        y = end;
+      }
+      if (shown_rows != titled_rows && shown_rows < h) {
+        titled_rows = shown_rows;
+        const std::string t = title + " (" + std::to_string(shown_rows) + " of " + std::to_string(h) + " rows)";
+        SDL_SetWindowTitle(window, t.c_str());
+      }
+    }
+    const bool complete = shown_rows == h;
+    if (complete && finished && !complete_titled) {
+      complete_titled = true;
+      SDL_SetWindowTitle(window, title.c_str());
+    }
+    const bool snap = snapshot != nullptr && complete && finished;
+    if (!redraw && !snap) continue;
+    redraw = false;
+    draw();
+    if (partial != nullptr && shown_rows > 0 && !complete) {
+      if (!save_snapshot(renderer, w, h, partial)) {
+        snapshot_ok_ = false;
+        snapshot_error_ = std::string("cannot save the snapshot ") + partial;
+      }
+      partial = nullptr;
+    }
+    if (snap) {
+      if (!save_snapshot(renderer, w, h, snapshot)) {
+        snapshot_ok_ = false;
+        snapshot_error_ = std::string("cannot save the snapshot ") + snapshot;
+      }
+      break;
+    }
+    SDL_RenderPresent(renderer);
   }
   SDL_DestroyTexture(texture);
   SDL_DestroyRenderer(renderer);
   SDL_DestroyWindow(window);
   SDL_Quit();
-  return ok;
 }
 
 #else
 
-bool show_image(const RgbaImage&, const std::string&, std::string& why) {
-  why = "minrt was built without SDL2 (install libsdl2-dev and rebuild)";
+bool LiveWindow::open(const std::string&, std::string& why) {
+  why = "built without SDL2 (install libsdl2-dev and rebuild)";
   return false;
 }
 
+void LiveWindow::run(std::string, std::shared_ptr<std::promise<std::string>>) {}
+
 #endif
+
+bool show_image(const RgbaImage& image, const std::string& title, std::string& why) {
+  LiveWindow window;
+  if (!window.open(title, why)) return false;
+  window.begin(image.width, image.height);
+  window.fill(image);
+  return window.finish_and_wait(why);
+}
 
 }  // namespace minrt::host

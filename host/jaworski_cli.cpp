@@ -29,16 +29,16 @@ void append(void* ctx, const uint8_t* p, size_t n) {
   static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n);
 }
 
-// Parses and renders into `bmp` (and, when `image` is given, a top-first
-// copy for the window); false with the message line in `error`.
+// Parses and renders into `bmp`, handing each row to `window` (when open)
+// as it is finished; false with the message line in `error`.
 template <class M>
-bool render(const std::string& text, const std::string& name, int threads, std::string& bmp, RgbaImage* image,
+bool render(const std::string& text, const std::string& name, int threads, std::string& bmp, LiveWindow& window,
             std::string& error) {
   using R = typename M::real;
   const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
   const size_t bytes = static_cast<size_t>(capacity) * (sizeof(jaworski::Object<R>) + sizeof(jaworski::Light<R>) +
                                                         sizeof(jaworski::SurfaceNode<R>) + sizeof(jaworski::Part<R>)) +
-                       4096;
+                       jaworski::Tracer<M>::arena_bytes(capacity) + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
   jaworski::Scene<R> scene;
@@ -57,13 +57,22 @@ bool render(const std::string& text, const std::string& name, int threads, std::
   // first, as the tracer counts them), then stream them to the BMP writer.
   const size_t stride = static_cast<size_t>(scene.width) * 4;
   std::vector<uint8_t> rows(stride * static_cast<size_t>(scene.height));
-  const jaworski::Tracer<M> tracer(scene);
+  const jaworski::Tracer<M> tracer(scene, arena);
+  if (!tracer.ready()) {
+    error = name + ": error: scene does not fit in memory";
+    return false;
+  }
   if (threads < 1) threads = static_cast<int>(std::thread::hardware_concurrency());
   if (threads < 1) threads = 1;
   if (threads > scene.height) threads = scene.height;
   std::atomic<int> next{0};
+  const bool live = window.is_open();
+  if (live) window.begin(scene.width, scene.height);
   auto work = [&] {
-    for (int y; (y = next.fetch_add(1)) < scene.height;) tracer.render_row(y, rows.data() + stride * y);
+    for (int y; (y = next.fetch_add(1)) < scene.height;) {
+      tracer.render_row(y, rows.data() + stride * y);
+      if (live) window.row_rgba(scene.height - 1 - y, rows.data() + stride * y);  // the window counts from the top
+    }
   };
   std::vector<std::thread> pool;
   for (int i = 1; i < threads; ++i) pool.emplace_back(work);
@@ -73,13 +82,6 @@ bool render(const std::string& text, const std::string& name, int threads, std::
   writer.begin(scene.width, scene.height);
   for (int y = 0; y < scene.height; ++y) writer.row(y, rows.data() + stride * y);
   writer.end();
-  if (image != nullptr) {  // the window wants the rows top first
-    image->width = scene.width;
-    image->height = scene.height;
-    image->rgba.resize(rows.size());
-    for (int y = 0; y < scene.height; ++y)
-      std::copy_n(rows.data() + stride * (scene.height - 1 - y), stride, image->rgba.data() + stride * y);
-  }
   return true;
 }
 
@@ -105,37 +107,31 @@ int run_jaworski_cli(JaworskiCli& cli) {
       return kExitIoError;
     }
   }
-  std::string bmp, error;
-  RgbaImage image;
-  RgbaImage* for_window = cli.show ? &image : nullptr;
+  std::string bmp, error, why;
+  LiveWindow window;
+  if (cli.show && !window.open("minrt: " + shown, why))
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   bool ok;
   const Variant v = cli.variant;
-  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
-  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
-  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
-  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
-  else ok = render<PortableFloat>(cli.scene_text, shown, cli.threads, bmp, for_window, error);
+  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, cli.threads, bmp, window, error);
+  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, cli.threads, bmp, window, error);
+  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, cli.threads, bmp, window, error);
+  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, cli.threads, bmp, window, error);
+  else ok = render<PortableFloat>(cli.scene_text, shown, cli.threads, bmp, window, error);
   if (!ok) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;
   }
-  std::string why;
-  auto show = [&] {
-    if (cli.show && !show_image(image, "minrt: " + shown, why))
-      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
-  };
-  if (!cli.save) {
-    show();
-    return 0;
+  if (cli.save) {
+    AtomicOutput output;
+    if (!output.open(out_path, cli.write_through, why) ||
+        std::fwrite(bmp.data(), 1, bmp.size(), output.file()) != bmp.size() || !output.commit(why)) {
+      output.discard();
+      std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
+      return kExitIoError;
+    }
   }
-  AtomicOutput output;
-  if (!output.open(out_path, cli.write_through, why) ||
-      std::fwrite(bmp.data(), 1, bmp.size(), output.file()) != bmp.size() || !output.commit(why)) {
-    output.discard();
-    std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
-    return kExitIoError;
-  }
-  show();
+  if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
   return 0;
 }
 

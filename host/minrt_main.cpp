@@ -13,7 +13,7 @@
 
 #include "core/base/text_numbers.hpp"
 #include "general_cli.hpp"
-#include "image_load.hpp"
+#include "image_stream_decoder.hpp"
 #include "image_window.hpp"
 #include "jaworski_cli.hpp"
 #include "minirt_cli.hpp"
@@ -64,9 +64,10 @@ void print_help(std::FILE* f) {
       "  --write-through          write into a FIFO, device or link given to -o\n"
       "  -q, --quiet              no warnings on standard error\n"
       "  -n, --no-save            Jaworski, EASTRAY: render without saving the image\n"
-      "  -s, --show               show the image in a window afterwards (SLD: with -o FILE)\n"
-      "                           (ESC, q or the close button quit; without a display\n"
-      "                           a one-line warning, and the file is still written)\n"
+      "  -s, --show               show the image in a window as it is rendered; it stays\n"
+      "                           until closed (ESC, q or the close button; closing it\n"
+      "                           early does not stop the render); without a display a\n"
+      "                           one-line warning, and the file is still written\n"
       "  --threads N              render rows on N threads (default: every core;\n"
       "                           the image is the same for any N)\n"
       "CS418 (--all-features and --stats also for miniRT):\n"
@@ -321,17 +322,36 @@ int main(int argc, char** argv) {
   }
 
   minrt::host::FileSource source{in};
-  minrt::host::FileSink sink{out};
+  minrt::host::FileSink file_sink{out};
+  // --show: the PPM bytes also go through a decoder that hands each row to
+  // the window as soon as it is written.
+  minrt::host::LiveWindow window;
+  if (show) {
+    std::string why;
+    if (!window.open(std::string("minrt: ") + display_name, why))
+      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  }
+  minrt::host::ImageStreamDecoder decoder(window);
+  struct Tee {
+    minrt::ByteSink file;
+    minrt::host::ImageStreamDecoder* decoder;
+    static void write_fn(void* ctx, const uint8_t* data, size_t size) {
+      auto* t = static_cast<Tee*>(ctx);
+      t->file.put(data, size);
+      t->decoder->feed(data, size);
+    }
+  } tee{file_sink.sink(), &decoder};
+  const minrt::ByteSink sink = window.is_open() ? minrt::ByteSink{&Tee::write_fn, &tee} : file_sink.sink();
   WarningContext wctx{display_name};
   minrt::WarningSink warnings;
   if (!quiet) warnings = minrt::WarningSink{&print_warning, &wctx};
   minrt::Diagnostic error;
   const minrt::RenderStatus st =
-      minrt::host::render_variant(variant, source.source(), sink.sink(), options, error, warnings,
+      minrt::host::render_variant(variant, source.source(), sink, options, error, warnings,
                                   general.options.threads);
   const bool read_failed = std::ferror(in) != 0;
   if (in != stdin) std::fclose(in);
-  const bool write_failed = sink.failed || std::fflush(out) != 0;
+  const bool write_failed = file_sink.failed || std::fflush(out) != 0;
 
   auto discard = [&] { output.discard(); };
   if (source.read_errno != 0) {
@@ -360,13 +380,8 @@ int main(int argc, char** argv) {
       return kExitIoError;
     }
   }
-  if (show) {
-    minrt::host::RgbaImage image;
-    std::string why = "the image went to standard output (give -o FILE to see it)";
-    if (output_path == nullptr || std::string(output_path) == "-" ||
-        !minrt::host::load_image(output_path, image, why) ||
-        !minrt::host::show_image(image, std::string("minrt: ") + display_name, why))
-      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
-  }
+  std::string why;
+  if (window.is_open() && !window.finish_and_wait(why))
+    std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
   return 0;
 }

@@ -43,7 +43,12 @@ JaworskiResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& aren
     error.text("image row does not fit in the board's memory");
     return JaworskiResult::kOutOfMemory;
   }
-  jaworski::Tracer<Math>(scene).render(rows, row);
+  const jaworski::Tracer<Math> tracer(scene, arena);
+  if (!tracer.ready()) {
+    error.text("no room for the sphere hierarchy");
+    return JaworskiResult::kOutOfMemory;
+  }
+  tracer.render(rows, row);
   return JaworskiResult::kOk;
 }
 

@@ -498,6 +498,15 @@ int run(const Options& options) {
   Exchange ex{port, {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
               &progress};
   ex.check = o.check;
+  // --show: the window follows the image as it arrives.
+  minrt::host::LiveWindow window;
+  if (o.show) {
+    std::string why2;
+    if (!window.open("host-send: " + o.output, why2))
+      std::fprintf(stderr, "host-send: warning: not showing the image: %s\n", why2.c_str());
+  }
+  minrt::host::ImageStreamDecoder live(window);
+  if (window.is_open()) ex.live = &live;
   TransferResult r;
   CourseHostOptions course_options;
   course_options.big_endian = o.big_endian;
@@ -582,16 +591,16 @@ int run(const Options& options) {
     std::fprintf(stderr, "%s\n", line);
     std::fprintf(stderr, "host-send: sha256 %s%s%s\n", digest.c_str(), written != &r.image ? " as the board sent it" : "", r.crc_checked ? " (CRC-32 trailer checked)" : "");
   }
-  if (o.show) {
-    // The image as written (PPM, PNG or BMP), in a window.
-    minrt::host::RgbaImage shown;
+  if (window.is_open()) {
+    // Rows the stream could not hand over live (the framed protocol, a
+    // compressed PNG) come from the file as written.
+    minrt::host::RgbaImage written;
     std::string why2;
-    if (o.output == "-") {
-      std::fprintf(stderr, "host-send: warning: not showing the image: it went to standard output\n");
-    } else if (!minrt::host::load_image(o.output, shown, why2) ||
-               !minrt::host::show_image(shown, "host-send: " + o.output, why2)) {
-      std::fprintf(stderr, "host-send: warning: not showing the image: %s\n", why2.c_str());
+    if (o.output != "-" && minrt::host::load_image(o.output, written, why2)) {
+      if (window.width() == 0) window.begin(written.width, written.height);
+      window.fill(written);
     }
+    if (!window.finish_and_wait(why2)) std::fprintf(stderr, "host-send: warning: %s\n", why2.c_str());
   }
   if (!o.verify_ref.empty()) {
     Image got;

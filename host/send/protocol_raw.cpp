@@ -66,7 +66,10 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
         }
         last_rx = Clock::now();
         const std::size_t used = rx.feed(buf, static_cast<std::size_t>(n));
-        if (rx.image_bytes()) r.image.append(reinterpret_cast<const char*>(buf), used);
+        if (rx.image_bytes()) {
+          r.image.append(reinterpret_cast<const char*>(buf), used);
+          if (ex.live != nullptr) ex.live->feed(buf, used);
+        }
         if (ex.progress) ex.progress->update(rx.bytes(), rx.rows_complete());
         if (rx.done()) {
           t_end = Clock::now();

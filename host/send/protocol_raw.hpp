@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "image_stream_decoder.hpp"
 #include "port.hpp"
 #include "bmp_receiver.hpp"
 #include "checked_reply.hpp"
@@ -42,6 +43,8 @@ struct Exchange {
   Timeouts timeouts;
   Progress* progress = nullptr;
   RawCheck check = RawCheck::kAuto;  // raw: the CRC-32 trailer (--check, --no-check)
+  // --show: the image bytes also go here, which hands rows to the window.
+  minrt::host::ImageStreamDecoder* live = nullptr;
 };
 
 // Sends `out` (may be empty), then collects the reply into `rx`. `t0` is the

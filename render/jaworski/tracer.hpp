@@ -10,7 +10,9 @@
 #include <stdint.h>
 
 #include "core/image/row_sink.hpp"
+#include "core/base/arena.hpp"
 #include "formats/jaworski/jaworski_scene.hpp"
+#include "render/jaworski/sphere_bvh.hpp"
 
 namespace minrt::jaworski {
 
@@ -20,7 +22,11 @@ class Tracer {
   using V = Vec3<R>;
 
  public:
-  explicit Tracer(const Scene<R>& s) : s_(s) {}
+  // The sphere hierarchy takes arena_bytes(scene.object_count) of `arena`;
+  // ready() says whether it fitted (render nothing otherwise).
+  Tracer(const Scene<R>& s, Arena& arena) : s_(s), ready_(bvh_.build(s, arena)) {}
+  static size_t arena_bytes(int32_t objects) { return SphereBvh<M>::arena_bytes(objects); }
+  bool ready() const { return ready_; }
 
   // One row of RGBA bytes; y = 0 is the bottom row, as the original renders.
   void render_row(int y, uint8_t* rgba) const {
@@ -68,29 +74,28 @@ class Tracer {
   }
 
   // Smallest t > 0 over all objects, the first object on a tie; -1 if none.
+  // Objects are visited planes first, then the spheres the hierarchy cannot
+  // rule out; a tie goes to the lower index, as in the original's file order.
   R closest(const V& o, const V& d, int32_t& hit) const {
     R best = R(-1);
     hit = kNone;
     auto offer = [&](R t, int32_t i) {
-      if (t > R(0) && (hit == kNone || t < best)) {
+      if (t > R(0) && (hit == kNone || t < best || (t == best && i < hit))) {
         best = t;
         hit = i;
       }
     };
-    for (int32_t i = 0; i < s_.object_count; ++i) {
+    for (int32_t p = 0; p < bvh_.plane_count(); ++p) {
+      const int32_t i = bvh_.plane(p);
       const Object<R>& ob = s_.objects[i];
-      if (ob.kind == ShapeKind::kSphere) {
-        const V oc = o - ob.point;
-        const R doc = dot(d, oc);
-        const R delta = doc * doc - dot(oc, oc) + ob.radius * ob.radius;
-        if (delta < R(0)) continue;
-        const R root = M::sqrt(delta);
-        offer(-doc - root, i);
-        offer(-doc + root, i);
-      } else {
-        offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
-      }
+      offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
     }
+    bvh_.for_hits(o, d, [&](int32_t i, R doc, R delta) {
+      const R root = M::sqrt(delta);
+      offer(-doc - root, i);
+      offer(-doc + root, i);
+      return false;
+    });
     return best;
   }
 
@@ -134,25 +139,52 @@ class Tracer {
     return V{};
   }
 
-  // What a light gives the point x with normal n: nothing when the nearest
-  // object along the shadow ray blocks it (any, for a directional light;
-  // one nearer than the light, for a spherical one).
+  // What a light gives the point x with normal n: nothing when an object
+  // along the shadow ray blocks it (any, for a directional light; one nearer
+  // than the light, for a spherical one).
+  //
+  // Two shortcuts give the original's bytes: a light whose unblocked share
+  // is +-0 (it is behind the surface) adds +-0 either way, and a sum that
+  // starts at +0 is unchanged by +-0, so its shadow ray is not traced; and
+  // blocking only asks whether some t > 0 (with t*t below the squared light
+  // distance) exists, which the first such object answers, because the
+  // nearest t would answer the same (t*t rounds monotonically).
   V shadow(const Light<R>& l, const V& x, const V& n) const {
     const V origin = x + n * kEps;
-    const V dir = normalize(l.kind == LightKind::kDirectional ? l.vector : l.vector - x);
-    int32_t hit;
-    const R t = closest(origin, dir, hit);
-    if (hit != kNone) {
-      if (l.kind == LightKind::kDirectional) return V{};
-      const V xs = x - l.vector;
-      if (t * t < dot(xs, xs)) return V{};
+    if (l.kind == LightKind::kDirectional) {
+      const R share = max0(dot(l.vector, n));
+      if (share == R(0) && finite(l.color)) return V{};
+      if (blocked(origin, normalize(l.vector), false, R(0))) return V{};
+      return l.color * share;
     }
-    if (l.kind == LightKind::kDirectional) return l.color * max0(dot(l.vector, n));
     const V v = l.vector - x;
-    return l.color * (max0(dot(normalize(v), n)) / dot(v, v));
+    const V dir = normalize(v);
+    const R share = max0(dot(dir, n)) / dot(v, v);
+    if (share == R(0) && finite(l.color)) return V{};
+    const V xs = x - l.vector;
+    if (blocked(origin, dir, true, dot(xs, xs))) return V{};
+    return l.color * share;
+  }
+
+  static bool finite(const V& c) { return c.x - c.x == R(0) && c.y - c.y == R(0) && c.z - c.z == R(0); }
+
+  // Whether some object is hit at t > 0 (and, when `limited`, t*t < limit2),
+  // with closest()'s arithmetic.
+  bool blocked(const V& o, const V& d, bool limited, R limit2) const {
+    auto blocks = [&](R t) { return t > R(0) && (!limited || t * t < limit2); };
+    for (int32_t p = 0; p < bvh_.plane_count(); ++p) {
+      const Object<R>& ob = s_.objects[bvh_.plane(p)];
+      if (blocks(dot(ob.point - o, ob.normal) / dot(d, ob.normal))) return true;
+    }
+    return bvh_.for_hits(o, d, [&](int32_t, R doc, R delta) {
+      const R root = M::sqrt(delta);
+      return blocks(-doc - root) || blocks(-doc + root);
+    });
   }
 
   const Scene<R>& s_;
+  SphereBvh<M> bvh_;
+  bool ready_;
 };
 
 }  // namespace minrt::jaworski

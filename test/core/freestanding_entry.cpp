@@ -72,7 +72,9 @@ int jaworski_entry() {
   uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
   if (row == nullptr) return 3;
   minrt::BmpWriter bmp(minrt::ByteSink{&write_bytes, nullptr});
-  minrt::jaworski::Tracer<POLICY>(scene).render(minrt::rgba_row_sink_of(bmp), row);
+  const minrt::jaworski::Tracer<POLICY> tracer(scene, arena);
+  if (!tracer.ready()) return 4;
+  tracer.render(minrt::rgba_row_sink_of(bmp), row);
   return 0;
 }
 

@@ -1,13 +1,26 @@
 #!/usr/bin/env bash
-# minrt --show under Xvfb: what the window shows (MINRT_SHOW_SNAPSHOT reads
-# it back after the first frame) equals the rendered image, for a Jaworski
-# and a CS418 scene and a miniRT one (window only, as its subject wants); without a display it warns in one line, exits 0 and
-# still writes the file.
-# SLD with -o and host-send --show (the board's image) are checked the same way.
+# minrt --show under Xvfb: what the window shows once the image is complete
+# (MINRT_SHOW_SNAPSHOT reads it back) equals the rendered image, for a
+# Jaworski, a CS418 and an SLD scene and for host-send's image from the
+# simulated board; mid-render (MINRT_SHOW_PARTIAL_SNAPSHOT, with every row
+# hand-over slowed by MINRT_SHOW_ROW_DELAY_MS) it shows some rows drawn and
+# the rest background, for every format and for the board's rows as they
+# arrive; without a display it warns in one line, exits 0 and still writes
+# the file. A miniRT scene shows its window without -o, as its subject wants.
 # Usage: window_check.sh MINRT IMAGE_COMPARE SHARED_DIR WORKDIR [HOST_SEND]
 set -euo pipefail
 minrt=$1 compare=$2 shared=$3 work=$4 host_send=${5:-}
+rows_check=$(dirname "$0")/window_rows_check.py
 mkdir -p "$work"
+# live NAME PROGRAM ARGS...: a mid-render and a final snapshot of one run.
+live() {
+  local name=$1
+  shift
+  rm -f "$work/$name-partial.ppm" "$work/$name-final.ppm"
+  MINRT_SHOW_ROW_DELAY_MS=${DELAY:-15} MINRT_SHOW_PARTIAL_SNAPSHOT=$work/$name-partial.ppm \
+    MINRT_SHOW_SNAPSHOT=$work/$name-final.ppm xvfb-run -a "$@"
+  python3 "$rows_check" "$work/$name-partial.ppm" "$work/$name-final.ppm"
+}
 jw=$shared/formats/jaworski/mixed-nested-deep.txt
 cs=$shared/formats/cs418/ray-shadow-plane.txt
 MINRT_SHOW_SNAPSHOT=$work/jw-window.ppm xvfb-run -a "$minrt" --show "$jw" -o "$work/jw.bmp"
@@ -28,6 +41,17 @@ rt=$shared/formats/minirt/valid/showcase.rt
 MINRT_SHOW_SNAPSHOT=$work/rt-window.ppm xvfb-run -a "$minrt" --size 160x120 "$rt"
 "$minrt" --size 160x120 "$rt" -o "$work/rt.ppm"
 "$compare" --identical "$work/rt-window.ppm" "$work/rt.ppm" >/dev/null
+# Rows appear as they are rendered (two threads: out of order) or arrive.
+live jw-live "$minrt" --threads 2 --show "$jw" -o "$work/jw-live.bmp"
+"$compare" --identical "$work/jw-live-final.ppm" "$work/jw-live.bmp" >/dev/null
+live cs-live "$minrt" --threads 2 --show "$cs" -o "$work/cs-live.ppm"
+"$compare" --identical "$work/cs-live-final.ppm" "$work/cs-live.ppm" >/dev/null
+live sld-live "$minrt" --size 48x32 --show -o "$work/sld-live.ppm" "$shared/scenes/contest.sld"
+"$compare" --identical "$work/sld-live-final.ppm" "$work/sld-live.ppm" >/dev/null
+if [ -n "$host_send" ]; then
+  DELAY=1 live board-live "$host_send" -q --sim --show "$jw" -o "$work/board-live.bmp"
+  "$compare" --identical "$work/board-live-final.ppm" "$work/board-live.bmp" >/dev/null
+fi
 rm -f "$work/nodisplay.bmp"
 err=$(env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$minrt" --show "$jw" -o "$work/nodisplay.bmp" 2>&1)
 [ "$err" = "minrt: warning: not showing the image: no display (DISPLAY is not set)" ] || { echo "unexpected: $err"; exit 1; }

@@ -1,0 +1,225 @@
+// A four-wide bounding-ball hierarchy over a Jaworski scene's spheres that
+// skips only spheres the tracer's own arithmetic would miss, so the bytes do
+// not change (the 24 reference BMPs pin them). Four children or four
+// spheres are tested at once in vector lanes (GCC/Clang vector extensions:
+// SSE2 on the host, plain scalar code where there is no vector unit); every
+// lane does the scalar operations in the scalar order.
+//
+// Why a skip is exact. A sphere is missed when the computed
+// delta = doc^2 - |oc|^2 + r^2 is negative. For a unit ray direction that
+// holds whenever the ray's line passes farther than r + k(|oc| + r) from the
+// centre, with k = 7 sqrt(u) (u the unit roundoff): the rounding of delta,
+// of oc and of |d|^2 = 1 +- 16u all stay below k^2 |oc|^2. A node bounds its
+// spheres by a ball (C, G) with |c - C| + r <= G, so when its own computed
+// |oC|^2 - (d.oC)^2 exceeds G^2 (1 + kRel) + kRel |oC|^2, every sphere in it
+// is that far from the line (kRel covers 5k, k and the node test's own
+// rounding: 1e-6 in double, 2e-2 in float). Rays whose |d|^2 is not within
+// 16u of 1, tiny |oC|^2 (subnormal rounding is absolute, not relative) and
+// NaN or infinite values are never skipped: every comparison is written so
+// that they fail it. Visiting order does not matter because closest()
+// breaks ties by object index.
+#pragma once
+
+#include <stdint.h>
+
+#include "core/base/arena.hpp"
+#include "formats/jaworski/jaworski_scene.hpp"
+
+namespace minrt::jaworski {
+
+template <class M>
+class SphereBvh {
+  using R = typename M::real;
+  using V = Vec3<R>;
+
+ public:
+  static constexpr int kWidth = 2;
+  typedef R Lanes __attribute__((vector_size(kWidth * sizeof(R))));
+
+  // Four balls: sphere centres with radius * radius (a leaf), or the bounds
+  // of four child nodes with their squared, widened radii.
+  struct Node {
+    Lanes cx, cy, cz, r2;
+    int32_t child[kWidth];  // leaf: object indices
+    int32_t count;          // lanes in use
+    bool leaf;
+  };
+
+  // Calls hit(object index, doc, delta) for every sphere whose computed
+  // delta is >= 0 (a superset is never needed: those are exactly the ones
+  // closest() would offer); hit returns true to stop early.
+  template <class F>
+  bool for_hits(const V& o, const V& d, F&& hit) const {
+    if (node_count_ == 0) return false;
+    const R dd = dot(d, d);
+    const bool cull = dd > R(1) - kUnitTolerance && dd < R(1) + kUnitTolerance;
+    int32_t stack[kMaxStack];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+      const Node& n = nodes_[stack[--sp]];
+      const Lanes ox = o.x - n.cx, oy = o.y - n.cy, oz = o.z - n.cz;
+      const Lanes doc = d.x * ox + d.y * oy + d.z * oz;
+      const Lanes occ = ox * ox + oy * oy + oz * oz;
+      if (n.leaf) {
+        // The tracer's own delta, lane by lane.
+        const Lanes delta = doc * doc - occ + n.r2;
+        for (int32_t i = 0; i < n.count; ++i)
+          if (delta[i] >= R(0) && hit(n.child[i], doc[i], delta[i])) return true;
+        continue;
+      }
+      // Lanes whose ball the line provably misses (all bits set) are skipped.
+      const auto far = (occ >= kMinScale) & (occ - doc * doc > n.r2 + kRel * occ);
+      for (int32_t i = n.count - 1; i >= 0; --i)
+        if (!cull || far[i] == 0) stack[sp++] = n.child[i];
+    }
+    return false;
+  }
+
+  // Arena bytes for a scene of `objects` objects (alignment included).
+  static size_t arena_bytes(int32_t objects) {
+    const size_t n = objects > 0 ? static_cast<size_t>(objects) : 0;
+    return (n + 1) * (2 * sizeof(Node) + sizeof(Item) + sizeof(int32_t)) + 2 * alignof(Node);
+  }
+
+  // False when the arena is too small.
+  bool build(const Scene<R>& s, Arena& arena) {
+    int32_t spheres = 0;
+    for (int32_t i = 0; i < s.object_count; ++i) spheres += s.objects[i].kind == ShapeKind::kSphere ? 1 : 0;
+    plane_count_ = s.object_count - spheres;
+    // Inner nodes have four children and leaves at least one sphere, so
+    // there are at most 1 + 4 (spheres - 1) / 3 nodes.
+    nodes_ = arena.alloc_zeroed<Node>(static_cast<size_t>(2 * spheres + 1));
+    Item* items = arena.alloc_zeroed<Item>(static_cast<size_t>(spheres + 1));
+    planes_ = arena.alloc_zeroed<int32_t>(static_cast<size_t>(plane_count_ + 1));
+    if (nodes_ == nullptr || items == nullptr || planes_ == nullptr) return false;
+    int32_t si = 0, pi = 0;
+    for (int32_t i = 0; i < s.object_count; ++i) {
+      const Object<R>& ob = s.objects[i];
+      if (ob.kind == ShapeKind::kSphere) {
+        const R r = ob.radius < R(0) ? -ob.radius : ob.radius;
+        items[si++] = Item{ob.point, r, ob.radius * ob.radius, i};
+      } else {
+        planes_[pi++] = i;
+      }
+    }
+    node_count_ = 0;
+    if (spheres > 0) {
+      node_count_ = 1;
+      R g2;
+      V c;
+      build_node(0, items, spheres, c, g2);
+    }
+    return true;
+  }
+
+  int32_t plane_count() const { return plane_count_; }
+  int32_t plane(int32_t i) const { return planes_[i]; }
+
+ private:
+  struct Item {
+    V c;
+    R radius;  // |radius|
+    R r2;      // radius * radius, as the tracer computes it
+    int32_t index;
+  };
+
+  static constexpr bool kDouble = sizeof(R) >= 8;
+  static constexpr R kRel = kDouble ? R(1e-6) : R(2e-2);
+  static constexpr R kUnitTolerance = kDouble ? R(16 * 1.1102230246251565e-16) : R(16 * 5.9604645e-8);
+  static constexpr R kMinScale = kDouble ? R(1e-200) : R(1e-20);
+  // Quarters of at most 2^31 spheres are at most 17 deep; the walk keeps
+  // at most three pending siblings a level.
+  static constexpr int kMaxStack = 3 * 20 + 4;
+
+  static R key(const Item& s, int axis) { return axis == 0 ? s.c.x : axis == 1 ? s.c.y : s.c.z; }
+
+  // Fills node `id` from items[0, count); gives back its bounding ball
+  // (centre, widened squared radius) for the parent's lane.
+  void build_node(int32_t id, Item* items, int32_t count, V& centre, R& bound2) {
+    // The ball around all of them: centre the mean, radius the farthest reach.
+    V lo = items[0].c, hi = lo, sum{};
+    for (int32_t i = 0; i < count; ++i) {
+      const V& c = items[i].c;
+      lo = V{c.x < lo.x ? c.x : lo.x, c.y < lo.y ? c.y : lo.y, c.z < lo.z ? c.z : lo.z};
+      hi = V{c.x > hi.x ? c.x : hi.x, c.y > hi.y ? c.y : hi.y, c.z > hi.z ? c.z : hi.z};
+      sum = sum + c;
+    }
+    centre = sum * (R(1) / static_cast<R>(count));
+    R g = R(0);
+    bool bad = false;
+    for (int32_t i = 0; i < count; ++i) {
+      const V e = items[i].c - centre;
+      const R reach = M::sqrt(dot(e, e)) + items[i].radius;
+      if (!(reach >= R(0))) bad = true;  // NaN: never skip this ball
+      if (reach > g) g = reach;
+    }
+    g = g * (R(1) + kRel);
+    bound2 = bad ? R(1) / R(0) : g * g * (R(1) + kRel);
+
+    Node& n = nodes_[id];
+    if (count <= kWidth) {
+      n.leaf = true;
+      n.count = count;
+      for (int32_t i = 0; i < count; ++i) {
+        n.cx[i] = items[i].c.x;
+        n.cy[i] = items[i].c.y;
+        n.cz[i] = items[i].c.z;
+        n.r2[i] = items[i].r2;
+        n.child[i] = items[i].index;
+      }
+      return;
+    }
+    // Four parts of the spheres sorted along the widest axis of the centres.
+    const V ext = hi - lo;
+    const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    sort(items, count, axis);
+    n.leaf = false;
+    n.count = kWidth;
+    const int32_t first = node_count_;
+    node_count_ += kWidth;
+    int32_t begin = 0;
+    for (int32_t part = 0; part < kWidth; ++part) {
+      const int32_t end = static_cast<int32_t>((static_cast<int64_t>(count) * (part + 1)) / kWidth);
+      V c;
+      R b2;
+      build_node(first + part, items + begin, end - begin, c, b2);
+      n.cx[part] = c.x;
+      n.cy[part] = c.y;
+      n.cz[part] = c.z;
+      n.r2[part] = b2;
+      n.child[part] = first + part;
+      begin = end;
+    }
+  }
+
+  // Heap sort of items[0, count) by centre along `axis`: it ends whatever
+  // the comparisons say (NaN centres only unbalance the tree).
+  static void sort(Item* a, int32_t count, int axis) {
+    auto sift = [&](int32_t root, int32_t end) {
+      for (;;) {
+        int32_t child = 2 * root + 1;
+        if (child >= end) return;
+        if (child + 1 < end && key(a[child], axis) < key(a[child + 1], axis)) ++child;
+        if (!(key(a[root], axis) < key(a[child], axis))) return;
+        const Item t = a[root];
+        a[root] = a[child];
+        a[child] = t;
+        root = child;
+      }
+    };
+    for (int32_t i = count / 2 - 1; i >= 0; --i) sift(i, count);
+    for (int32_t end = count - 1; end > 0; --end) {
+      const Item t = a[0];
+      a[0] = a[end];
+      a[end] = t;
+      sift(0, end);
+    }
+  }
+
+  Node* nodes_ = nullptr;
+  int32_t* planes_ = nullptr;
+  int32_t node_count_ = 0, plane_count_ = 0;
+};
+
+}  // namespace minrt::jaworski
