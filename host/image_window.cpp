@@ -5,9 +5,7 @@
 #include <cstdlib>
 #include <future>
 
-#if MINRT_HAVE_SDL2
-#include <SDL.h>
-#endif
+#include "sdl_library.hpp"
 
 namespace minrt::host {
 
@@ -102,10 +100,10 @@ bool LiveWindow::finish_and_wait(std::string& why) {
 
 namespace {
 
-bool save_snapshot(SDL_Renderer* renderer, int w, int h, const char* path) {
+bool save_snapshot(const SdlLibrary& sdl, SDL_Renderer* renderer, int w, int h, const char* path) {
   std::vector<uint8_t> rgb(static_cast<size_t>(w) * h * 3);
   SDL_Rect all{0, 0, w, h};
-  if (SDL_RenderReadPixels(renderer, &all, SDL_PIXELFORMAT_RGB24, rgb.data(), w * 3) != 0) return false;
+  if (sdl.RenderReadPixels(renderer, &all, SDL_PIXELFORMAT_RGB24, rgb.data(), w * 3) != 0) return false;
   std::FILE* f = std::fopen(path, "wb");
   if (f == nullptr) return false;
   std::fprintf(f, "P6\n%d %d\n255\n", w, h);
@@ -122,6 +120,7 @@ bool LiveWindow::open(const std::string& title, std::string& why) {
     why = "no display (DISPLAY is not set)";
     return false;
   }
+  if (load_sdl(why) == nullptr) return false;
   if (const char* d = std::getenv("MINRT_SHOW_ROW_DELAY_MS")) delay_ms_ = std::atoi(d);
   auto started = std::make_shared<std::promise<std::string>>();
   std::future<std::string> result = started->get_future();
@@ -135,19 +134,21 @@ bool LiveWindow::open(const std::string& title, std::string& why) {
 }
 
 void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string>> started) {
+  std::string unused;
+  const SdlLibrary& sdl = *load_sdl(unused);  // loaded by open()
   // The render's Ctrl-C must stay the render's (SDL would turn it into a
   // quit event for a window nobody may be looking at).
-  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-  if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-    started->set_value(std::string("no display (") + SDL_GetError() + ")");
+  sdl.SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+  if (sdl.Init(SDL_INIT_VIDEO) != 0) {
+    started->set_value(std::string("no display (") + sdl.GetError() + ")");
     return;
   }
   // SDL falls back to drivers that show nothing (offscreen, dummy): a
   // window there would wait for a key nobody can press.
-  const char* driver = SDL_GetCurrentVideoDriver();
+  const char* driver = sdl.GetCurrentVideoDriver();
   const std::string name = driver != nullptr ? driver : "";
   if (name != "x11" && name != "wayland" && name != "kmsdrm" && name != "cocoa" && name != "windows") {
-    SDL_Quit();
+    sdl.Quit();
     started->set_value("no display (SDL video driver '" + name + "'; set DISPLAY or run under a desktop)");
     return;
   }
@@ -160,35 +161,35 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
     changed_.wait(lock, [&] { return began_ || abandoned_ || finished_; });
     if (!began_) {
       lock.unlock();
-      SDL_Quit();
+      sdl.Quit();
       return;
     }
     w = width_.load(std::memory_order_relaxed);
     h = height_;
   }
   SDL_Window* window =
-      SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, SDL_WINDOW_RESIZABLE);
-  SDL_Renderer* renderer = window != nullptr ? SDL_CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
+      sdl.CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, SDL_WINDOW_RESIZABLE);
+  SDL_Renderer* renderer = window != nullptr ? sdl.CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
   SDL_Texture* texture =
-      renderer != nullptr ? SDL_CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STATIC, w, h) : nullptr;
+      renderer != nullptr ? sdl.CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STATIC, w, h) : nullptr;
   if (texture == nullptr) {
     const std::string program = title.substr(0, title.find(':'));
     std::fprintf(stderr, "%s: warning: not showing the image: cannot open a window (%s)\n", program.c_str(),
-                 SDL_GetError());
-    if (renderer != nullptr) SDL_DestroyRenderer(renderer);
-    if (window != nullptr) SDL_DestroyWindow(window);
-    SDL_Quit();
+                 sdl.GetError());
+    if (renderer != nullptr) sdl.DestroyRenderer(renderer);
+    if (window != nullptr) sdl.DestroyWindow(window);
+    sdl.Quit();
     return;
   }
   {
     const std::vector<uint8_t> black(static_cast<size_t>(w) * h * 3, 0);
-    SDL_UpdateTexture(texture, nullptr, black.data(), w * 3);
+    sdl.UpdateTexture(texture, nullptr, black.data(), w * 3);
   }
-  SDL_RenderSetLogicalSize(renderer, w, h);  // keeps the aspect when resized
+  sdl.RenderSetLogicalSize(renderer, w, h);  // keeps the aspect when resized
   auto draw = [&] {
-    SDL_SetRenderDrawColor(renderer, 0, 0, 0, 255);
-    SDL_RenderClear(renderer);
-    SDL_RenderCopy(renderer, texture, nullptr, nullptr);
+    sdl.SetRenderDrawColor(renderer, 0, 0, 0, 255);
+    sdl.RenderClear(renderer);
+    sdl.RenderCopy(renderer, texture, nullptr, nullptr);
   };
   const char* snapshot = std::getenv("MINRT_SHOW_SNAPSHOT");
   const char* partial = std::getenv("MINRT_SHOW_PARTIAL_SNAPSHOT");
@@ -204,12 +205,12 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
     bool quit = false;
     // Complete: nothing changes but what the user does.
     const bool idle = shown_rows == h && complete_titled;
-    if ((idle ? SDL_WaitEvent(&e) : SDL_WaitEventTimeout(&e, static_cast<int>(period.count()))) != 0) {
+    if ((idle ? sdl.WaitEvent(&e) : sdl.WaitEventTimeout(&e, static_cast<int>(period.count()))) != 0) {
       do {
         if (e.type == SDL_QUIT) quit = true;
         else if (e.type == SDL_KEYDOWN && (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q)) quit = true;
         else if (e.type == SDL_WINDOWEVENT) redraw = true;  // exposed, resized, restored: the image again
-      } while (SDL_PollEvent(&e) != 0);
+      } while (sdl.PollEvent(&e) != 0);
     }
     bool finished, abandoned;
     {
@@ -230,7 +231,7 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
         int end = y;
         while (end < h && shown[end] == 0 && rows_[end].load(std::memory_order_acquire) == kReady) shown[end++] = 1;
         SDL_Rect rect{0, y, w, end - y};
-        SDL_UpdateTexture(texture, &rect, pixels_.data() + static_cast<size_t>(y) * w * 3, w * 3);
+        sdl.UpdateTexture(texture, &rect, pixels_.data() + static_cast<size_t>(y) * w * 3, w * 3);
         shown_rows += end - y;
         redraw = true;
         y = end;
@@ -238,38 +239,38 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
       if (shown_rows != titled_rows && shown_rows < h) {
         titled_rows = shown_rows;
         const std::string t = title + " (" + std::to_string(shown_rows) + " of " + std::to_string(h) + " rows)";
-        SDL_SetWindowTitle(window, t.c_str());
+        sdl.SetWindowTitle(window, t.c_str());
       }
     }
     const bool complete = shown_rows == h;
     if (complete && finished && !complete_titled) {
       complete_titled = true;
-      SDL_SetWindowTitle(window, title.c_str());
+      sdl.SetWindowTitle(window, title.c_str());
     }
     const bool snap = snapshot != nullptr && complete && finished;
     if (!redraw && !snap) continue;
     redraw = false;
     draw();
     if (partial != nullptr && shown_rows > 0 && !complete) {
-      if (!save_snapshot(renderer, w, h, partial)) {
+      if (!save_snapshot(sdl, renderer, w, h, partial)) {
         snapshot_ok_ = false;
         snapshot_error_ = std::string("cannot save the snapshot ") + partial;
       }
       partial = nullptr;
     }
     if (snap) {
-      if (!save_snapshot(renderer, w, h, snapshot)) {
+      if (!save_snapshot(sdl, renderer, w, h, snapshot)) {
         snapshot_ok_ = false;
         snapshot_error_ = std::string("cannot save the snapshot ") + snapshot;
       }
       break;
     }
-    SDL_RenderPresent(renderer);
+    sdl.RenderPresent(renderer);
   }
-  SDL_DestroyTexture(texture);
-  SDL_DestroyRenderer(renderer);
-  SDL_DestroyWindow(window);
-  SDL_Quit();
+  sdl.DestroyTexture(texture);
+  sdl.DestroyRenderer(renderer);
+  sdl.DestroyWindow(window);
+  sdl.Quit();
 }
 
 #else

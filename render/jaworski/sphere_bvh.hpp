@@ -33,7 +33,8 @@ class SphereBvh {
   using V = Vec3<R>;
 
  public:
-  static constexpr int kWidth = 2;
+  static constexpr int kWidth = 2;  // children a node (an SSE2 register of doubles)
+  static constexpr int32_t kSearchedSplit = 48;
   typedef R Lanes __attribute__((vector_size(kWidth * sizeof(R))));
 
   // Four balls: sphere centres with radius * radius (a leaf), or the bounds
@@ -128,34 +129,44 @@ class SphereBvh {
   static constexpr R kRel = kDouble ? R(1e-6) : R(2e-2);
   static constexpr R kUnitTolerance = kDouble ? R(16 * 1.1102230246251565e-16) : R(16 * 5.9604645e-8);
   static constexpr R kMinScale = kDouble ? R(1e-200) : R(1e-20);
-  // Quarters of at most 2^31 spheres are at most 17 deep; the walk keeps
-  // at most three pending siblings a level.
-  static constexpr int kMaxStack = 3 * 20 + 4;
+  // Median halves of 2^31 spheres reach kSearchedSplit in 26 levels, and
+  // searched splits add fewer than kSearchedSplit more; the walk keeps one
+  // pending sibling a level.
+  static constexpr int kMaxStack = 32 + kSearchedSplit + 8;
 
   static R key(const Item& s, int axis) { return axis == 0 ? s.c.x : axis == 1 ? s.c.y : s.c.z; }
+
+  // The ball around items[0, count): centre the middle of the centres'
+  // box, radius the farthest reach; false if some value is NaN.
+  static bool ball(const Item* items, int32_t count, V& centre, R& radius, V& extent) {
+    V lo = items[0].c, hi = lo;
+    for (int32_t i = 1; i < count; ++i) {
+      const V& c = items[i].c;
+      lo = V{c.x < lo.x ? c.x : lo.x, c.y < lo.y ? c.y : lo.y, c.z < lo.z ? c.z : lo.z};
+      hi = V{c.x > hi.x ? c.x : hi.x, c.y > hi.y ? c.y : hi.y, c.z > hi.z ? c.z : hi.z};
+    }
+    centre = (lo + hi) * R(0.5);
+    extent = hi - lo;
+    R g = R(0);
+    bool ok = true;
+    for (int32_t i = 0; i < count; ++i) {
+      const V e = items[i].c - centre;
+      const R reach = M::sqrt(dot(e, e)) + items[i].radius;
+      if (!(reach >= R(0))) ok = false;
+      if (reach > g) g = reach;
+    }
+    radius = g;
+    return ok;
+  }
 
   // Fills node `id` from items[0, count); gives back its bounding ball
   // (centre, widened squared radius) for the parent's lane.
   void build_node(int32_t id, Item* items, int32_t count, V& centre, R& bound2) {
-    // The ball around all of them: centre the mean, radius the farthest reach.
-    V lo = items[0].c, hi = lo, sum{};
-    for (int32_t i = 0; i < count; ++i) {
-      const V& c = items[i].c;
-      lo = V{c.x < lo.x ? c.x : lo.x, c.y < lo.y ? c.y : lo.y, c.z < lo.z ? c.z : lo.z};
-      hi = V{c.x > hi.x ? c.x : hi.x, c.y > hi.y ? c.y : hi.y, c.z > hi.z ? c.z : hi.z};
-      sum = sum + c;
-    }
-    centre = sum * (R(1) / static_cast<R>(count));
-    R g = R(0);
-    bool bad = false;
-    for (int32_t i = 0; i < count; ++i) {
-      const V e = items[i].c - centre;
-      const R reach = M::sqrt(dot(e, e)) + items[i].radius;
-      if (!(reach >= R(0))) bad = true;  // NaN: never skip this ball
-      if (reach > g) g = reach;
-    }
+    R g;
+    V extent;
+    const bool ok = ball(items, count, centre, g, extent);
     g = g * (R(1) + kRel);
-    bound2 = bad ? R(1) / R(0) : g * g * (R(1) + kRel);
+    bound2 = ok ? g * g * (R(1) + kRel) : R(1) / R(0);  // NaN somewhere: never skip this ball
 
     Node& n = nodes_[id];
     if (count <= kWidth) {
@@ -170,26 +181,45 @@ class SphereBvh {
       }
       return;
     }
-    // Four parts of the spheres sorted along the widest axis of the centres.
-    const V ext = hi - lo;
-    const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    // Two halves: for a few spheres the split (axis and place) whose balls
+    // cover least (count x radius^2 summed), else the median along the
+    // widest axis.
+    int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    int32_t split = count / 2;
+    if (count <= kSearchedSplit) {
+      R best = R(-1);
+      for (int a = 0; a < 3; ++a) {
+        sort(items, count, a);
+        for (int32_t k = 1; k < count; ++k) {
+          V c, e;
+          R gl, gr;
+          if (!ball(items, k, c, gl, e) || !ball(items + k, count - k, c, gr, e)) continue;
+          const R cost = static_cast<R>(k) * gl * gl + static_cast<R>(count - k) * gr * gr;
+          if (best < R(0) || cost < best) {
+            best = cost;
+            axis = a;
+            split = k;
+          }
+        }
+      }
+    }
     sort(items, count, axis);
     n.leaf = false;
     n.count = kWidth;
     const int32_t first = node_count_;
     node_count_ += kWidth;
+    const int32_t ends[kWidth] = {split, count};
     int32_t begin = 0;
     for (int32_t part = 0; part < kWidth; ++part) {
-      const int32_t end = static_cast<int32_t>((static_cast<int64_t>(count) * (part + 1)) / kWidth);
       V c;
       R b2;
-      build_node(first + part, items + begin, end - begin, c, b2);
+      build_node(first + part, items + begin, ends[part] - begin, c, b2);
       n.cx[part] = c.x;
       n.cy[part] = c.y;
       n.cz[part] = c.z;
       n.r2[part] = b2;
       n.child[part] = first + part;
-      begin = end;
+      begin = ends[part];
     }
   }
 

@@ -65,10 +65,10 @@ class Tracer {
 
   static uint8_t to_byte(R v) {
     const R x = R(255) * max0(min1(v));
-    // Round half to even (Haskell's round); x is in [0, 255].
-    const R f = M::floor(x);
-    const R diff = x - f;
-    int32_t i = M::to_int(f);
+    // Round half to even (Haskell's round); x is in [0, 255] (a NaN v gives
+    // 0), where truncation is the floor.
+    int32_t i = M::to_int(x);
+    const R diff = x - M::from_int(i);
     if (diff > R(0.5) || (diff == R(0.5) && (i & 1) != 0)) ++i;
     return static_cast<uint8_t>(i);
   }
