@@ -33,7 +33,7 @@ class SphereBvh {
   using V = Vec3<R>;
 
  public:
-  static constexpr int kWidth = 2;  // children a node (an SSE2 register of doubles)
+  static constexpr int kWidth = 2;  // children a node (an SSE2 register of doubles); inner nodes use both
   static constexpr int32_t kSearchedSplit = 48;
   typedef R Lanes __attribute__((vector_size(kWidth * sizeof(R))));
 
@@ -69,10 +69,12 @@ class SphereBvh {
           if (delta[i] >= R(0) && hit(n.child[i], doc[i], delta[i])) return true;
         continue;
       }
-      // Lanes whose ball the line provably misses (all bits set) are skipped.
-      const auto far = (occ >= kMinScale) & (occ - doc * doc > n.r2 + kRel * occ);
-      for (int32_t i = n.count - 1; i >= 0; --i)
-        if (!cull || far[i] == 0) stack[sp++] = n.child[i];
+      // Lanes whose ball the line provably misses (margin > 0) are skipped.
+      // kMinScale keeps tiny |oC|^2 (< kMinScale, where the left side can
+      // not exceed it) from ever being skipped.
+      const Lanes margin = (occ - doc * doc) - (n.r2 + kRel * occ + kMinScale);
+      if (!cull || !(margin[1] > R(0))) stack[sp++] = n.child[1];
+      if (!cull || !(margin[0] > R(0))) stack[sp++] = n.child[0];
     }
     return false;
   }
