@@ -52,8 +52,7 @@ class SphereBvh {
   template <class F>
   bool for_hits(const V& o, const V& d, F&& hit) const {
     if (node_count_ == 0) return false;
-    const R dd = dot(d, d);
-    const bool cull = dd > R(1) - kUnitTolerance && dd < R(1) + kUnitTolerance;
+    const bool cull = unit_enough(dot(d, d));
     int32_t stack[kMaxStack];
     int sp = 0;
     stack[sp++] = 0;
@@ -77,6 +76,61 @@ class SphereBvh {
       if (!cull || !(margin[0] > R(0))) stack[sp++] = n.child[0];
     }
     return false;
+  }
+
+  // Whether |d|^2 = dd is within 16u of 1, as the skips' reasoning needs.
+  static bool unit_enough(R dd) { return dd > R(1) - kUnitTolerance && dd < R(1) + kUnitTolerance; }
+
+  // A sphere as gather() hands it on: what the tracer's test reads.
+  struct Candidate {
+    V c;
+    R r2;
+    int32_t index;
+  };
+
+  // How far apart unit directions may be for gather(): `spread` is the
+  // largest computed |d - a| over the rays, widened for rounding.
+  static R widen_spread(R spread) { return spread * (R(1) + kRel) + R(64) * kUnit; }
+
+  // Every sphere that one of a fan of rays o + t d may hit, where each d
+  // (with |d|^2 within 16u of 1) is within `spread` (widen_spread) of a:
+  // the count, or -1 if more than `capacity` (or a is not a unit vector).
+  //
+  // Why it is exact: for such a d the distance from a ball's centre C to
+  // its line is at least the distance to a's line minus |oC| spread, so a
+  // ball whose computed distance to a's line exceeds
+  // T = sqrt(bound2 + kRel |oC|^2 + kMinScale) + spread |oC| (with a kRel
+  // relative margin for T's own rounding) passes the per-ray test's
+  // condition for every d, and its spheres would all be missed.
+  int32_t gather(const V& o, const V& a, R spread, Candidate* out, int32_t capacity) const {
+    if (node_count_ == 0) return 0;
+    if (!unit_enough(dot(a, a))) return -1;
+    int32_t stack[kMaxStack];
+    int sp = 0, count = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+      const Node& n = nodes_[stack[--sp]];
+      const Lanes ox = o.x - n.cx, oy = o.y - n.cy, oz = o.z - n.cz;
+      const Lanes doc = a.x * ox + a.y * oy + a.z * oz;
+      const Lanes occ = ox * ox + oy * oy + oz * oz;
+      // A sphere's own ball: radius^2 (1 + 4 kRel) covers the widening a
+      // node's bound gets.
+      const Lanes bound = n.leaf ? n.r2 * (R(1) + R(4) * kRel) : n.r2;
+      Lanes reach{};
+      for (int i = 0; i < kWidth; ++i)
+        reach[i] = M::sqrt(bound[i] + kRel * occ[i] + kMinScale) + spread * M::sqrt(occ[i]);
+      const Lanes margin = (occ - doc * doc) - reach * reach * (R(1) + kRel);
+      for (int32_t i = n.count - 1; i >= 0; --i) {
+        if (margin[i] > R(0)) continue;
+        if (!n.leaf) {
+          stack[sp++] = n.child[i];
+          continue;
+        }
+        if (count == capacity) return -1;
+        out[count++] = Candidate{V{n.cx[i], n.cy[i], n.cz[i]}, n.r2[i], n.child[i]};
+      }
+    }
+    return count;
   }
 
   // Arena bytes for a scene of `objects` objects (alignment included).
@@ -129,7 +183,8 @@ class SphereBvh {
 
   static constexpr bool kDouble = sizeof(R) >= 8;
   static constexpr R kRel = kDouble ? R(1e-6) : R(2e-2);
-  static constexpr R kUnitTolerance = kDouble ? R(16 * 1.1102230246251565e-16) : R(16 * 5.9604645e-8);
+  static constexpr R kUnit = kDouble ? R(1.1102230246251565e-16) : R(5.9604645e-8);  // unit roundoff
+  static constexpr R kUnitTolerance = R(16) * kUnit;
   static constexpr R kMinScale = kDouble ? R(1e-200) : R(1e-20);
   // Median halves of 2^31 spheres reach kSearchedSplit in 26 levels, and
   // searched splits add fewer than kSearchedSplit more; the walk keeps one

@@ -29,19 +29,37 @@ class Tracer {
   bool ready() const { return ready_; }
 
   // One row of RGBA bytes; y = 0 is the bottom row, as the original renders.
+  // The camera's rays go in fans of kFan neighbours, which first ask the
+  // hierarchy which spheres any of them may hit (SphereBvh::gather); each
+  // ray then tests only those.
   void render_row(int y, uint8_t* rgba) const {
     const R sw = s_.canvas_width, sh = s_.canvas_height;
     const R left = R(-0.5) * sw, bottom = R(-0.5) * sh;
     const R py = bottom + sh * (M::from_int(y) + R(0.5)) / M::from_int(s_.height);
-    for (int x = 0; x < s_.width; ++x) {
-      const R px = left + sw * (M::from_int(x) + R(0.5)) / M::from_int(s_.width);
-      const V origin{R(0), R(0), -s_.depth};
-      const V c = trace(s_.ray_depth, origin, normalize(V{px, py, s_.depth}));
-      uint8_t* o = rgba + 4 * x;
-      o[0] = to_byte(c.x);
-      o[1] = to_byte(c.y);
-      o[2] = to_byte(c.z);
-      o[3] = 255;
+    const V origin{R(0), R(0), -s_.depth};
+    V dirs[kFan];
+    typename SphereBvh<M>::Candidate candidates[kCandidates];
+    for (int x0 = 0; x0 < s_.width; x0 += kFan) {
+      const int n = s_.width - x0 < kFan ? s_.width - x0 : kFan;
+      for (int i = 0; i < n; ++i) {
+        const R px = left + sw * (M::from_int(x0 + i) + R(0.5)) / M::from_int(s_.width);
+        dirs[i] = normalize(V{px, py, s_.depth});
+      }
+      const V& axis = dirs[n / 2];
+      const V e0 = dirs[0] - axis, e1 = dirs[n - 1] - axis;
+      const R s0 = M::sqrt(dot(e0, e0)), s1 = M::sqrt(dot(e1, e1));
+      const R spread = SphereBvh<M>::widen_spread(s0 > s1 ? s0 : s1);
+      // NaN spread (a degenerate scene): every ray walks the hierarchy.
+      const int32_t found = spread >= R(0) ? bvh_.gather(origin, axis, spread, candidates, kCandidates) : -1;
+      for (int i = 0; i < n; ++i) {
+        const V c = found >= 0 ? trace_among(s_.ray_depth, origin, dirs[i], candidates, found)
+                               : trace(s_.ray_depth, origin, dirs[i]);
+        uint8_t* o = rgba + 4 * (x0 + i);
+        o[0] = to_byte(c.x);
+        o[1] = to_byte(c.y);
+        o[2] = to_byte(c.z);
+        o[3] = 255;
+      }
     }
   }
 
@@ -56,6 +74,8 @@ class Tracer {
 
  private:
   static constexpr R kEps = static_cast<R>(1e-5);
+  static constexpr int kFan = 16;         // camera rays that share one gather()
+  static constexpr int kCandidates = 32;  // spheres a fan may keep; more: each ray walks the hierarchy
 
   // v x (1/|v|), as the original normalises.
   static V normalize(const V& v) { return v * (R(1) / M::sqrt(dot(v, v))); }
@@ -107,6 +127,44 @@ class Tracer {
     if (depth == 0) return s_.background;
     int32_t hit;
     const R t = closest(o, d, hit);
+    return shade(depth, o, d, t, hit);
+  }
+
+  // trace() for a camera ray whose possible spheres gather() listed; a
+  // direction too far from unit length for gather()'s reasoning walks the
+  // hierarchy instead.
+  V trace_among(int32_t depth, const V& o, const V& d, const typename SphereBvh<M>::Candidate* candidates,
+                int32_t count) const {
+    if (depth == 0) return s_.background;
+    const R dd = dot(d, d);
+    if (!SphereBvh<M>::unit_enough(dd)) return trace(depth, o, d);
+    R best = R(-1);
+    int32_t hit = kNone;
+    auto offer = [&](R t, int32_t i) {
+      if (t > R(0) && (hit == kNone || t < best || (t == best && i < hit))) {
+        best = t;
+        hit = i;
+      }
+    };
+    for (int32_t p = 0; p < bvh_.plane_count(); ++p) {
+      const int32_t i = bvh_.plane(p);
+      const Object<R>& ob = s_.objects[i];
+      offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
+    }
+    for (int32_t k = 0; k < count; ++k) {
+      const auto& sp = candidates[k];
+      const V oc = o - sp.c;
+      const R doc = dot(d, oc);
+      const R delta = doc * doc - dot(oc, oc) + sp.r2;
+      if (!(delta >= R(0))) continue;
+      const R root = M::sqrt(delta);
+      offer(-doc - root, sp.index);
+      offer(-doc + root, sp.index);
+    }
+    return shade(depth, o, d, best, hit);
+  }
+
+  V shade(int32_t depth, const V& o, const V& d, R t, int32_t hit) const {
     if (hit == kNone) return s_.background;
     const Object<R>& ob = s_.objects[hit];
     const V x = o + d * t;
