@@ -7,7 +7,9 @@
 # e.g. bench/host/jaworski_speed.sh /work/ext/jaworski/ray-tracer +RTS -N -RTS
 # Checks first that both write the same BMP, byte for byte; then runs minrt on
 # one thread, minrt on every core and the original in turn, N times each,
-# and prints the medians of the wall times and the ratios.
+# and prints the medians of the wall and CPU times (user + system, from
+# bash's time) and the ratios. On a loaded machine the CPU times are the
+# steadier measure: a short run's wall time is mostly waiting for a core.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=7
@@ -42,29 +44,43 @@ if ! cmp -s "$work/original.bmp" "$work/minrt.bmp"; then
 fi
 echo "same BMP: sha256 $(sha256sum "$work/minrt.bmp" | cut -c1-16)... ($(stat -c %s "$work/minrt.bmp") bytes)"
 
-seconds() {  # command... ; prints wall seconds
-  local t0 t1
-  t0=$(date +%s.%N)
-  "$@" >/dev/null
-  t1=$(date +%s.%N)
-  awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.4f\n", b - a}'
+# command... ; prints "wall cpu" seconds (cpu: user + system), to the millisecond
+seconds() {
+  local t TIMEFORMAT='%3R %3U %3S'
+  t=$( { time "$@" >/dev/null 2>/dev/null; } 2>&1)
+  awk '{printf "%.3f %.3f\n", $1, $2 + $3}' <<<"$t"
 }
 median() { sort -g | awk '{a[NR]=$1} END{print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 
-one=() all=() theirs=()
+declare -A wall cpu
+names=(one all theirs)
 for ((i = 0; i < runs; i++)); do
-  one+=("$(seconds "$minrt" -q --threads 1 -o "$work/a.bmp" "$work/scene.txt")")
-  all+=("$(seconds "$minrt" -q -o "$work/b.bmp" "$work/scene.txt")")
-  theirs+=("$(seconds "$original" "${original_opts[@]}" -o "$work/c.bmp" "$work/scene.txt")")
+  for name in "${names[@]}"; do
+    case $name in
+      one) r=$(seconds "$minrt" -q --threads 1 -o "$work/a.bmp" "$work/scene.txt") ;;
+      all) r=$(seconds "$minrt" -q -o "$work/b.bmp" "$work/scene.txt") ;;
+      theirs) r=$(seconds "$original" "${original_opts[@]}" -o "$work/c.bmp" "$work/scene.txt") ;;
+    esac
+    wall[$name]+="${r% *} "
+    cpu[$name]+="${r#* } "
+  done
 done
-m_one=$(printf '%s\n' "${one[@]}" | median)
-m_all=$(printf '%s\n' "${all[@]}" | median)
-m_theirs=$(printf '%s\n' "${theirs[@]}" | median)
-cpu=$(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo)
-printf 'cpu: %s, %s cores; load average %s\n' "$cpu" "$(nproc)" "$(cut -d' ' -f1-3 /proc/loadavg)"
-printf '640x480, 20 spheres, 2 lights, ray depth 4; medians of %d interleaved runs (wall seconds)\n' "$runs"
-printf '  minrt, 1 thread        %.4f  [%s]\n' "$m_one" "${one[*]}"
-printf '  minrt, %d threads       %.4f  [%s]\n' "$(nproc)" "$m_all" "${all[*]}"
-printf '  original %-13s %.4f  [%s]\n' "${original_opts[*]:-}" "$m_theirs" "${theirs[*]}"
-awk -v t="$m_theirs" -v a="$m_one" -v b="$m_all" \
-  'BEGIN{printf "  ratio: original / minrt 1 thread %.1fx, / minrt all cores %.1fx\n", t / a, t / b}'
+med() { tr ' ' '\n' <<<"$1" | grep . | median; }
+cpu_model=$(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo)
+printf 'cpu: %s, %s cores; load average %s\n' "$cpu_model" "$(nproc)" "$(cut -d' ' -f1-3 /proc/loadavg)"
+printf '640x480, 20 spheres, 2 lights, ray depth 4; medians of %d interleaved runs (seconds)\n' "$runs"
+printf '  %-26s %8s %8s   %s\n' program wall cpu 'wall times'
+label() {
+  case $1 in
+    one) echo "minrt, 1 thread" ;;
+    all) echo "minrt, $(nproc) threads" ;;
+    theirs) echo "original ${original_opts[*]:-}" ;;
+  esac
+}
+for name in "${names[@]}"; do
+  printf '  %-26s %8.3f %8.3f   [%s]\n' "$(label "$name")" "$(med "${wall[$name]}")" "$(med "${cpu[$name]}")" "${wall[$name]% }"
+done
+awk -v tw="$(med "${wall[theirs]}")" -v tc="$(med "${cpu[theirs]}")" \
+  -v ow="$(med "${wall[one]}")" -v oc="$(med "${cpu[one]}")" -v aw="$(med "${wall[all]}")" \
+  'BEGIN{printf "  ratio, wall: original / minrt 1 thread %.1fx, / minrt all cores %.1fx\n", tw / ow, tw / aw;
+         printf "  ratio, cpu:  original / minrt 1 thread %.1fx\n", tc / oc}'

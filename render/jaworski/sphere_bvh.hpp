@@ -1,9 +1,10 @@
-// A four-wide bounding-ball hierarchy over a Jaworski scene's spheres that
+// A binary bounding-ball hierarchy over a Jaworski scene's spheres that
 // skips only spheres the tracer's own arithmetic would miss, so the bytes do
-// not change (the 24 reference BMPs pin them). Four children or four
-// spheres are tested at once in vector lanes (GCC/Clang vector extensions:
-// SSE2 on the host, plain scalar code where there is no vector unit); every
-// lane does the scalar operations in the scalar order.
+// not change (the 24 reference BMPs pin them). A node's two children, or a
+// leaf's one or two spheres, are tested at once in vector lanes (GCC/Clang
+// vector extensions: an SSE2 register of doubles on the host, plain scalar
+// code where there is no vector unit); every lane does the scalar
+// operations in the scalar order. (Four lanes measured slower on SSE2.)
 //
 // Why a skip is exact. A sphere is missed when the computed
 // delta = doc^2 - |oc|^2 + r^2 is negative. For a unit ray direction that
@@ -37,8 +38,8 @@ class SphereBvh {
   static constexpr int32_t kSearchedSplit = 48;
   typedef R Lanes __attribute__((vector_size(kWidth * sizeof(R))));
 
-  // Four balls: sphere centres with radius * radius (a leaf), or the bounds
-  // of four child nodes with their squared, widened radii.
+  // Two balls: sphere centres with radius * radius (a leaf, `count` of
+  // them), or the bounds of two child nodes with their squared, widened radii.
   struct Node {
     Lanes cx, cy, cz, r2;
     int32_t child[kWidth];  // leaf: object indices
@@ -144,8 +145,8 @@ class SphereBvh {
     int32_t spheres = 0;
     for (int32_t i = 0; i < s.object_count; ++i) spheres += s.objects[i].kind == ShapeKind::kSphere ? 1 : 0;
     plane_count_ = s.object_count - spheres;
-    // Inner nodes have four children and leaves at least one sphere, so
-    // there are at most 1 + 4 (spheres - 1) / 3 nodes.
+    // Inner nodes have two children and leaves at least one sphere, so
+    // there are at most 2 spheres - 1 nodes.
     nodes_ = arena.alloc_zeroed<Node>(static_cast<size_t>(2 * spheres + 1));
     Item* items = arena.alloc_zeroed<Item>(static_cast<size_t>(spheres + 1));
     planes_ = arena.alloc_zeroed<int32_t>(static_cast<size_t>(plane_count_ + 1));
