@@ -88,6 +88,16 @@ int run_minirt_cli(MinirtCli& cli) {
   }
   const int width = cli.width > 0 ? cli.width : kMinirtDefaultWidth;
   const int height = cli.height > 0 ? cli.height : kMinirtDefaultHeight;
+  // The window opens before the render and shows rows as they finish.
+  LiveWindow window;
+  if ((!write || cli.show) && !window.open("minrt: " + path, why)) {
+    if (!write) {
+      print_minirt_error("minrt: cannot open a window: " + why + " (give -o FILE.png to write the image instead)");
+      return kMinirtExitError;
+    }
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  }
+  cli.options.window = &window;
   GeneralResult result;
   std::string error;
   if (!render_minirt(text, path, base_dir, width, height, cli.options, result, error)) {
@@ -116,16 +126,8 @@ int run_minirt_cli(MinirtCli& cli) {
       print_minirt_error("minrt: cannot write " + out_path + ": " + why);
       return kMinirtExitError;
     }
-    if (!cli.show) return 0;
   }
-  if (!show_image(result.image, "minrt: " + path, why)) {
-    if (write) {
-      std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
-      return 0;
-    }
-    print_minirt_error("minrt: cannot open a window: " + why + " (give -o FILE.png to write the image instead)");
-    return kMinirtExitError;
-  }
+  if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
   return 0;
 }
 

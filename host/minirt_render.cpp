@@ -1,4 +1,5 @@
 #include "minirt_render.hpp"
+#include "image_window.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -129,9 +130,14 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   if (threads > height) threads = height;
   const Clock::time_point t_render = Clock::now();
   std::atomic<int> next{0};
+  LiveWindow* window = options.window != nullptr && options.window->is_open() ? options.window : nullptr;
+  if (window != nullptr) window->begin(width, height);
   auto work = [&] {
-    for (int y; (y = next.fetch_add(1)) < height;)
-      renderer.render_row(y, out.image.rgba.data() + static_cast<size_t>(y) * width * 4);
+    for (int y; (y = next.fetch_add(1)) < height;) {
+      uint8_t* row = out.image.rgba.data() + static_cast<size_t>(y) * width * 4;
+      renderer.render_row(y, row);
+      if (window != nullptr) window->row_rgba(y, row);  // --show: as each row is done
+    }
   };
   std::vector<std::thread> pool;
   for (int i = 1; i < threads; ++i) pool.emplace_back(work);

@@ -342,13 +342,23 @@ int main(int argc, char** argv) {
     }
   } tee{file_sink.sink(), &decoder};
   const minrt::ByteSink sink = window.is_open() ? minrt::ByteSink{&Tee::write_fn, &tee} : file_sink.sink();
+  // Several threads hand the PPM writer every row at the end: the window
+  // takes them as they finish instead (a row given twice keeps its first).
+  struct WindowRows {
+    minrt::host::LiveWindow* window;
+    void begin(int, int) {}
+    void row(int y, const uint8_t* rgb) { window->row_rgb(y, rgb); }
+    void end() {}
+  } window_rows{&window};
+  window.begin(options.width, options.height);  // the size is --size's
+  const minrt::RowSink to_window = minrt::row_sink_of(window_rows);
   WarningContext wctx{display_name};
   minrt::WarningSink warnings;
   if (!quiet) warnings = minrt::WarningSink{&print_warning, &wctx};
   minrt::Diagnostic error;
   const minrt::RenderStatus st =
       minrt::host::render_variant(variant, source.source(), sink, options, error, warnings,
-                                  general.options.threads);
+                                  general.options.threads, window.is_open() ? &to_window : nullptr);
   const bool read_failed = std::ferror(in) != 0;
   if (in != stdin) std::fclose(in);
   const bool write_failed = file_sink.failed || std::fflush(out) != 0;

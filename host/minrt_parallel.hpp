@@ -75,7 +75,7 @@ class RowExchange {
 // for the copies runs out (nothing is written then).
 template <MathPolicy M>
 bool render_minrt_parallel(const Scene<typename M::real>& scene, int width, int height, int threads,
-                           const RowSink& out) {
+                           const RowSink& out, const RowSink* finished = nullptr) {
   const size_t row_bytes = static_cast<size_t>(width) * 3;
   std::vector<uint8_t> image;
   struct Worker {
@@ -100,10 +100,14 @@ bool render_minrt_parallel(const Scene<typename M::real>& scene, int width, int 
   struct Rows {
     uint8_t* image;
     size_t row_bytes;
+    const RowSink* finished;
     void begin(int, int) {}
-    void row(int y, const uint8_t* rgb) { std::memcpy(image + static_cast<size_t>(y) * row_bytes, rgb, row_bytes); }
+    void row(int y, const uint8_t* rgb) {
+      std::memcpy(image + static_cast<size_t>(y) * row_bytes, rgb, row_bytes);
+      if (finished != nullptr) finished->row(y, rgb);  // --show: as soon as it is done
+    }
     void end() {}
-  } rows{image.data(), row_bytes};
+  } rows{image.data(), row_bytes, finished};
   const RowSink into_image = row_sink_of(rows);
   const int band = minrt_band_rows(height, threads);
   RowExchange exchange(height);

@@ -14,7 +14,7 @@ namespace {
 // `make.template operator()<R>()` gives the scene's value source for real type R.
 template <MathPolicy M, class MakeValues>
 RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions& options, Diagnostic& error,
-                 const WarningSink& warnings, int threads) {
+                 const WarningSink& warnings, int threads, const RowSink* finished) {
   // The one allocation: sized from the limits and the width, before reading.
   const int width = valid_size(options.width, options.height) ? options.width : 1;
   const size_t bytes = arena_bytes_for_width<M>(width);
@@ -31,7 +31,7 @@ RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions
   threads = minrt_thread_count(threads, options.height);
   if (threads == 1) {
     state->tracer.render(out);
-  } else if (!render_minrt_parallel<M>(state->scene, options.width, options.height, threads, out)) {
+  } else if (!render_minrt_parallel<M>(state->scene, options.width, options.height, threads, out, finished)) {
     error.text("cannot allocate memory for ").number(threads).text(" threads");
     return RenderStatus::kOutOfMemory;
   }
@@ -40,17 +40,18 @@ RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions
 
 template <class MakeValues>
 RenderStatus dispatch(Variant v, const MakeValues& make, const RowSink& out, const RenderOptions& options,
-                      Diagnostic& error, const WarningSink& warnings, int threads) {
+                      Diagnostic& error, const WarningSink& warnings, int threads,
+                      const RowSink* finished = nullptr) {
   if (variant_name(v) == nullptr) {
     error.text("this precision and shim combination is not built");
     return RenderStatus::kBadOptions;
   }
-  if (v.precision == Precision::kDouble) return run<LibmDouble>(make, out, options, error, warnings, threads);
+  if (v.precision == Precision::kDouble) return run<LibmDouble>(make, out, options, error, warnings, threads, finished);
   switch (v.shims) {
-    case ShimSet::kLibm: return run<LibmFloat>(make, out, options, error, warnings, threads);
-    case ShimSet::kPortable: return run<PortableFloat>(make, out, options, error, warnings, threads);
-    case ShimSet::kPortableFast: return run<PortableFloatFast>(make, out, options, error, warnings, threads);
-    case ShimSet::kPortableMin: return run<PortableFloatMin>(make, out, options, error, warnings, threads);
+    case ShimSet::kLibm: return run<LibmFloat>(make, out, options, error, warnings, threads, finished);
+    case ShimSet::kPortable: return run<PortableFloat>(make, out, options, error, warnings, threads, finished);
+    case ShimSet::kPortableFast: return run<PortableFloatFast>(make, out, options, error, warnings, threads, finished);
+    case ShimSet::kPortableMin: return run<PortableFloatMin>(make, out, options, error, warnings, threads, finished);
   }
   return RenderStatus::kBadOptions;
 }
@@ -69,14 +70,16 @@ const char* variant_name(Variant v) {
 }
 
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
-                            Diagnostic& error, const WarningSink& warnings, int threads) {
+                            Diagnostic& error, const WarningSink& warnings, int threads, const RowSink* finished) {
   PpmWriter ppm(out, options.format);
-  return render_variant_rows(v, in, ppm.sink(), options, error, warnings, threads);
+  return render_variant_rows(v, in, ppm.sink(), options, error, warnings, threads, finished);
 }
 
 RenderStatus render_variant_rows(Variant v, ByteSource in, const RowSink& out, const RenderOptions& options,
-                                 Diagnostic& error, const WarningSink& warnings, int threads) {
-  return dispatch(v, [&]<class R>() { return SldTextValues<R>(in); }, out, options, error, warnings, threads);
+                                 Diagnostic& error, const WarningSink& warnings, int threads,
+                                 const RowSink* finished) {
+  return dispatch(v, [&]<class R>() { return SldTextValues<R>(in); }, out, options, error, warnings, threads,
+                  finished);
 }
 
 RenderStatus render_variant_course_words(Variant v, ByteSource words, bool big_endian, ByteSink out,

@@ -4,8 +4,8 @@
 # Jaworski, a CS418 and an SLD scene and for host-send's image from the
 # simulated board; mid-render (MINRT_SHOW_PARTIAL_SNAPSHOT, with every row
 # hand-over slowed by MINRT_SHOW_ROW_DELAY_MS) it shows some rows drawn and
-# the rest background, for every format and for the board's rows as they
-# arrive; without a display it warns in one line, exits 0 and still writes
+# the rest background, for every format (SLD on one thread, through its PPM
+# bytes, and on two) and for the board's rows as they arrive; without a display it warns in one line, exits 0 and still writes
 # the file. A miniRT scene shows its window without -o, as its subject wants.
 # Usage: window_check.sh MINRT IMAGE_COMPARE SHARED_DIR WORKDIR [HOST_SEND]
 set -euo pipefail
@@ -46,8 +46,12 @@ live jw-live "$minrt" --threads 2 --show "$jw" -o "$work/jw-live.bmp"
 "$compare" --identical "$work/jw-live-final.ppm" "$work/jw-live.bmp" >/dev/null
 live cs-live "$minrt" --threads 2 --show "$cs" -o "$work/cs-live.ppm"
 "$compare" --identical "$work/cs-live-final.ppm" "$work/cs-live.ppm" >/dev/null
-live sld-live "$minrt" --size 48x32 --show -o "$work/sld-live.ppm" "$shared/scenes/contest.sld"
+live sld-live "$minrt" --size 64x96 --show -o "$work/sld-live.ppm" "$shared/scenes/contest.sld"
 "$compare" --identical "$work/sld-live-final.ppm" "$work/sld-live.ppm" >/dev/null
+live sld1-live "$minrt" --threads 1 --size 64x96 --show -o "$work/sld1-live.ppm" "$shared/scenes/contest.sld"
+"$compare" --identical "$work/sld1-live-final.ppm" "$work/sld1-live.ppm" >/dev/null
+live rt-live "$minrt" --size 160x120 --threads 2 --show -o "$work/rt-live.ppm" "$shared/formats/minirt/valid/showcase.rt"
+"$compare" --identical "$work/rt-live-final.ppm" "$work/rt-live.ppm" >/dev/null
 if [ -n "$host_send" ]; then
   DELAY=1 live board-live "$host_send" -q --sim --show "$jw" -o "$work/board-live.bmp"
   "$compare" --identical "$work/board-live-final.ppm" "$work/board-live.bmp" >/dev/null
