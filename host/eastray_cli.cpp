@@ -1,4 +1,5 @@
 #include "eastray_cli.hpp"
+#include "image_window.hpp"
 
 #include <atomic>
 #include <cstdio>
@@ -57,7 +58,7 @@ void print_warning(void* ctx, const Diagnostic& d) {
 
 template <class M>
 bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::vector<uint8_t>& rgb,
-            std::string& output_statement, std::string& error) {
+            std::string& output_statement, std::string& error, LiveWindow* window) {
   using R = typename M::real;
   using Scene = eastray::Scene<R>;
   const typename Scene::Capacities caps = Scene::Capacities::for_text(x.text.size());
@@ -92,11 +93,14 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   if (threads < 1) threads = 1;
   if (threads > height) threads = height;
   std::atomic<int> next{0};
+  if (window != nullptr && !window->is_open()) window = nullptr;
+  if (window != nullptr) window->begin(width, height);
   auto work = [&] {
     std::vector<R> row(stride);
     for (int y; (y = next.fetch_add(1)) < height;) {
       tracer.render_row(y, row.data());
       for (std::size_t i = 0; i < stride; ++i) rgb[stride * static_cast<std::size_t>(y) + i] = eastray::Tracer<M>::to_byte(row[i]);
+      if (window != nullptr) window->row_rgb(y, rgb.data() + stride * static_cast<std::size_t>(y));
     }
   };
   std::vector<std::thread> pool;
@@ -125,18 +129,18 @@ std::string eastray_output_name(const std::string& option, const std::string& st
 }
 
 bool render_eastray(const std::string& path, const std::string& shown, const std::string& text, Variant v,
-                    bool quiet, EastrayImage& out, std::string& error) {
+                    bool quiet, EastrayImage& out, std::string& error, LiveWindow* window) {
   ExpandedEastray x;
   if (!preprocess_eastray(path, shown, text, x, error)) return false;
   int& width = out.width;
   int& height = out.height;
   std::vector<uint8_t>& rgb = out.rgb;
   std::string& statement = out.output_statement;
-  if (v.precision == Precision::kDouble) return render<LibmDouble>(x, quiet, width, height, rgb, statement, error);
-  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(x, quiet, width, height, rgb, statement, error);
-  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(x, quiet, width, height, rgb, statement, error);
-  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(x, quiet, width, height, rgb, statement, error);
-  return render<PortableFloat>(x, quiet, width, height, rgb, statement, error);
+  if (v.precision == Precision::kDouble) return render<LibmDouble>(x, quiet, width, height, rgb, statement, error, window);
+  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(x, quiet, width, height, rgb, statement, error, window);
+  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(x, quiet, width, height, rgb, statement, error, window);
+  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(x, quiet, width, height, rgb, statement, error, window);
+  return render<PortableFloat>(x, quiet, width, height, rgb, statement, error, window);
 }
 
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
@@ -174,21 +178,29 @@ int run_eastray_cli(EastrayCli& cli) {
   const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
   if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
   EastrayImage img;
-  std::string error;
-  if (!render_eastray(cli.scene_path, shown, cli.scene_text, cli.variant, cli.quiet, img, error)) {
+  std::string error, why;
+  LiveWindow window;
+  if (cli.show && !window.open("minrt: " + shown, why))
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  if (!render_eastray(cli.scene_path, shown, cli.scene_text, cli.variant, cli.quiet, img, error, &window)) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;
   }
+  // Once the file is written (or not asked for), the window stays until closed.
+  auto wait_for_window = [&] {
+    if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
+    return 0;
+  };
   const int width = img.width, height = img.height;
   const std::vector<uint8_t>& rgb = img.rgb;
   const std::string& statement = img.output_statement;
-  if (!cli.save) return 0;
+  if (!cli.save) return wait_for_window();
   bool tiff = false;
   std::string warning;
+  why.clear();
   const std::string out_path =
       eastray_output_name(cli.output_path != nullptr ? cli.output_path : "", statement, cli.scene_path, tiff, warning);
   if (!warning.empty() && !cli.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
-  std::string why;
   if (!check_output_target(out_path, cli.write_through, why)) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
@@ -217,7 +229,7 @@ int run_eastray_cli(EastrayCli& cli) {
     std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
     return kExitIoError;
   }
-  return 0;
+  return wait_for_window();
 }
 
 }  // namespace minrt::host

@@ -12,6 +12,8 @@
 
 namespace minrt::host {
 
+class LiveWindow;
+
 struct EastrayCli {
   std::string scene_path;  // "-" for standard input
   std::string scene_text;  // already read when scene_path is "-"
@@ -19,6 +21,7 @@ struct EastrayCli {
   bool save = true;        // -n turns it off
   bool quiet = false;      // -q: no warnings
   bool write_through = false;
+  bool show = false;       // -s: a window that shows the rows as they render
   Variant variant;
 };
 
@@ -33,8 +36,9 @@ struct EastrayImage {
 // Preprocesses `text` (read from `path`, shown as `shown`; includes are
 // found from it), reads and renders it. False with the one-line message.
 // Warnings go to standard error unless `quiet`.
+// `window` (--show), when open, gets each row as it is rendered.
 bool render_eastray(const std::string& path, const std::string& shown, const std::string& text, Variant v,
-                    bool quiet, EastrayImage& out, std::string& error);
+                    bool quiet, EastrayImage& out, std::string& error, LiveWindow* window = nullptr);
 
 // Where the image goes and in which format, from -o, the scene's output
 // statement and the scene's path. `tiff` is set for .tif/.tiff names;

@@ -278,6 +278,7 @@ int main(int argc, char** argv) {
     e.quiet = quiet;
     e.write_through = write_through;
     e.variant = variant;
+    e.show = show;
     return minrt::host::run_eastray_cli(e);
   }
   if (scene_format == minrt::host::SceneFormat::kCs418) {

@@ -161,6 +161,7 @@ TransferResult raw_exchange(Exchange& ex, const std::string& scene, Receiver& in
   out += scene;
   out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
   CheckedReply<Receiver> rx(inner, ex.check);
+  rx.follow(ex.live);
   return exchange(ex, out, rx);
 }
 }  // namespace

@@ -6,7 +6,8 @@
 # hand-over slowed by MINRT_SHOW_ROW_DELAY_MS) it shows some rows drawn and
 # the rest background, for every format (SLD on one thread, through its PPM
 # bytes, and on two) and for the board's rows as they arrive; without a display it warns in one line, exits 0 and still writes
-# the file. A miniRT scene shows its window without -o, as its subject wants.
+# the file (also miniRT and EASTRAY). A miniRT scene shows its window without
+# -o, as its subject wants.
 # Usage: window_check.sh MINRT IMAGE_COMPARE SHARED_DIR WORKDIR [HOST_SEND]
 set -euo pipefail
 minrt=$1 compare=$2 shared=$3 work=$4 host_send=${5:-}
@@ -52,9 +53,19 @@ live sld1-live "$minrt" --threads 1 --size 64x96 --show -o "$work/sld1-live.ppm"
 "$compare" --identical "$work/sld1-live-final.ppm" "$work/sld1-live.ppm" >/dev/null
 live rt-live "$minrt" --size 160x120 --threads 2 --show -o "$work/rt-live.ppm" "$shared/formats/minirt/valid/showcase.rt"
 "$compare" --identical "$work/rt-live-final.ppm" "$work/rt-live.ppm" >/dev/null
+live ray-live "$minrt" --show -o "$work/ray-live.png" "$shared/formats/eastray/basic_sphere_floor_elight.ray"
+"$compare" --identical "$work/ray-live-final.ppm" "$work/ray-live.png" >/dev/null
 if [ -n "$host_send" ]; then
   DELAY=1 live board-live "$host_send" -q --sim --show "$jw" -o "$work/board-live.bmp"
   "$compare" --identical "$work/board-live-final.ppm" "$work/board-live.bmp" >/dev/null
+  # The board's PNG (stored deflate, one block a row) and its PPM, followed as they arrive.
+  DELAY=1 live board-png-live "$host_send" -q --sim --show "$cs" -o "$work/board-live.png"
+  # (the board renders as the host's float model; the PPM drops alpha, which is 0 or 255 here)
+  "$minrt" --precision float --shims portable "$cs" -o "$work/board-model.ppm"
+  "$compare" --identical "$work/board-png-live-final.ppm" "$work/board-model.ppm" >/dev/null
+  DELAY=1 live board-ppm-live "$host_send" -q --sim --show --size 64x48 "$shared/scenes/contest.sld" \
+    -o "$work/board-live.ppm"
+  "$compare" --identical "$work/board-ppm-live-final.ppm" "$work/board-live.ppm" >/dev/null
 fi
 rm -f "$work/nodisplay.bmp"
 err=$(env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$minrt" --show "$jw" -o "$work/nodisplay.bmp" 2>&1)
