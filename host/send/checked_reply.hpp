@@ -14,7 +14,7 @@
 #include <minrt/serial_protocol.h>
 
 #include "core/base/crc32.hpp"
-#include "image_stream_decoder.hpp"
+#include "core/base/byte_io.hpp"
 #include "protocol/raw_check.hpp"
 
 namespace minrt::send {
@@ -31,8 +31,8 @@ template <class Receiver>
 class CheckedReply {
  public:
   CheckedReply(Receiver& inner, RawCheck mode) : inner_(inner), mode_(mode) {}
-  // --show: the image bytes also go to the window as they arrive.
-  void follow(minrt::host::ImageStreamDecoder* live) { live_ = live; }
+  // --show: the image bytes also go here (the window's decoder) as they arrive.
+  void follow(ByteSink live) { live_ = live; }
 
   std::size_t feed(const std::uint8_t* data, std::size_t size) {
     std::size_t i = 0;
@@ -53,7 +53,7 @@ class CheckedReply {
       if (inner_.image_bytes()) {
         image_.append(reinterpret_cast<const char*>(data + i), used);
         crc_ = crc32_update(crc_, data + i, used);
-        if (live_ != nullptr) live_->feed(data + i, used);
+        if (live_.write != nullptr) live_.put(data + i, used);
       }
       i += used;
       if (inner_.done()) phase_ = announced_ ? Phase::kTrailer : Phase::kDone;
@@ -128,7 +128,7 @@ class CheckedReply {
 
   Receiver& inner_;
   RawCheck mode_;
-  minrt::host::ImageStreamDecoder* live_ = nullptr;
+  ByteSink live_{nullptr, nullptr};
   Phase phase_ = Phase::kFirst;
   bool announced_ = false;
   bool checked_ = false;

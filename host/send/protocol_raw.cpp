@@ -161,7 +161,11 @@ TransferResult raw_exchange(Exchange& ex, const std::string& scene, Receiver& in
   out += scene;
   out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
   CheckedReply<Receiver> rx(inner, ex.check);
-  rx.follow(ex.live);
+  if (ex.live != nullptr)
+    rx.follow(ByteSink{[](void* c, const std::uint8_t* p, std::size_t n) {
+                         static_cast<minrt::host::ImageStreamDecoder*>(c)->feed(p, n);
+                       },
+                       ex.live});
   return exchange(ex, out, rx);
 }
 }  // namespace

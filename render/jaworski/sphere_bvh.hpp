@@ -252,7 +252,7 @@ class SphereBvh {
           V c, e;
           R gl, gr;
           if (!ball(items, k, c, gl, e) || !ball(items + k, count - k, c, gr, e)) continue;
-          const R cost = static_cast<R>(k) * gl * gl + static_cast<R>(count - k) * gr * gr;
+          const R cost = M::from_int(k) * gl * gl + M::from_int(count - k) * gr * gr;
           if (best < R(0) || cost < best) {
             best = cost;
             axis = a;
