@@ -372,7 +372,7 @@ int run(const Options& options) {
     const std::size_t slash = o.scene.rfind('/');
     const std::string base_dir = slash == std::string::npos ? "" : o.scene.substr(0, slash + 1);
     const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
-    if (!build_minirt_texture_preamble(scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
+    if (!build_minirt_texture_preamble(scene, o.scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
     if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");

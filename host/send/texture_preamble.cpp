@@ -49,7 +49,7 @@ bool load_ppm(const std::string& base_dir, const std::string& name, Texels& out,
       out.rgb = std::move(tex.rgb);
       return true;
     }
-    if (first.empty()) first = "texture " + path + ": " + why;
+    if (first.empty()) first = path + ": " + why;
   }
   error = first;
   return false;
@@ -125,21 +125,27 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
   return assemble(names, where, base_dir, &load_png, board_bytes, out, error);
 }
 
-bool build_minirt_texture_preamble(const std::string& scene, const std::string& base_dir,
-                                   std::uint64_t board_bytes, std::string& out, std::string& error) {
-  std::vector<std::string> names;
+bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,
+                                   const std::string& base_dir, std::uint64_t board_bytes, std::string& out,
+                                   std::string& error) {
+  std::vector<std::string> names, where;
   std::set<std::string> seen;
   std::istringstream lines(scene);
   std::string line;
-  while (std::getline(lines, line)) {
+  for (int number = 1; std::getline(lines, line); ++number) {
     std::istringstream words(line);
     std::vector<std::string> w;
     for (std::string x; words >> x;) w.push_back(x);
     if (w.empty() || w[0] != "spt") continue;
-    for (std::size_t i = 4; i < w.size() && i < 6; ++i)  // texture, then the optional bump map
-      if (seen.insert(w[i]).second) names.push_back(w[i]);
+    for (std::size_t i = 4; i < w.size() && i < 6; ++i) {  // texture, then the optional bump map
+      if (!seen.insert(w[i]).second) continue;
+      names.push_back(w[i]);
+      // minrt's miniRT message for the same file: SCENE:LINE: FIELD "NAME": PATH: reason.
+      where.push_back(scene_name + ":" + std::to_string(number) + ": textured sphere " +
+                      (i == 4 ? "texture" : "bump map") + " \"" + w[i] + "\": ");
+    }
   }
-  return assemble(names, {}, base_dir, &load_ppm, board_bytes, out, error);
+  return assemble(names, where, base_dir, &load_ppm, board_bytes, out, error);
 }
 
 }  // namespace minrt::send

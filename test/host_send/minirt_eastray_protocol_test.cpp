@@ -158,6 +158,27 @@ TEST_CASE("broken miniRT and EASTRAY files over course and framed: located error
       CHECK_FALSE(hs_test::file_exists(out));
     }
   }
+  // miniRT textures are read on the host: one that is missing stops host-send
+  // before sending, with minrt's own "FILE:LINE: MESSAGE", on every protocol.
+  for (const char* name : {"bump_missing_file", "texture_missing_file"}) {
+    const std::string scene = source + "/test/minirt/bad/" + name + ".rt";
+    const RunResult m = run(with({HS_MINRT, scene, "-o", dir.file("m.png")}, kMinirtSize));
+    REQUIRE(m.status != 0);
+    const std::size_t nl = m.err.find('\n');
+    REQUIRE(nl != std::string::npos);
+    const std::string second = m.err.substr(nl + 1, m.err.find('\n', nl + 1) - nl - 1);
+    REQUIRE(second.rfind(scene + ":", 0) == 0);
+    std::vector<std::vector<std::string>> every = text_protocols();
+    every.push_back({"--protocol", "raw"});
+    for (const auto& protocol : every) {
+      const std::string out = dir.file("out.png");
+      const RunResult r = send_sim(scene, out, with(protocol, kMinirtSize));
+      INFO(scene << " " << joined(protocol) << "\n" << r.err << "minrt: " << second);
+      CHECK(r.status == 3);
+      CHECK(r.err.find("scene rejected before sending: " + second + "\n") != std::string::npos);
+      CHECK_FALSE(hs_test::file_exists(out));
+    }
+  }
   // EASTRAY: host-send checks the expanded scene before sending, with
   // minrt's own "FILE:LINE:COL: error: MESSAGE".
   for (const char* name : {"bad-number", "undefined-vertex", "unterminated-block", "range-kind"}) {
