@@ -32,7 +32,7 @@ uint64_t parse_port(const std::string& opt, const std::string& v) {
 }  // namespace
 
 const char* cli_help_text() {
-  return "usage: firmware-sim [OPTIONS] ELF [-- ARGS...]\n"
+  return "Usage: firmware-sim [OPTIONS] ELF [-- ARGS...]\n"
          "       firmware-sim [--fpu-model FILE] [--fpu KEY=VALUE,...] --fpu-check\n"
          "Runs a bare-metal RV32IMF ELF; exits with the firmware's exit code.\n"
          "  --uart-in FILE         UART input from FILE (default stdin)\n"

@@ -23,7 +23,8 @@ for t in $tools; do
   text=$(MANWIDTH=80 man -l "$page" 2>&1) || fail "man -l $page failed: $text"
   # The page has the sections help2man writes and the tool's own options.
   printf '%s\n' "$text" | grep -q '^NAME' || fail "$t.1: no NAME section"
-  printf '%s\n' "$text" | grep -q '^SYNOPSIS\|^DESCRIPTION' || fail "$t.1: no SYNOPSIS/DESCRIPTION"
+  printf '%s\n' "$text" | grep -q '^SYNOPSIS' || fail "$t.1: no SYNOPSIS"
+  printf '%s\n' "$text" | grep -q '^DESCRIPTION' || fail "$t.1: no DESCRIPTION"
   printf '%s\n' "$text" | grep -q -- '--help' || fail "$t.1: no --help option"
   printf '%s\n' "$text" | grep -q '^ *'"$t"' ' || fail "$t.1: the tool's name is not in the page"
 done

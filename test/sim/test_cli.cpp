@@ -146,7 +146,7 @@ TEST_CASE("bad usage is a one-line error with status 2", "[cli][usage]") {
   CHECK(r.err.find(bad + ":2: unknown key 'warp'") != std::string::npos);
   std::remove(bad.c_str());
   CHECK(sim("--help").status == 0);
-  CHECK(sim("--help").out.find("usage: firmware-sim") != std::string::npos);
+  CHECK(sim("--help").out.find("Usage: firmware-sim") != std::string::npos);
   CHECK(sim("--version").out.rfind("firmware-sim ", 0) == 0);
 }
 

@@ -139,7 +139,7 @@ TEST_CASE("help and version exit 0 on stdout", "[cli][usage]") {
   for (const char* opt : {"--help", "-h"}) {
     Result r = sim(opt);
     CHECK(r.status == 0);
-    CHECK(r.out.rfind("usage: firmware-sim", 0) == 0);
+    CHECK(r.out.rfind("Usage: firmware-sim", 0) == 0);
     CHECK(r.out.find("--ram BASE:SIZE") != std::string::npos);
     CHECK(r.out.find("--gdb PORT") != std::string::npos);
     CHECK(r.err.empty());
