@@ -25,7 +25,6 @@ namespace {
 
 constexpr int kExitSceneError = 2;
 constexpr int kExitIoError = 1;
-constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
 
 bool ends_with_nocase(const std::string& s, const char* tail) {
   const std::string t(tail);

@@ -13,7 +13,6 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 64;
 constexpr int kMaxMacroDepth = 32;  // a body naming a macro is expanded again, this deep at most
-constexpr std::size_t kMaxFileBytes = std::size_t{1} << 28;
 constexpr std::size_t kMaxExpandedBytes = std::size_t{1} << 29;
 
 bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
@@ -193,7 +192,7 @@ class Expander {
     for (const std::string& open : stack_)
       if (open == canon) return fail(shown, line, name_at, "#include cycle: '" + name + "' is already being read");
     std::string text, why;
-    if (!read_whole_file(found, text, why, kMaxFileBytes))
+    if (!read_whole_file(found, text, why, kMaxSceneBytes))
       return fail(shown, line, name_at, "cannot read include file '" + found + "': " + why);
     emit("", file, line);  // the directive's own line stays, blank
     return this->file(found, found, text, depth + 1);

@@ -8,6 +8,15 @@
 
 namespace minrt::host {
 
+// The largest scene file a host tool reads (minrt in every text format, the
+// files an EASTRAY scene includes, host-send's upload): 256 MiB, some 280
+// times the largest scene in ../shared (ray-many.txt, 0.9 MB). The wire
+// formats carry a scene's length in 32 bits (protocol/text_scene_upload.hpp)
+// and the board has 4 MiB of RAM by default, so a scene this large already
+// cannot reach the board; on the host the bound stops a wrong path to a huge
+// file at once with "larger than N bytes" rather than filling the memory.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
+
 // Reads `path` into `out`. False with `error` set to the reason ("Is a
 // directory", "No such file or directory", "larger than N bytes", ...) when
 // it cannot; `max_bytes` bounds what is read.

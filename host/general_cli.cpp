@@ -18,8 +18,6 @@ namespace {
 
 constexpr int kExitSceneError = 2;
 constexpr int kExitIoError = 1;
-// A scene file larger than this is refused before it is read.
-constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 30;
 
 struct WarningContext {
   const char* file;

@@ -23,7 +23,6 @@ namespace {
 
 constexpr int kExitSceneError = 2;
 constexpr int kExitIoError = 1;
-constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
 
 void append(void* ctx, const uint8_t* p, size_t n) {
   static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n);

@@ -14,8 +14,6 @@ namespace minrt::host {
 
 namespace {
 
-constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
-
 bool ends_with(const std::string& s, const char* tail) {
   const std::size_t n = std::strlen(tail);
   return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;

@@ -335,7 +335,8 @@ int run(const Options& options) {
 
   Options o = options;
   std::string scene, why;
-  if (!minrt::host::read_whole_file(o.scene, scene, why)) return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
+  if (!minrt::host::read_whole_file(o.scene, scene, why, minrt::host::kMaxSceneBytes))
+    return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
   // A CS418 scene (the first word decides, as in minrt): the board answers
   // with a PNG of the size on the png line, written by default to the name
   // given there, like the course's program.
