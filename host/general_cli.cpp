@@ -1,14 +1,13 @@
 #include "general_cli.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <sstream>
 
 #include <minrt/limits.hpp>
 
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
+#include "image_file_output.hpp"
 #include "image_window.hpp"
 #include "posix/output_file.hpp"
 
@@ -25,23 +24,6 @@ struct WarningContext {
 void print_warning(void* ctx, const Diagnostic& d) {
   const auto* w = static_cast<const WarningContext*>(ctx);
   std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w->file, d.pos.line, d.pos.col, d.message);
-}
-
-bool ends_with(const std::string& s, const char* tail) {
-  const std::size_t n = std::strlen(tail);
-  return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
-}
-
-bool write_ppm(std::FILE* f, const RgbaImage& img) {
-  std::fprintf(f, "P6\n%d %d\n255\n", img.width, img.height);
-  std::vector<uint8_t> row(static_cast<std::size_t>(img.width) * 3);
-  for (int y = 0; y < img.height; ++y) {
-    const uint8_t* src = img.rgba.data() + static_cast<std::size_t>(y) * img.width * 4;
-    for (int x = 0; x < img.width; ++x)
-      for (int c = 0; c < 3; ++c) row[3 * x + c] = src[4 * x + c];
-    if (std::fwrite(row.data(), 1, row.size(), f) != row.size()) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -120,14 +102,7 @@ int run_cs418_cli(GeneralCli& cli) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
   }
-  bool ok;
-  if (ends_with(out_path, ".ppm")) {
-    ok = write_ppm(output.file(), result.image);
-    if (!ok) why = std::strerror(errno);
-  } else {
-    ok = write_png(output.file(), result.image, why);
-  }
-  if (!ok) {
+  if (!write_image_file(output.file(), out_path, result.image, why)) {
     output.discard();
     std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.c_str());
     return kExitIoError;

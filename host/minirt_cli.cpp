@@ -1,11 +1,11 @@
 #include "minirt_cli.hpp"
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 #include "file_input.hpp"
+#include "image_file_output.hpp"
 #include "image_window.hpp"
 #include "minirt_render.hpp"
 #include "posix/output_file.hpp"
@@ -17,18 +17,6 @@ namespace {
 bool ends_with(const std::string& s, const char* tail) {
   const std::size_t n = std::strlen(tail);
   return s.size() >= n && s.compare(s.size() - n, n, tail) == 0;
-}
-
-bool write_ppm(std::FILE* f, const RgbaImage& img) {
-  std::fprintf(f, "P6\n%d %d\n255\n", img.width, img.height);
-  std::vector<uint8_t> row(static_cast<std::size_t>(img.width) * 3);
-  for (int y = 0; y < img.height; ++y) {
-    const uint8_t* src = img.rgba.data() + static_cast<std::size_t>(y) * img.width * 4;
-    for (int x = 0; x < img.width; ++x)
-      for (int c = 0; c < 3; ++c) row[3 * x + c] = src[4 * x + c];
-    if (std::fwrite(row.data(), 1, row.size(), f) != row.size()) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -112,14 +100,7 @@ int run_minirt_cli(MinirtCli& cli) {
       print_minirt_error("minrt: " + why);
       return kMinirtExitError;
     }
-    bool ok;
-    if (ends_with(out_path, ".ppm")) {
-      ok = write_ppm(output.file(), result.image);
-      if (!ok) why = std::strerror(errno);
-    } else {
-      ok = write_png(output.file(), result.image, why);
-    }
-    if (!ok || !output.commit(why)) {
+    if (!write_image_file(output.file(), out_path, result.image, why) || !output.commit(why)) {
       output.discard();
       print_minirt_error("minrt: cannot write " + out_path + ": " + why);
       return kMinirtExitError;
