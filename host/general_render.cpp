@@ -4,7 +4,6 @@
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
-#include <map>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -15,57 +14,11 @@
 #include "formats/cs418/cs418_reader.hpp"
 #include "formats/model/scene_builder.hpp"
 #include "render/general/render.hpp"
+#include "texture_files.hpp"
 
 namespace minrt::host {
 
 namespace {
-
-// Texture files, decoded once per name, kept as sRGB RGB8 like the board.
-class TextureFiles {
- public:
-  explicit TextureFiles(std::string base_dir) : base_(std::move(base_dir)) {}
-
-  static int32_t resolve(void* ctx, const char* name, Diagnostic& error) {
-    return static_cast<TextureFiles*>(ctx)->find(name, error);
-  }
-
-  int32_t find(const std::string& name, Diagnostic& error) {
-    auto it = ids_.find(name);
-    if (it != ids_.end()) return it->second;
-    if (textures_.size() >= static_cast<size_t>(cs418::kMaxTextures)) {
-      error.text("more than ").number(cs418::kMaxTextures).text(" textures");
-      return -1;
-    }
-    const std::string path = !name.empty() && name[0] == '/' ? name : base_ + name;
-    RgbaImage img;
-    std::string why;
-    if (!read_png(path, img, why)) {
-      error.text("texture ").text(path.c_str()).text(": ").text(why.c_str());
-      return -1;
-    }
-    auto rgb = std::make_unique<std::vector<uint8_t>>(static_cast<size_t>(img.width) * img.height * 3);
-    for (size_t i = 0, n = static_cast<size_t>(img.width) * img.height; i < n; ++i)
-      for (int c = 0; c < 3; ++c) (*rgb)[3 * i + c] = img.rgba[4 * i + c];
-    model::Texture t;
-    t.width = img.width;
-    t.height = img.height;
-    t.rgb = rgb->data();
-    data_.push_back(std::move(rgb));
-    textures_.push_back(t);
-    const auto id = static_cast<int32_t>(textures_.size() - 1);
-    ids_[name] = id;
-    return id;
-  }
-
-  const model::Texture* table() const { return textures_.empty() ? nullptr : textures_.data(); }
-  uint32_t count() const { return static_cast<uint32_t>(textures_.size()); }
-
- private:
-  std::string base_;
-  std::map<std::string, int32_t> ids_;
-  std::vector<std::unique_ptr<std::vector<uint8_t>>> data_;
-  std::vector<model::Texture> textures_;
-};
 
 std::string located(const std::string& name, const Diagnostic& d) {
   if (!d.has_pos) return name + ": error: " + d.message;
@@ -90,7 +43,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   auto seconds_since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   const Clock::time_point t_parse = Clock::now();
   model::SceneBuilder<R> builder(arena);
-  TextureFiles textures(base_dir);
+  TextureFiles textures(base_dir, &load_png_texture, cs418::kMaxTextures, "textures");
   MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
   cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{&TextureFiles::resolve, &textures}, warnings);
   cs418::Header header;

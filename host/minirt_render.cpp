@@ -3,7 +3,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <map>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -14,68 +13,12 @@
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
 #include "formats/model/scene_builder.hpp"
-#include "ppm_texture.hpp"
 #include "render/general/render.hpp"
+#include "texture_files.hpp"
 
 namespace minrt::host {
 
 namespace {
-
-// Texture files, decoded once per name.
-class TextureFiles {
- public:
-  explicit TextureFiles(std::string base_dir) : base_(std::move(base_dir)) {}
-
-  static int32_t resolve(void* ctx, const char* name, Diagnostic& error) {
-    return static_cast<TextureFiles*>(ctx)->find(name, error);
-  }
-
-  int32_t find(const std::string& name, Diagnostic& error) {
-    auto it = ids_.find(name);
-    if (it != ids_.end()) return it->second;
-    if (textures_.size() >= static_cast<size_t>(minirt::kMaxTextures)) {
-      error.text("more than ").number(minirt::kMaxTextures).text(" texture files");
-      return -1;
-    }
-    std::string why, tried;
-    auto tex = std::make_unique<RgbTexture>();
-    bool ok = false;
-    for (const std::string& path : minirt_texture_candidates(base_, name)) {
-      std::string reason;
-      if (read_ppm(path, *tex, reason)) {
-        ok = true;
-        break;
-      }
-      // A file that exists but is not a good PPM is the error to report.
-      if (why.empty() || reason.find("No such file") == std::string::npos) {
-        why = path + ": " + reason;
-        if (reason.find("No such file") == std::string::npos) break;
-      }
-    }
-    if (!ok) {
-      error.text(why.c_str());
-      return -1;
-    }
-    model::Texture t;
-    t.width = tex->width;
-    t.height = tex->height;
-    t.rgb = tex->rgb.data();
-    data_.push_back(std::move(tex));
-    textures_.push_back(t);
-    const auto id = static_cast<int32_t>(textures_.size() - 1);
-    ids_[name] = id;
-    return id;
-  }
-
-  const model::Texture* table() const { return textures_.empty() ? nullptr : textures_.data(); }
-  uint32_t count() const { return static_cast<uint32_t>(textures_.size()); }
-
- private:
-  std::string base_;
-  std::map<std::string, int32_t> ids_;
-  std::vector<std::unique_ptr<RgbTexture>> data_;
-  std::vector<model::Texture> textures_;
-};
 
 template <class M>
 bool render_with(const std::string& text, const std::string& name, const std::string& base_dir, int width,
@@ -93,7 +36,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   auto seconds_since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   const Clock::time_point t_parse = Clock::now();
   model::SceneBuilder<R> builder(arena);
-  TextureFiles textures(base_dir);
+  TextureFiles textures(base_dir, &load_minirt_texture, minirt::kMaxTextures, "texture files");
   MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
   minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, &textures});
   model::Scene<R> scene;
@@ -149,14 +92,6 @@ bool render_with(const std::string& text, const std::string& name, const std::st
 }
 
 }  // namespace
-
-std::vector<std::string> minirt_texture_candidates(const std::string& base_dir, const std::string& name) {
-  if (!name.empty() && name[0] == '/') return {name};
-  std::vector<std::string> c{base_dir + name};
-  const std::size_t slash = name.rfind('/');
-  if (slash != std::string::npos) c.push_back(base_dir + name.substr(slash + 1));
-  return c;
-}
 
 bool render_minirt(const std::string& text, const std::string& name, const std::string& base_dir, int width,
                    int height, const GeneralOptions& options, GeneralResult& out, std::string& error) {

@@ -19,10 +19,4 @@ inline constexpr int kMinirtDefaultHeight = 600;
 bool render_minirt(const std::string& text, const std::string& name, const std::string& base_dir, int width,
                    int height, const GeneralOptions& options, GeneralResult& out, std::string& error);
 
-// Where a texture name of a scene is looked for, in order: an absolute name
-// as it is; else relative to the scene's folder; else its last component in
-// the scene's folder (the shared scenes name `scenes/textures/earth.ppm`
-// and ship the file beside them).
-std::vector<std::string> minirt_texture_candidates(const std::string& base_dir, const std::string& name);
-
 }  // namespace minrt::host

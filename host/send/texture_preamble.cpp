@@ -6,59 +6,19 @@
 
 #include <minrt/serial_protocol.h>
 
-#include "minirt_render.hpp"
-#include "png_io.hpp"
-#include "ppm_texture.hpp"
+#include "texture_files.hpp"
 
 namespace minrt::send {
 
 namespace {
 
-// A decoded texture: width, height, RGB8 rows top first.
-struct Texels {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;
-};
-using Loader = bool (*)(const std::string& base_dir, const std::string& name, Texels& out, std::string& error);
-
-bool load_png(const std::string& base_dir, const std::string& name, Texels& out, std::string& error) {
-  const std::string path = name[0] == '/' ? name : base_dir + name;
-  minrt::host::RgbaImage img;
-  std::string why;
-  if (!minrt::host::read_png(path, img, why)) {
-    error = "texture " + path + ": " + why;
-    return false;
-  }
-  out.width = img.width;
-  out.height = img.height;
-  out.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
-  for (std::size_t i = 0, n = static_cast<std::size_t>(img.width) * img.height; i < n; ++i)
-    for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = img.rgba[4 * i + c];
-  return true;
-}
-
-// miniRT's PPM textures, found where minrt finds them.
-bool load_ppm(const std::string& base_dir, const std::string& name, Texels& out, std::string& error) {
-  std::string first;
-  for (const std::string& path : minrt::host::minirt_texture_candidates(base_dir, name)) {
-    minrt::host::RgbTexture tex;
-    std::string why;
-    if (minrt::host::read_ppm(path, tex, why)) {
-      out.width = tex.width;
-      out.height = tex.height;
-      out.rgb = std::move(tex.rgb);
-      return true;
-    }
-    if (first.empty()) first = path + ": " + why;
-  }
-  error = first;
-  return false;
-}
+using minrt::host::RgbTexture;
+using minrt::host::TextureLoader;
 
 // `where`: for each name, the "SCENE:LINE:COL: error: " its errors start
 // with (empty: not located).
 bool assemble(const std::vector<std::string>& names, const std::vector<std::string>& where,
-              const std::string& base_dir, Loader load, std::uint64_t board_bytes, std::string& out,
+              const std::string& base_dir, TextureLoader load, std::uint64_t board_bytes, std::string& out,
               std::string& error) {
   out.clear();
   if (names.empty()) return true;
@@ -75,7 +35,7 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       error = at + "texture name longer than 255 bytes";
       return false;
     }
-    Texels img;
+    RgbTexture img;
     if (!load(base_dir, name, img, error)) {
       error = at + error;
       return false;
@@ -122,7 +82,7 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
     const std::size_t col = line.find(name, line.find("texture") + 7) + 1;
     where.push_back(scene_name + ":" + std::to_string(number) + ":" + std::to_string(col) + ": error: ");
   }
-  return assemble(names, where, base_dir, &load_png, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::load_png_texture, board_bytes, out, error);
 }
 
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,
@@ -145,7 +105,7 @@ bool build_minirt_texture_preamble(const std::string& scene, const std::string& 
                       (i == 4 ? "texture" : "bump map") + " \"" + w[i] + "\": ");
     }
   }
-  return assemble(names, where, base_dir, &load_ppm, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::load_minirt_texture, board_bytes, out, error);
 }
 
 }  // namespace minrt::send
