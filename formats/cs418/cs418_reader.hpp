@@ -19,6 +19,7 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/base/number_parse.hpp"
+#include "core/base/text_lines.hpp"
 #include "core/math/math_policy.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/cs418/cs418_limits.hpp"
@@ -80,72 +81,44 @@ class Reader {
   }
 
  private:
-  struct Word {
-    int start;
-    int length;
-  };
+  using Word = text::Word;
   static constexpr int kMaxWords = 16;
 
   // ---------------------------------------------------------------- lines
   bool next_line() {
     if (status_ != ReadStatus::kOk || at_end_) return false;
-    length_ = 0;
     count_ = 0;
     ++line_;
-    bool too_long = false;
-    bool got_any = false;
-    for (;;) {
-      const int c = in_.get();
-      if (c < 0) {
-        at_end_ = true;
-        if (!got_any) return false;
-        break;
-      }
-      got_any = true;
-      if (c == '\n') break;
-      if (c == 0) {
-        error_->pos = SourcePos{line_, length_ + 1};
-        error_->has_pos = true;
-        error_->text("NUL byte in the scene (not a text file?)");
-        status_ = ReadStatus::kSceneError;
+    switch (text::read_line(in_, buf_, kMaxLineBytes, length_, at_end_)) {
+      case text::LineRead::kEnd:
         return false;
-      }
-      if (length_ < kMaxLineBytes) buf_[length_++] = static_cast<char>(c);
-      else too_long = true;
+      case text::LineRead::kNulByte:
+        line_error(length_ + 1).text("NUL byte in the scene (not a text file?)");
+        return false;
+      case text::LineRead::kTooLong:
+        line_error(kMaxLineBytes + 1).text("line longer than ").number(kMaxLineBytes).text(" bytes");
+        return false;
+      case text::LineRead::kLine:
+        break;
     }
-    if (too_long) {
-      error_->pos = SourcePos{line_, kMaxLineBytes + 1};
-      error_->has_pos = true;
-      error_->text("line longer than ").number(kMaxLineBytes).text(" bytes");
-      status_ = ReadStatus::kSceneError;
+    int unstored = 0;
+    const int total = text::split_words(buf_, length_, words_, kMaxWords, unstored);
+    if (total > kMaxWords) {
+      line_error(unstored + 1).text("too many fields on one line");
       return false;
     }
-    int i = 0;
-    while (i < length_) {
-      while (i < length_ && is_space(buf_[i])) ++i;
-      if (i == length_) break;
-      const int start = i;
-      while (i < length_ && !is_space(buf_[i])) ++i;
-      if (count_ == kMaxWords) {
-        error_->pos = SourcePos{line_, start + 1};
-        error_->has_pos = true;
-        error_->text("too many fields on one line");
-        status_ = ReadStatus::kSceneError;
-        return false;
-      }
-      words_[count_++] = Word{start, i - start};
-    }
+    count_ = total;
     return true;
   }
-  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-  bool word_is(int i, const char* kw) const {
-    const Word& w = words_[i];
-    int k = 0;
-    for (; k < w.length; ++k)
-      if (kw[k] == 0 || kw[k] != buf_[w.start + k]) return false;
-    return kw[k] == 0;
+  // A scene error at column `col` of this line, for the message to follow.
+  Diagnostic& line_error(int col) {
+    error_->pos = SourcePos{line_, col};
+    error_->has_pos = true;
+    status_ = ReadStatus::kSceneError;
+    return *error_;
   }
+
+  bool word_is(int i, const char* kw) const { return text::word_is(buf_, words_[i], kw); }
 
   ReadStatus fail_at(int word, const char* msg) {
     error_->pos = SourcePos{line_, word < count_ ? words_[word].start + 1 : length_ + 1};

@@ -22,6 +22,7 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/base/number_parse.hpp"
+#include "core/base/text_lines.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/minirt/minirt_limits.hpp"
 #include "formats/model/scene_builder.hpp"
@@ -83,10 +84,7 @@ class Reader {
   }
 
  private:
-  struct Word {
-    int start;
-    int length;
-  };
+  using Word = text::Word;
   // An exact view of a decimal token: sign, integer part (saturated) and
   // whether any fractional digit is non-zero. Enough to compare against the
   // integer bounds of the subject without rounding.
@@ -124,65 +122,36 @@ class Reader {
   // ---------------------------------------------------------------- lines
   bool next_line() {
     if (status_ != ReadStatus::kOk || at_end_) return false;
-    length_ = 0;
     count_ = 0;
     too_many_ = 0;
     ++line_;
-    bool got_any = false;
-    for (;;) {
-      const int c = in_.get();
-      if (c < 0) {
-        at_end_ = true;
-        if (!got_any) return false;
+    switch (text::read_line(in_, buf_, kMaxLineBytes, length_, at_end_)) {
+      case text::LineRead::kEnd:
+        return false;
+      case text::LineRead::kNulByte:
+        at_column(length_ + 1).text("the scene contains a NUL byte (is it a text file?)");
+        return false;
+      case text::LineRead::kTooLong:
+        at_column(1).text("line longer than ").number(kMaxLineBytes).text(" bytes");
+        return false;
+      case text::LineRead::kLine:
         break;
-      }
-      got_any = true;
-      if (c == '\n') break;
-      if (c == 0) {
-        error_->pos = SourcePos{line_, length_ + 1};
-        error_->has_pos = true;
-        error_->text("the scene contains a NUL byte (is it a text file?)");
-        status_ = ReadStatus::kSceneError;
-        return false;
-      }
-      if (length_ == kMaxLineBytes) {
-        error_->pos = SourcePos{line_, 1};
-        error_->has_pos = true;
-        error_->text("line longer than ").number(kMaxLineBytes).text(" bytes");
-        status_ = ReadStatus::kSceneError;
-        return false;
-      }
-      buf_[length_++] = static_cast<char>(c);
     }
-    int i = 0;
-    while (i < length_) {
-      while (i < length_ && is_space(buf_[i])) ++i;
-      if (i == length_) break;
-      const int start = i;
-      while (i < length_ && !is_space(buf_[i])) ++i;
-      if (count_ == kMaxFields + 1) {
-        ++too_many_;  // counted for the message, not stored
-        continue;
-      }
-      words_[count_++] = Word{start, i - start};
-    }
+    // One word more than any element takes is kept, so that the message
+    // can show it; the rest are only counted.
+    int unstored = 0;
+    const int total = text::split_words(buf_, length_, words_, kMaxFields + 1, unstored);
+    count_ = total < kMaxFields + 1 ? total : kMaxFields + 1;
+    too_many_ = total - count_;
     return true;
   }
-  // Fields are separated by spaces or tabs; a CR before the newline (a file
-  // saved on Windows) is white space too.
-  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-  bool word_is(int i, const char* s) const {
-    const Word& w = words_[i];
-    int k = 0;
-    for (; k < w.length; ++k)
-      if (s[k] == 0 || s[k] != buf_[w.start + k]) return false;
-    return s[k] == 0;
-  }
+  bool word_is(int i, const char* s) const { return text::word_is(buf_, words_[i], s); }
 
   // ------------------------------------------------------------ messages
-  Diagnostic& at(int word) {
-    error_->pos = SourcePos{line_, word < count_ ? words_[word].start + 1 : length_ + 1};
+  Diagnostic& at(int word) { return at_column(word < count_ ? words_[word].start + 1 : length_ + 1); }
+  Diagnostic& at_column(int col) {
+    error_->pos = SourcePos{line_, col};
     error_->has_pos = true;
     status_ = ReadStatus::kSceneError;
     return *error_;
