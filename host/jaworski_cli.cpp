@@ -24,14 +24,17 @@ namespace {
 constexpr int kExitSceneError = 2;
 constexpr int kExitIoError = 1;
 
-void append(void* ctx, const uint8_t* p, size_t n) {
-  static_cast<std::string*>(ctx)->append(reinterpret_cast<const char*>(p), n);
-}
+// The BMP file laid out in memory: rows are rendered straight into their
+// place behind the header, so no copy or growing buffer follows the render.
+struct BmpImage {
+  std::unique_ptr<uint8_t[]> bytes;  // not zeroed: every byte is written
+  size_t size = 0;
+};
 
 // Parses and renders into `bmp`, handing each row to `window` (when open)
 // as it is finished; false with the message line in `error`.
 template <class M>
-bool render(const std::string& text, const std::string& name, int threads, std::string& bmp, LiveWindow& window,
+bool render(const std::string& text, const std::string& name, int threads, BmpImage& bmp, LiveWindow& window,
             std::string& error) {
   using R = typename M::real;
   const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
@@ -52,15 +55,19 @@ bool render(const std::string& text, const std::string& name, int threads, std::
     error = name + ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
     return false;
   }
-  // Rows are independent: render them on every core into `rows` (bottom row
-  // first, as the tracer counts them), then stream them to the BMP writer.
-  const size_t stride = static_cast<size_t>(scene.width) * 4;
-  std::vector<uint8_t> rows(stride * static_cast<size_t>(scene.height));
+  // Rows are independent: render them on every core, each into its place
+  // in the file (the BMP stores the bottom row first, as the tracer counts
+  // them), turned from RGBA into the file's BGRA once the window has it.
   const jaworski::Tracer<M> tracer(scene, arena);
   if (!tracer.ready()) {
     error = name + ": error: scene does not fit in memory";
     return false;
   }
+  const size_t stride = static_cast<size_t>(scene.width) * 4;
+  bmp.size = BmpWriter::file_bytes(scene.width, scene.height);
+  bmp.bytes.reset(new uint8_t[bmp.size]);
+  BmpWriter::header(bmp.bytes.get(), scene.width, scene.height);
+  uint8_t* const rows = bmp.bytes.get() + BmpWriter::kHeaderBytes;
   if (threads < 1) threads = static_cast<int>(std::thread::hardware_concurrency());
   if (threads < 1) threads = 1;
   if (threads > scene.height) threads = scene.height;
@@ -69,18 +76,16 @@ bool render(const std::string& text, const std::string& name, int threads, std::
   if (live) window.begin(scene.width, scene.height);
   auto work = [&] {
     for (int y; (y = next.fetch_add(1)) < scene.height;) {
-      tracer.render_row(y, rows.data() + stride * y);
-      if (live) window.row_rgba(scene.height - 1 - y, rows.data() + stride * y);  // the window counts from the top
+      uint8_t* const row = rows + stride * y;
+      tracer.render_row(y, row);
+      if (live) window.row_rgba(scene.height - 1 - y, row);  // the window counts from the top
+      BmpWriter::to_bgra(row, row, scene.width);
     }
   };
   std::vector<std::thread> pool;
   for (int i = 1; i < threads; ++i) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
-  BmpWriter writer(ByteSink{&append, &bmp});
-  writer.begin(scene.width, scene.height);
-  for (int y = 0; y < scene.height; ++y) writer.row(y, rows.data() + stride * y);
-  writer.end();
   return true;
 }
 
@@ -106,7 +111,8 @@ int run_jaworski_cli(JaworskiCli& cli) {
       return kExitIoError;
     }
   }
-  std::string bmp, error, why;
+  BmpImage bmp;
+  std::string error, why;
   LiveWindow window;
   if (cli.show && !window.open("minrt: " + shown, why))
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
@@ -124,7 +130,7 @@ int run_jaworski_cli(JaworskiCli& cli) {
   if (cli.save) {
     AtomicOutput output;
     if (!output.open(out_path, cli.write_through, why) ||
-        std::fwrite(bmp.data(), 1, bmp.size(), output.file()) != bmp.size() || !output.commit(why)) {
+        std::fwrite(bmp.bytes.get(), 1, bmp.size, output.file()) != bmp.size || !output.commit(why)) {
       output.discard();
       std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
       return kExitIoError;

@@ -16,10 +16,20 @@ class BmpWriter {
  public:
   explicit BmpWriter(ByteSink out) : out_(out) {}
 
-  void begin(int width, int height) {
-    width_ = width;
+  static constexpr uint32_t kHeaderBytes = 54;
+
+  // The whole file's size: header and rows (4 bytes a pixel, no padding).
+  static size_t file_bytes(int width, int height) {
+    return kHeaderBytes + 4u * static_cast<size_t>(width) * static_cast<size_t>(height);
+  }
+
+  // The header into `h` (kHeaderBytes), for callers that lay out the whole
+  // file in memory: the rows follow it, bottom row first.
+  static void header(uint8_t* h, int width, int height) {
     const uint32_t image = 4u * static_cast<uint32_t>(width) * static_cast<uint32_t>(height);
-    uint8_t h[kHeaderBytes] = {'B', 'M'};
+    for (uint32_t i = 0; i < kHeaderBytes; ++i) h[i] = 0;
+    h[0] = 'B';
+    h[1] = 'M';
     put32(h + 2, kHeaderBytes + image);  // file size
     put32(h + 10, kHeaderBytes);         // pixel data offset
     put32(h + 14, 40);                   // BITMAPINFOHEADER
@@ -30,20 +40,33 @@ class BmpWriter {
     put32(h + 34, image);
     put32(h + 38, kPixelsPerMetre);
     put32(h + 42, kPixelsPerMetre);
+  }
+
+  // One row of RGBA pixels as the file stores them (BGRA); `bgra` may be
+  // `rgba` itself.
+  static void to_bgra(const uint8_t* rgba, uint8_t* bgra, int width) {
+    for (int x = 0; x < width; ++x) {
+      const uint8_t r = rgba[4 * x], g = rgba[4 * x + 1], b = rgba[4 * x + 2], a = rgba[4 * x + 3];
+      bgra[4 * x] = b;
+      bgra[4 * x + 1] = g;
+      bgra[4 * x + 2] = r;
+      bgra[4 * x + 3] = a;
+    }
+  }
+
+  void begin(int width, int height) {
+    width_ = width;
+    uint8_t h[kHeaderBytes];
+    header(h, width, height);
     out_.put(h, sizeof h);
   }
 
   // `rgba`: one row, bottom row first.
   void row(int /*y*/, const uint8_t* rgba) {
     uint8_t px[4 * 64];
-    for (int x = 0; x < width_;) {
-      int n = 0;
-      for (; n < 64 && x < width_; ++n, ++x) {
-        px[4 * n] = rgba[4 * x + 2];
-        px[4 * n + 1] = rgba[4 * x + 1];
-        px[4 * n + 2] = rgba[4 * x];
-        px[4 * n + 3] = rgba[4 * x + 3];
-      }
+    for (int x = 0; x < width_; x += 64) {
+      const int n = width_ - x < 64 ? width_ - x : 64;
+      to_bgra(rgba + 4 * x, px, n);
       out_.put(px, static_cast<size_t>(4 * n));
     }
   }
@@ -51,7 +74,6 @@ class BmpWriter {
   void end() {}
 
  private:
-  static constexpr uint32_t kHeaderBytes = 54;
   static constexpr uint32_t kPixelsPerMetre = 2834;  // 72 dpi
 
   static void put32(uint8_t* p, uint32_t v) {
