@@ -62,6 +62,8 @@ void print_help(std::FILE* f) {
       "  -o, --output FILE        write the image to FILE (complete or not at all; a\n"
       "                           FIFO, device or symbolic link is refused; - is stdout)\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
+      "  --sync                   make the -o file durable (fsync) before exiting; without\n"
+      "                           it the file is still replaced whole or not at all\n"
       "  -q, --quiet              no warnings on standard error\n"
       "  -n, --no-save            Jaworski, EASTRAY: render without saving the image\n"
       "  -s, --show               show the image in a window as it is rendered; it stays\n"
@@ -119,6 +121,7 @@ int main(int argc, char** argv) {
   const char* output_path = nullptr;
   bool quiet = false;
   bool write_through = false;
+  bool sync = false;
   minrt::host::SceneFormat scene_format = minrt::host::SceneFormat::kAuto;
   minrt::host::GeneralCli general;
   bool no_save = false;
@@ -164,6 +167,8 @@ int main(int argc, char** argv) {
       output_path = value("--output");
     } else if (arg == "--write-through") {
       write_through = true;
+    } else if (arg == "--sync") {
+      sync = true;
     } else if (arg == "--scene-format") {
       const std::string v = value("--scene-format");
       if (!minrt::host::parse_scene_format(v, scene_format))
@@ -214,6 +219,9 @@ int main(int argc, char** argv) {
   }
   if (minrt::host::variant_name(variant) == nullptr)
     usage_error("this combination of --precision and --shims is not built (portable shims are float only)");
+  // An image is cheap to render again, and syncing took a tenth of a small
+  // render's run: atomic replacement by default, durability on request.
+  minrt::host::set_output_sync(sync);
 
   // Which reader: the option, else the extension and the first word. Standard
   // input is read whole first so that it can be looked at.

@@ -40,6 +40,8 @@ void register_temp(const std::string& temp) {
 
 void unregister_temp() { g_have_temp = 0; }
 
+bool g_sync = true;
+
 std::string folder_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
   if (slash == std::string::npos) return ".";
@@ -54,7 +56,23 @@ const char* kind_name(mode_t m) {
   return "not a regular file";
 }
 
+// The folder's entry made durable after a rename; file systems that cannot
+// sync a folder (EINVAL) are left be, as for the file.
+bool sync_folder(const std::string& path, int& err) {
+  const int fd = ::open(folder_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) {
+    err = errno;
+    return false;
+  }
+  const bool ok = ::fsync(fd) == 0 || errno == EINVAL;
+  err = errno;
+  ::close(fd);
+  return ok;
+}
+
 }  // namespace
+
+void set_output_sync(bool sync) { g_sync = sync; }
 
 bool check_output_target(const std::string& path, bool write_through, std::string& error) {
   if (path == "-") return true;
@@ -126,7 +144,7 @@ bool AtomicOutput::commit(std::string& error) {
   if (file_ == nullptr) return false;
   bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
   int err = errno;
-  if (ok && !direct_ && ::fsync(fileno(file_)) != 0 && errno != EINVAL) {
+  if (ok && !direct_ && g_sync && ::fsync(fileno(file_)) != 0 && errno != EINVAL) {
     ok = false;
     err = errno;
   }
@@ -138,6 +156,13 @@ bool AtomicOutput::commit(std::string& error) {
   if (ok && !direct_ && std::rename(temp_.c_str(), path_.c_str()) != 0) {
     ok = false;
     err = errno;
+  }
+  if (ok && !direct_ && g_sync && !sync_folder(path_, err)) {
+    // The new file is in place and whole; only its durability is in doubt.
+    error = "cannot sync the folder of " + path_ + ": " + std::strerror(err);
+    unregister_temp();
+    temp_.clear();
+    return false;
   }
   if (!ok) {
     error = "cannot write " + path_ + ": " + std::strerror(err != 0 ? err : EIO);

@@ -28,6 +28,7 @@ packages=(
   help2man man-db           # man pages
   qemu-user qemu-system-misc gcc-riscv64-unknown-elf
   valgrind
+  strace                    # the minrt --sync test counts fsync calls
   time                      # GNU time: CPU seconds in bench/host/contest_speed.sh
   python3 python3-matplotlib
 )

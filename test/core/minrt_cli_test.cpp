@@ -157,6 +157,34 @@ TEST_CASE("minrt: -o replaces only a regular file or a new name, and leaves no t
   CHECK(rmdir(dir) == 0);  // nothing else was left in the folder
 }
 
+TEST_CASE("minrt: -o syncs the file and its folder only with --sync", "[cli]") {
+  if (!minrt::test::shared_available() || std::system("strace -V >/dev/null 2>&1") != 0) {
+    WARN("shared/ test data or strace not found: skipped");
+    return;
+  }
+  const std::string ball = minrt::test::shared_dir() + "/scenes/ball.sld";
+  char dir[] = "/tmp/minrt-sync-XXXXXX";
+  REQUIRE(mkdtemp(dir) != nullptr);
+  const std::string d = dir, target = d + "/image.ppm", log = d + "/trace";
+  const std::string expected = run("--size 16x16 " + ball).out;
+  // Counts the fsync calls of one run that writes `target`.
+  auto fsyncs = [&](const std::string& options) {
+    const std::string cmd = "strace -f -qq -e trace=fsync -o " + log + " " + MINRT_BIN + " --size 16x16 " + options +
+                            " -o " + target + " " + ball;
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    CHECK(minrt::test::read_file(target) == expected);
+    const std::string trace = minrt::test::read_file(log);
+    int n = 0;
+    for (std::size_t at = 0; (at = trace.find("fsync(", at)) != std::string::npos; ++at) ++n;
+    return n;
+  };
+  CHECK(fsyncs("") == 0);        // replaced atomically, not synced
+  CHECK(fsyncs("--sync") == 2);  // the file, then its folder after the rename
+  std::remove(target.c_str());
+  std::remove(log.c_str());
+  CHECK(rmdir(dir) == 0);  // no temporary left behind
+}
+
 TEST_CASE("minrt: file argument, stdin and -o give the reference bytes", "[cli]") {
   if (!minrt::test::shared_available()) {
     WARN("shared/ test data not found: skipped");
