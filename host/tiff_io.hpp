@@ -1,4 +1,4 @@
-// TIFF output on the host through libtiff (EASTRAY's `output NAME.tif`):
+// TIFF output on the host through libtiff, loaded at first use (EASTRAY's `output NAME.tif`):
 // 8-bit RGB, uncompressed strips of one row.
 #pragma once
 
