@@ -60,13 +60,12 @@ int status_of(minrt::RenderStatus status) {
   return MINRT_STATUS_SCENE_ERROR;
 }
 
-minrt::RenderStatus status_of(minrt::fw::TextSceneResult r) {
-  switch (r) {
-    case minrt::fw::TextSceneResult::kOk: return minrt::RenderStatus::kOk;
-    case minrt::fw::TextSceneResult::kSceneError: return minrt::RenderStatus::kSceneError;
-    case minrt::fw::TextSceneResult::kOutOfMemory: return minrt::RenderStatus::kOutOfMemory;
-  }
-  return minrt::RenderStatus::kSceneError;
+// The text formats' boards' results (text_scene_board.hpp, *_board.hpp) all
+// read kOk, kSceneError, kOutOfMemory.
+template <class Result>
+minrt::RenderStatus status_of(Result r) {
+  if (r == Result::kOk) return minrt::RenderStatus::kOk;
+  return r == Result::kOutOfMemory ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
 }
 
 // Course protocol, a CS418, Jaworski, miniRT or EASTRAY scene after its marker word: the
@@ -213,6 +212,53 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
   }
 }
 
+// Raw protocol: a text-format scene as the first bytes tell it, after any
+// texture preamble. Each format's board renderer (*_board.hpp) is an entry;
+// the first that claims the scene renders it, and a scene none claims is SLD.
+struct RawScene {
+  minrt::ByteSource text;
+  minrt::ByteSink out;
+  minrt::Arena& arena;
+  const minrt::fw::FirmwareOptions& options;
+  const minrt::send::textures::Table* textures;
+  minrt::Diagnostic& error;
+};
+
+struct RawFormat {
+  bool (*claims)(int first_byte, const char* first_word);
+  minrt::RenderStatus (*render)(const RawScene& scene);
+};
+
+// In the order they are tried: EASTRAY's `/*` marker, Jaworski's header
+// fields or `#`, miniRT's element identifiers, then any other word that
+// starts with a letter is CS418.
+constexpr RawFormat kRawFormats[] = {
+    {[](int first, const char*) { return minrt::fw::is_eastray_start(first); },
+     [](const RawScene& s) { return status_of(minrt::fw::render_eastray(s.text, s.out, s.arena, s.error)); }},
+    {[](int first, const char* word) { return minrt::fw::is_jaworski_start(first, word); },
+     [](const RawScene& s) { return status_of(minrt::fw::render_jaworski(s.text, s.out, s.arena, s.error)); }},
+    {[](int, const char* word) { return minrt::fw::is_minirt_start(word); },
+     [](const RawScene& s) {  // PNG at the board's --size
+       return status_of(minrt::fw::render_minirt(s.text, s.out, s.arena, s.options.render.width,
+                                                 s.options.render.height, s.options.all_features, s.textures,
+                                                 s.error));
+     }},
+    {[](int first, const char*) { return (first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z'); },
+     [](const RawScene& s) {
+       return status_of(minrt::fw::render_cs418(s.text, s.out, s.arena, s.options.all_features, s.textures, s.error));
+     }},
+};
+
+const RawFormat* find_raw_format(int first_byte, const char* first_word) {
+  // SLD's first value is a number: a digit, sign or point, which starts no
+  // text format, so the common case skips the word lists.
+  if ((first_byte >= '0' && first_byte <= '9') || first_byte == '-' || first_byte == '+' || first_byte == '.')
+    return nullptr;
+  for (const RawFormat& f : kRawFormats)
+    if (f.claims(first_byte, first_word)) return &f;
+  return nullptr;
+}
+
 }  // namespace
 
 // Called by crt0; extern "C" because freestanding C++ does not treat main
@@ -269,50 +315,11 @@ extern "C" int main(int argc, char** argv) {
   minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
   char word[16];
   text.first_word(word, sizeof word);
-  if (minrt::fw::is_eastray_start(first)) {
-    const minrt::fw::EastrayResult r = minrt::fw::render_eastray(text.source(), output.sink(), arena, error);
-    if (r != minrt::fw::EastrayResult::kOk) {
-      send_error(uart, error);
-      return r == minrt::fw::EastrayResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
-    }
-    output.end();
-    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
-    return MINRT_STATUS_OK;
-  }
-  if (minrt::fw::is_jaworski_start(first, word)) {
-    const minrt::fw::JaworskiResult r = minrt::fw::render_jaworski(text.source(), output.sink(), arena, error);
-    if (r != minrt::fw::JaworskiResult::kOk) {
-      send_error(uart, error);
-      return r == minrt::fw::JaworskiResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
-    }
-    output.end();
-    return MINRT_STATUS_OK;
-  }
-  if (minrt::fw::is_minirt_start(word)) {  // a miniRT scene: PNG at the board's --size
-    const minrt::fw::MinirtResult r =
-        minrt::fw::render_minirt(text.source(), output.sink(), arena, options.render.width, options.render.height,
-                                 options.all_features, textures, error);
-    if (r != minrt::fw::MinirtResult::kOk) {
-      send_error(uart, error);
-      return r == minrt::fw::MinirtResult::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
-    }
-    output.end();
-    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
-    return MINRT_STATUS_OK;
-  }
-  if ((first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z')) {
-    const minrt::fw::Cs418Result r =
-        minrt::fw::render_cs418(text.source(), output.sink(), arena, options.all_features, textures, error);
-    if (r != minrt::fw::Cs418Result::kOk) {
-      send_error(uart, error);
-      return r == minrt::fw::Cs418Result::kOutOfMemory ? MINRT_STATUS_OUT_OF_MEMORY : MINRT_STATUS_SCENE_ERROR;
-    }
-    output.end();
-    if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
-    return MINRT_STATUS_OK;
-  }
-  const minrt::RenderStatus status = minrt::render_sld<Math>(
-      scene.source(), output.sink(), options.render, g_state, arena, error);
+  const RawFormat* format = find_raw_format(first, word);
+  const minrt::RenderStatus status =
+      format != nullptr
+          ? format->render(RawScene{text.source(), output.sink(), arena, options, textures, error})
+          : minrt::render_sld<Math>(scene.source(), output.sink(), options.render, g_state, arena, error);
   if (status != minrt::RenderStatus::kOk) {
     send_error(uart, error);
     return status_of(status);
