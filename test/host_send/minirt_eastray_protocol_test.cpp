@@ -19,38 +19,20 @@
 #include "sim_launcher.hpp"
 #include "test_support.hpp"
 
+using hs_test::joined;
 using hs_test::run;
 using hs_test::RunResult;
+using hs_test::send_sim;
+using hs_test::text_protocols;
 
 namespace {
 
 // Small images keep the run short: miniRT files have no size of their own.
 const std::vector<std::string> kMinirtSize = {"--size", "48x36"};
 
-RunResult send_sim(const std::string& scene, const std::string& out, const std::vector<std::string>& extra) {
-  std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF};
-  argv.insert(argv.end(), extra.begin(), extra.end());
-  argv.push_back(scene);
-  argv.push_back("-o");
-  argv.push_back(out);
-  return run(argv);
-}
-
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
-}
-
-const std::vector<std::vector<std::string>>& text_protocols() {
-  static const std::vector<std::vector<std::string>> p = {
-      {"--protocol", "course"}, {"--protocol", "course", "--endian", "big"}, {"--protocol", "framed"}};
-  return p;
-}
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
-  return s;
 }
 
 // Every protocol gives the raw protocol's PNG, and its pixels are minrt's

@@ -111,4 +111,25 @@ std::vector<std::string> bad_scenes() {
   return out;
 }
 
+RunResult send_sim(const std::string& scene, const std::string& out, const std::vector<std::string>& extra) {
+  std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  argv.push_back(scene);
+  argv.push_back("-o");
+  argv.push_back(out);
+  return run(argv);
+}
+
+const std::vector<std::vector<std::string>>& text_protocols() {
+  static const std::vector<std::vector<std::string>> p = {
+      {"--protocol", "course"}, {"--protocol", "course", "--endian", "big"}, {"--protocol", "framed"}};
+  return p;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string s;
+  for (const auto& w : words) s += (s.empty() ? "" : " ") + w;
+  return s;
+}
+
 }  // namespace hs_test

@@ -46,4 +46,15 @@ bool firmware_available();
 std::string shared_dir();
 std::vector<std::string> bad_scenes();
 
+// host-send against firmware-sim running the firmware: `extra` options,
+// then `scene`, the image to `out`.
+RunResult send_sim(const std::string& scene, const std::string& out, const std::vector<std::string>& extra);
+
+// The options of the protocols other than raw that carry the text formats:
+// course in either byte order, then framed.
+const std::vector<std::vector<std::string>>& text_protocols();
+
+// The words with a space between, for test messages.
+std::string joined(const std::vector<std::string>& words);
+
 }  // namespace hs_test

@@ -27,8 +27,11 @@
 #include "sim_launcher.hpp"
 #include "test_support.hpp"
 
+using hs_test::joined;
 using hs_test::run;
 using hs_test::RunResult;
+using hs_test::send_sim;
+using hs_test::text_protocols;
 using namespace minrt::send;
 
 namespace {
@@ -46,33 +49,11 @@ std::vector<std::string> files_in(const std::string& dir, const std::string& ext
   return out;
 }
 
-// host-send against firmware-sim with the firmware, over `protocol`.
-RunResult send_sim(const std::string& scene, const std::string& out, const std::vector<std::string>& extra) {
-  std::vector<std::string> argv{HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF};
-  argv.insert(argv.end(), extra.begin(), extra.end());
-  argv.push_back(scene);
-  argv.push_back("-o");
-  argv.push_back(out);
-  return run(argv);
-}
-
 // The host float model's image (what the board must reproduce).
 void host_model(const std::string& scene, const std::string& out) {
   const RunResult r = run({HS_MINRT, "-q", "--precision", "float", "--shims", "portable", scene, "-o", out});
   INFO(r.err);
   REQUIRE(r.status == 0);
-}
-
-const std::vector<std::vector<std::string>>& text_protocols() {
-  static const std::vector<std::vector<std::string>> p = {
-      {"--protocol", "course"}, {"--protocol", "course", "--endian", "big"}, {"--protocol", "framed"}};
-  return p;
-}
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
-  return s;
 }
 
 }  // namespace
