@@ -40,7 +40,7 @@ bool render(const std::string& text, const std::string& name, int threads, BmpIm
   const int32_t capacity = jaworski::Scene<R>::capacity_for(text.size());
   const size_t bytes = static_cast<size_t>(capacity) * (sizeof(jaworski::Object<R>) + sizeof(jaworski::Light<R>) +
                                                         sizeof(jaworski::SurfaceNode<R>) + sizeof(jaworski::Part<R>)) +
-                       jaworski::Tracer<M>::arena_bytes(capacity) + 4096;
+                       jaworski::Tracer<M>::arena_bytes(capacity, capacity) + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
   jaworski::Scene<R> scene;

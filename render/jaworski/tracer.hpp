@@ -22,10 +22,14 @@ class Tracer {
   using V = Vec3<R>;
 
  public:
-  // The sphere hierarchy takes arena_bytes(scene.object_count) of `arena`;
-  // ready() says whether it fitted (render nothing otherwise).
-  Tracer(const Scene<R>& s, Arena& arena) : s_(s), ready_(bvh_.build(s, arena)) {}
-  static size_t arena_bytes(int32_t objects) { return SphereBvh<M>::arena_bytes(objects); }
+  // The sphere hierarchy and the directional lights' unit vectors take
+  // arena_bytes(scene.object_count, scene.light_count) of `arena`; ready()
+  // says whether they fitted (render nothing otherwise).
+  Tracer(const Scene<R>& s, Arena& arena) : s_(s), ready_(bvh_.build(s, arena) && unit_lights(arena)) {}
+  static size_t arena_bytes(int32_t objects, int32_t lights) {
+    return SphereBvh<M>::arena_bytes(objects) + (static_cast<size_t>(lights > 0 ? lights : 0) + 1) * sizeof(V) +
+           alignof(V);
+  }
   bool ready() const { return ready_; }
 
   // One row of RGBA bytes; y = 0 is the bottom row, as the original renders.
@@ -168,21 +172,23 @@ class Tracer {
     if (hit == kNone) return s_.background;
     const Object<R>& ob = s_.objects[hit];
     const V x = o + d * t;
-    return surface_color(ob, x, ob.surface, depth, d);
+    const SurfaceNode<R>& top = s_.surfaces[ob.surface];
+    if (top.s.kind == SurfaceKind::kLuminous) return top.color;
+    // The normal once for every part of a mixed surface (each part used to
+    // compute the same value again).
+    return surface_color(normal_at(ob, x), x, ob.surface, depth, d);
   }
 
-  V surface_color(const Object<R>& ob, const V& x, int32_t surface, int32_t depth, const V& d) const {
+  V surface_color(const V& n, const V& x, int32_t surface, int32_t depth, const V& d) const {
     const SurfaceNode<R>& node = s_.surfaces[surface];
     switch (node.s.kind) {
       case SurfaceKind::kLuminous: return node.color;
       case SurfaceKind::kDiffusive: {
-        const V n = normal_at(ob, x);
         V sum{};
         for (int32_t i = 0; i < s_.light_count; ++i) sum = sum + shadow(s_.lights[i], x, n);
         return sum * node.color;
       }
       case SurfaceKind::kReflective: {
-        const V n = normal_at(ob, x);
         const V origin = x + n * kEps;
         const V dir = normalize(d - n * (R(2) * dot(n, d)));
         return trace(depth - 1, origin, dir);
@@ -190,7 +196,7 @@ class Tracer {
       case SurfaceKind::kMixed: {
         V acc{};
         for (int32_t p = node.s.first_part; p != kNone; p = s_.parts[p].next)
-          acc = acc + surface_color(ob, x, s_.parts[p].surface, depth, d) * s_.parts[p].weight;
+          acc = acc + surface_color(n, x, s_.parts[p].surface, depth, d) * s_.parts[p].weight;
         return acc;
       }
     }
@@ -212,7 +218,7 @@ class Tracer {
     if (l.kind == LightKind::kDirectional) {
       const R share = max0(dot(l.vector, n));
       if (share == R(0) && finite(l.color)) return V{};
-      if (blocked(origin, normalize(l.vector), false, R(0))) return V{};
+      if (blocked(origin, light_dirs_[&l - s_.lights], false, R(0))) return V{};
       return l.color * share;
     }
     const V v = l.vector - x;
@@ -240,8 +246,19 @@ class Tracer {
     });
   }
 
+  // Each directional light's normalize(vector), which every shadow ray
+  // towards it used to compute again: the same operations, the same value.
+  bool unit_lights(Arena& arena) {
+    light_dirs_ = arena.alloc_zeroed<V>(static_cast<size_t>(s_.light_count > 0 ? s_.light_count : 0) + 1);
+    if (light_dirs_ == nullptr) return false;
+    for (int32_t i = 0; i < s_.light_count; ++i)
+      if (s_.lights[i].kind == LightKind::kDirectional) light_dirs_[i] = normalize(s_.lights[i].vector);
+    return true;
+  }
+
   const Scene<R>& s_;
   SphereBvh<M> bvh_;
+  V* light_dirs_ = nullptr;
   bool ready_;
 };
 
