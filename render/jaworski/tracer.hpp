@@ -78,6 +78,7 @@ class Tracer {
 
  private:
   static constexpr R kEps = static_cast<R>(1e-5);
+  static constexpr R kRoundShift = sizeof(R) >= 8 ? R(4503599627370496.0) : R(8388608.0);  // 2^52, 2^23
   static constexpr int kFan = 16;         // camera rays that share one gather()
   static constexpr int kCandidates = 32;  // spheres a fan may keep; more: each ray walks the hierarchy
 
@@ -89,12 +90,12 @@ class Tracer {
 
   static uint8_t to_byte(R v) {
     const R x = R(255) * max0(min1(v));
-    // Round half to even (Haskell's round); x is in [0, 255] (a NaN v gives
-    // 0), where truncation is the floor.
-    int32_t i = M::to_int(x);
-    const R diff = x - M::from_int(i);
-    if (diff > R(0.5) || (diff == R(0.5) && (i & 1) != 0)) ++i;
-    return static_cast<uint8_t>(i);
+    // Round half to even (Haskell's round) by the addition's own rounding:
+    // x is in [0, 255] (a NaN v gives 0), so x + 2^52 (2^23 in float) has
+    // no bits below the units and rounds x to nearest, ties to even; the
+    // subtraction is then exact.
+    const R rounded = (x + kRoundShift) - kRoundShift;
+    return static_cast<uint8_t>(M::to_int(rounded));
   }
 
   // Smallest t > 0 over all objects, the first object on a tie; -1 if none.
