@@ -74,15 +74,15 @@ inline auto Tracer<M>::in_shadow() -> bool {
   const R x0 = toward_light_flip_[0] ? -p[0] : p[0];
   const R x1 = toward_light_flip_[1] ? -p[1] : p[1];
   const R x2 = toward_light_flip_[2] ? -p[2] : p[2];
-  for (int r = 0; r < n_or_rows_; ++r) {
-    const OrRow& row = or_rows_[r];
-    if (row.shadow_all.culls(x0, x1, x2)) continue;
-    if (row.range != nullptr &&
-        !(solver_fast(*row.range, light_dirvec_, intersection_point_) != 0 &&
+  const ShadowRow* const rows_end = shadow_rows_ + n_shadow_rows_;
+  for (const ShadowRow* row = shadow_rows_; row != rows_end; ++row) {
+    if (row->all.culls(x0, x1, x2)) continue;
+    if (row->range != nullptr &&
+        !(solver_fast(*row->range, light_dirvec_, intersection_point_) != 0 &&
           solver_dist_ < R(-0.1)))
       continue;
-    for (int k = 0; row.nets[k] != nullptr; ++k)
-      if (!row.shadow[k].culls(x0, x1, x2) && shadow_and_group(row.nets[k])) return true;
+    for (const ShadowNet* n = row->nets; n != row->nets_end; ++n)
+      if (!n->lim.culls(x0, x1, x2) && shadow_and_group(n->net)) return true;
   }
   return false;
 }
@@ -91,15 +91,21 @@ template <MathPolicy M>
 inline auto Tracer<M>::setup_shadow_culling() -> void {
   const R nan = R(__builtin_nan(""));
   for (int k = 0; k < 3; ++k) toward_light_flip_[k] = light_[k] > R(0);
+  ShadowNet* out = shadow_nets_;
+  n_shadow_rows_ = 0;
   for (int r = 0; r < n_or_rows_; ++r) {
-    OrRow& row = or_rows_[r];
+    const OrRow& row = or_rows_[r];
+    // A row without networks shadows nothing at all.
+    if (row.nets[0] == nullptr) continue;
+    ShadowRow& srow = shadow_rows_[n_shadow_rows_++];
     // The highest limit of the row's networks per axis, NaN when one of
-    // them has none; a row without networks shadows nothing at all.
+    // them has none.
     const R inf = R(__builtin_inf());
     ShadowLimits all{{-inf, -inf, -inf}};
+    srow.range = row.range;
+    srow.nets = out;
     for (int n = 0; row.nets[n] != nullptr; ++n) {
-      ShadowLimits& lim = row.shadow[n];
-      lim = ShadowLimits{{nan, nan, nan}};
+      ShadowLimits lim{{nan, nan, nan}};
       for (ObjectList e = row.nets[n]; *e != nullptr; ++e) {
         const Object& m = **e;
         if (!m.slab_bounded) continue;
@@ -110,8 +116,10 @@ inline auto Tracer<M>::setup_shadow_culling() -> void {
       }
       for (int k = 0; k < 3; ++k)
         if (all.limit[k] < lim.limit[k] || lim.limit[k] != lim.limit[k]) all.limit[k] = lim.limit[k];
+      *out++ = ShadowNet{lim, row.nets[n]};
     }
-    row.shadow_all = all;
+    srow.nets_end = out;
+    srow.all = all;
   }
 }
 
@@ -185,7 +193,7 @@ MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> 
 
 template <MathPolicy M>
 template <bool kCull>
-inline auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
+MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
   tmin_ = R(1000000000.0);
   if (kCull && dv.octant >= 0) {
     // The rows and networks the masks leave for this octant, in order.

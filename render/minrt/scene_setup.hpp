@@ -27,6 +27,9 @@ inline auto Tracer<M>::init(const Scene<R>& scene, int width, int height, Arena&
   live_rows_ = arena.alloc_zeroed<LiveRow>(8 * static_cast<size_t>(n_or_rows_ + 1));
   live_nets_ = arena.alloc_zeroed<ObjectList>(8 * static_cast<size_t>(live_nets_stride_));
   if (live_rows_ == nullptr || live_nets_ == nullptr) return false;
+  shadow_rows_ = arena.alloc_zeroed<ShadowRow>(static_cast<size_t>(n_or_rows_));
+  shadow_nets_ = arena.alloc_zeroed<ShadowNet>(static_cast<size_t>(or_entries));
+  if ((n_or_rows_ > 0 && shadow_rows_ == nullptr) || (or_entries > 0 && shadow_nets_ == nullptr)) return false;
   // Zeroed like the original's fresh arrays, whose stale slots are read.
   Pixel* pixels = arena.alloc_zeroed<Pixel>(3 * static_cast<size_t>(width));
   row_ = arena.alloc_zeroed<uint8_t>(3 * static_cast<size_t>(width));

@@ -67,13 +67,15 @@ class Tracer : private TracerState<M> {
   // Arena bytes needed to render `scene` at image width `width`.
   static size_t arena_bytes(const Scene<R>& scene, int width) {
     return Arena::footprint<R>(size_t{kDirvecCount} * consts_total(scene)) +
-           live_list_bytes(scene.or_count, or_entries_total(scene)) + pixel_line_bytes(width);
+           live_list_bytes(scene.or_count, or_entries_total(scene)) +
+           shadow_list_bytes(scene.or_count, or_entries_total(scene)) + pixel_line_bytes(width);
   }
 
   // Arena bytes that suffice for any valid scene at this width.
   static constexpr size_t max_arena_bytes(int width) {
     return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * 6) +
            live_list_bytes(limits::kMaxOrNetworks, limits::kMaxOrNetworks * limits::kMaxOrNetworkLength) +
+           shadow_list_bytes(limits::kMaxOrNetworks, limits::kMaxOrNetworks * limits::kMaxOrNetworkLength) +
            pixel_line_bytes(width);
   }
 
@@ -81,6 +83,12 @@ class Tracer : private TracerState<M> {
   static constexpr size_t live_list_bytes(int rows, int nets) {
     return Arena::footprint<typename S::LiveRow>(8 * static_cast<size_t>(rows + 1)) +
            Arena::footprint<typename S::ObjectList>(8 * static_cast<size_t>(nets + rows));
+  }
+
+  // The shadow test's rows and networks (setup_shadow_culling).
+  static constexpr size_t shadow_list_bytes(int rows, int nets) {
+    return Arena::footprint<typename S::ShadowRow>(static_cast<size_t>(rows)) +
+           Arena::footprint<typename S::ShadowNet>(static_cast<size_t>(nets));
   }
 
   // The three rows of per-pixel state the diffuse pass works on, and the
@@ -132,6 +140,11 @@ class Tracer : private TracerState<M> {
   using S::live_rows_;
   using S::live_nets_;
   using S::live_nets_stride_;
+  using S::shadow_rows_;
+  using S::shadow_nets_;
+  using S::n_shadow_rows_;
+  using typename S::ShadowRow;
+  using typename S::ShadowNet;
   using typename S::LiveRow;
   using S::dirvecs_;
   using S::light_dirvec_;

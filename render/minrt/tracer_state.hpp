@@ -93,8 +93,19 @@ struct TracerState {
     ObjectList nets[limits::kMaxOrNetworkLength + 1];
     uint32_t fwd[limits::kMaxOrNetworkLength];  // see setup_forward_culling
     uint32_t fwd_all;
-    ShadowLimits shadow[limits::kMaxOrNetworkLength];  // see setup_shadow_culling
-    ShadowLimits shadow_all;
+  };
+  // The shadow test's own flat copy of the OR rows (see
+  // setup_shadow_culling): each row's networks with their limits, rows
+  // without networks left out, so in_shadow walks two arrays in order.
+  struct ShadowNet {
+    ShadowLimits lim;
+    ObjectList net;
+  };
+  struct ShadowRow {
+    ShadowLimits all;
+    const Object* range;
+    const ShadowNet* nets;
+    const ShadowNet* nets_end;
   };
 
   // --- state (the original's globals) -------------------------------------
@@ -123,6 +134,11 @@ struct TracerState {
   LiveRow* live_rows_ = nullptr;
   ObjectList* live_nets_ = nullptr;
   int live_nets_stride_ = 0;
+
+  // Arena tables of setup_shadow_culling.
+  ShadowRow* shadow_rows_ = nullptr;
+  ShadowNet* shadow_nets_ = nullptr;
+  int n_shadow_rows_ = 0;
 
   DirVec dirvecs_[kDirvecGroups][kDirvecsPerGroup];
   DirVec light_dirvec_{};
