@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include <minrt/serial_protocol.h>
-
 namespace minrt::send {
 
 namespace {
@@ -14,20 +12,14 @@ std::uint32_t le32(const std::uint8_t* p) {
 }
 }  // namespace
 
-bool BmpReceiver::fail(std::string msg) {
-  state_ = State::kFailed;
-  message_ = std::move(msg);
-  return false;
-}
-
 int BmpReceiver::rows_complete() const {
   return width_ > 0 ? static_cast<int>(pixels_seen_ / (4u * static_cast<std::uint64_t>(width_))) : 0;
 }
 
 std::size_t BmpReceiver::feed(const std::uint8_t* data, std::size_t size) {
   std::size_t i = 0;
-  while (i < size && !done() && !failed() && !firmware_error()) {
-    if (state_ == State::kPixels) {  // the bulk of the image: take what is there
+  while (i < size && !ended()) {
+    if (state_ == State::kBody) {  // the bulk of the image: take what is there
       const std::uint64_t want = pixel_bytes_ - pixels_seen_;
       const std::size_t n = static_cast<std::size_t>(want < size - i ? want : size - i);
       // Every pixel the firmware writes is opaque: a lost or doubled byte
@@ -66,52 +58,31 @@ bool BmpReceiver::header_done() {
     return fail("the board's BMP header is not the one the firmware writes: the line damaged it");
   pixel_bytes_ = 4u * static_cast<std::uint64_t>(width_) * static_cast<std::uint64_t>(height_);
   if (le32(h + 2) != 54 + pixel_bytes_) return fail("the board's BMP header gives a wrong file size");
-  state_ = State::kPixels;
+  state_ = State::kBody;
   return true;
 }
 
 bool BmpReceiver::step(std::uint8_t c) {
   switch (state_) {
     case State::kStart:
-      if (c == static_cast<std::uint8_t>(MINRT_ERROR_MARKER[0])) {
-        state_ = State::kErrorLine;
-        error_line_.start(c);
-        return true;
-      }
-      if (c != 'B') {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "reply does not start like a BMP or an error line (first byte 0x%02x)", c);
-        return fail(buf);
-      }
-      state_ = State::kHeader;
-      header_[at_++] = c;
+      if (!start(c, 'B', "BMP")) return false;
+      if (state_ == State::kHeader) header_[at_++] = c;
       return true;
     case State::kHeader:
       header_[at_++] = c;
       if (at_ == sizeof header_) return header_done();
       return true;
-    case State::kErrorLine: {
-      bool firmware = false;
-      std::string message;
-      if (error_line_.step(c, firmware, message)) return true;
-      if (!firmware) return fail(message);
-      message_ = message;
-      state_ = State::kFirmwareError;
-      return false;
-    }
+    case State::kErrorLine:
+      return error_line_step(c);
     default:
       return false;
   }
 }
 
 void BmpReceiver::finish() {
-  if (done() || failed() || firmware_error()) return;
+  if (ended() || fail_if_no_image()) return;
   char buf[160];
-  if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
-  else if (state_ == State::kErrorLine)
-    std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", error_line_.text().c_str());
-  else
-    std::snprintf(buf, sizeof buf, "BMP is truncated: %d of %d rows after %llu bytes", rows_complete(), height_,
+  std::snprintf(buf, sizeof buf, "BMP is truncated: %d of %d rows after %llu bytes", rows_complete(), height_,
                   static_cast<unsigned long long>(bytes_));
   fail(buf);
 }

@@ -8,36 +8,22 @@
 #include <cstdint>
 #include <string>
 
-#include "error_line.hpp"
+#include "reply_receiver.hpp"
 
 namespace minrt::send {
 
-class BmpReceiver {
+// kBody: the pixels.
+class BmpReceiver : public ReplyReceiver {
  public:
-  enum class State { kStart, kHeader, kPixels, kErrorLine, kDone, kFailed, kFirmwareError };
-
   std::size_t feed(const std::uint8_t* data, std::size_t size);
   void finish();
 
-  State state() const { return state_; }
-  bool done() const { return state_ == State::kDone; }
-  bool failed() const { return state_ == State::kFailed; }
-  bool firmware_error() const { return state_ == State::kFirmwareError; }
-  bool started() const { return state_ != State::kStart; }
-  bool image_bytes() const { return state_ == State::kHeader || state_ == State::kPixels || done(); }
-  const std::string& message() const { return message_; }
-  std::uint64_t bytes() const { return bytes_; }
   int rows_complete() const;
 
  private:
   bool step(std::uint8_t c);
-  bool fail(std::string msg);
   bool header_done();
 
-  State state_ = State::kStart;
-  std::string message_;
-  ErrorLine error_line_;
-  std::uint64_t bytes_ = 0;
   std::uint8_t header_[54] = {};
   std::size_t at_ = 0;
   int width_ = 0, height_ = 0;

@@ -3,8 +3,6 @@
 #include <cstdio>
 #include <cstring>
 
-#include <minrt/serial_protocol.h>
-
 #include "core/base/crc32.hpp"
 
 namespace minrt::send {
@@ -20,16 +18,10 @@ std::uint32_t be32(const std::uint8_t* p) {
 }
 }  // namespace
 
-bool PngReceiver::fail(std::string msg) {
-  state_ = State::kFailed;
-  message_ = std::move(msg);
-  return false;
-}
-
 std::size_t PngReceiver::feed(const std::uint8_t* data, std::size_t size) {
   std::size_t i = 0;
   while (i < size) {
-    if (done() || failed() || firmware_error()) break;
+    if (ended()) break;
     const bool more = step(data[i]);
     ++i;
     ++bytes_;
@@ -70,27 +62,17 @@ bool PngReceiver::chunk_done() {
 bool PngReceiver::step(std::uint8_t c) {
   switch (state_) {
     case State::kStart:
-      if (c == static_cast<std::uint8_t>(MINRT_ERROR_MARKER[0])) {
-        state_ = State::kErrorLine;
-        error_line_.start(c);
-        return true;
-      }
-      if (c != kSignature[0]) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "reply does not start like a PNG or an error line (first byte 0x%02x)", c);
-        return fail(buf);
-      }
-      state_ = State::kSignature;
-      at_ = 1;
+      if (!start(c, kSignature[0], "PNG")) return false;
+      if (state_ == State::kHeader) at_ = 1;
       return true;
-    case State::kSignature:
+    case State::kHeader:
       if (c != kSignature[at_]) return fail("reply is not a PNG stream (bad signature)");
       if (++at_ == sizeof kSignature) {
-        state_ = State::kChunk;
+        state_ = State::kBody;
         at_ = 0;
       }
       return true;
-    case State::kChunk: {
+    case State::kBody: {
       if (at_ < 8) {
         head_[at_++] = c;
         if (at_ == 8) {
@@ -112,27 +94,17 @@ bool PngReceiver::step(std::uint8_t c) {
       if (in_data - length_ == 3) return chunk_done();
       return true;
     }
-    case State::kErrorLine: {
-      bool firmware = false;
-      std::string message;
-      if (error_line_.step(c, firmware, message)) return true;
-      if (!firmware) return fail(message);
-      message_ = message;
-      state_ = State::kFirmwareError;
-      return false;
-    }
+    case State::kErrorLine:
+      return error_line_step(c);
     default:
       return false;
   }
 }
 
 void PngReceiver::finish() {
-  if (done() || failed() || firmware_error()) return;
+  if (ended() || fail_if_no_image()) return;
   char buf[160];
-  if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
-  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", error_line_.text().c_str());
-  else
-    std::snprintf(buf, sizeof buf, "PNG stream is truncated: %d of %d rows after %llu bytes", rows_complete(), height_,
+  std::snprintf(buf, sizeof buf, "PNG stream is truncated: %d of %d rows after %llu bytes", rows_complete(), height_,
                   static_cast<unsigned long long>(bytes_));
   fail(buf);
 }

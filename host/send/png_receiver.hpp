@@ -9,40 +9,25 @@
 #include <cstdint>
 #include <string>
 
-#include "error_line.hpp"
+#include "reply_receiver.hpp"
 
 namespace minrt::send {
 
-class PngReceiver {
+// kHeader: the signature; kBody: the chunks.
+class PngReceiver : public ReplyReceiver {
  public:
-  enum class State { kStart, kSignature, kChunk, kErrorLine, kDone, kFailed, kFirmwareError };
-
   PngReceiver(int width, int height) : width_(width), height_(height) {}
 
   std::size_t feed(const std::uint8_t* data, std::size_t size);
   void finish();
 
-  State state() const { return state_; }
-  bool done() const { return state_ == State::kDone; }
-  bool failed() const { return state_ == State::kFailed; }
-  bool firmware_error() const { return state_ == State::kFirmwareError; }
-  bool started() const { return state_ != State::kStart; }
-  // The bytes that belong to the image (the caller appends what feed took).
-  bool image_bytes() const { return state_ == State::kSignature || state_ == State::kChunk || done(); }
-  const std::string& message() const { return message_; }
-  std::uint64_t bytes() const { return bytes_; }
   int rows_complete() const { return rows_ < height_ ? rows_ : height_; }
 
  private:
   bool step(std::uint8_t c);
-  bool fail(std::string msg);
   bool chunk_done();
 
   int width_, height_;
-  State state_ = State::kStart;
-  std::string message_;
-  ErrorLine error_line_;
-  std::uint64_t bytes_ = 0;
   int rows_ = 0;
   // Current chunk: 8 header bytes, data, 4 CRC bytes.
   std::uint8_t head_[8] = {};

@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include <minrt/serial_protocol.h>
-
 namespace minrt::send {
 
 namespace {
@@ -34,15 +32,9 @@ int PpmReceiver::rows_complete() const {
   return row == 0 ? 0 : static_cast<int>(pixel_bytes_ / row);
 }
 
-bool PpmReceiver::fail(std::string msg) {
-  state_ = State::kFailed;
-  message_ = std::move(msg);
-  return false;
-}
-
 std::size_t PpmReceiver::feed(const std::uint8_t* data, std::size_t size) {
   std::size_t i = 0;
-  if (state_ == State::kPayload && kind_ == PpmKind::kP6) {
+  if (state_ == State::kBody && kind_ == PpmKind::kP6) {
     // Fast path: copy the binary payload in one go.
     const std::size_t want = pixels_.size() - pixel_bytes_;
     const std::size_t take = size < want ? size : want;
@@ -53,7 +45,7 @@ std::size_t PpmReceiver::feed(const std::uint8_t* data, std::size_t size) {
     if (pixel_bytes_ == pixels_.size()) state_ = State::kDone;
   }
   for (; i < size; ++i) {
-    if (state_ == State::kDone || state_ == State::kFailed || state_ == State::kFirmwareError) break;
+    if (ended()) break;
     ++bytes_;
     if (!step(data[i])) {
       // The byte that ended the reply (or broke it) counts as consumed.
@@ -68,28 +60,11 @@ std::size_t PpmReceiver::feed(const std::uint8_t* data, std::size_t size) {
 bool PpmReceiver::step(std::uint8_t c) {
   switch (state_) {
     case State::kStart:
-      if (c == MINRT_ERROR_MARKER[0]) {
-        state_ = State::kErrorLine;
-        error_line_.start(c);
-        return true;
-      }
-      if (c != 'P') {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "reply does not start like a PPM or an error line (first byte 0x%02x)", c);
-        return fail(buf);
-      }
-      state_ = State::kHeader;
-      token_ = "P";
+      if (!start(c, 'P', "PPM")) return false;
+      if (state_ == State::kHeader) token_ = "P";
       return true;
-    case State::kErrorLine: {
-      bool firmware = false;
-      std::string message;
-      if (error_line_.step(c, firmware, message)) return true;
-      if (!firmware) return fail(message);
-      message_ = message;
-      state_ = State::kFirmwareError;
-      return false;
-    }
+    case State::kErrorLine:
+      return error_line_step(c);
     case State::kHeader:
       if (in_comment_) {
         if (c == '\n' || c == '\r') in_comment_ = false;
@@ -103,7 +78,7 @@ bool PpmReceiver::step(std::uint8_t c) {
         if (token_.empty()) return true;
         if (!header_token_done()) return false;
         if (header_field_ == 4) {
-          state_ = State::kPayload;
+          state_ = State::kBody;
           if (pixels_.empty()) state_ = State::kDone;
           return state_ != State::kDone;
         }
@@ -112,7 +87,7 @@ bool PpmReceiver::step(std::uint8_t c) {
       if (token_.size() > 16) return fail("PPM header field too long");
       token_.push_back(static_cast<char>(c));
       return true;
-    case State::kPayload:
+    case State::kBody:
       // Only P3 gets here (P6 takes the fast path in feed, except its first byte).
       if (kind_ == PpmKind::kP6) {
         pixels_[pixel_bytes_++] = c;
@@ -190,17 +165,16 @@ bool PpmReceiver::header_token_done() {
 }
 
 void PpmReceiver::finish() {
-  if (state_ == State::kDone || state_ == State::kFailed || state_ == State::kFirmwareError) return;
-  if (state_ == State::kPayload && kind_ == PpmKind::kP3 && p3_value_ >= 0 &&
+  if (ended()) return;
+  if (state_ == State::kBody && kind_ == PpmKind::kP3 && p3_value_ >= 0 &&
       pixel_bytes_ + 1 == pixels_.size()) {
     pixels_[pixel_bytes_++] = static_cast<std::uint8_t>(p3_value_);
     state_ = State::kDone;
     return;
   }
+  if (fail_if_no_image()) return;
   char buf[160];
-  if (state_ == State::kStart) std::snprintf(buf, sizeof buf, "no reply from the board");
-  else if (state_ == State::kErrorLine) std::snprintf(buf, sizeof buf, "error line from the board is cut off: %s", error_line_.text().c_str());
-  else if (state_ == State::kHeader) std::snprintf(buf, sizeof buf, "PPM header is cut off after %llu bytes", static_cast<unsigned long long>(bytes_));
+  if (state_ == State::kHeader) std::snprintf(buf, sizeof buf, "PPM header is cut off after %llu bytes", static_cast<unsigned long long>(bytes_));
   else
     std::snprintf(buf, sizeof buf, "image is truncated: %zu of %zu channel values (%d of %d rows) after %llu bytes",
                   pixel_bytes_, pixels_.size(), rows_complete(), expected_.height,

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "error_line.hpp"
+#include "reply_receiver.hpp"
 #include "posix/output_file.hpp"
 #include <vector>
 
@@ -27,10 +27,9 @@ struct ImageSpec {
 std::uint64_t expected_image_bytes(const ImageSpec& spec);
 std::string ppm_header(const ImageSpec& spec);
 
-class PpmReceiver {
+// kBody: the pixel data.
+class PpmReceiver : public ReplyReceiver {
  public:
-  enum class State { kStart, kHeader, kPayload, kErrorLine, kDone, kFailed, kFirmwareError };
-
   explicit PpmReceiver(const ImageSpec& expected);
 
   // Consumes bytes up to the end of the image (or of the error line) and
@@ -40,17 +39,6 @@ class PpmReceiver {
   // newline counts as complete; anything else is truncated.
   void finish();
 
-  State state() const { return state_; }
-  bool done() const { return state_ == State::kDone; }
-  bool failed() const { return state_ == State::kFailed; }
-  bool firmware_error() const { return state_ == State::kFirmwareError; }
-  bool started() const { return state_ != State::kStart; }
-  // Whether the bytes fed last belong to the image (not an error line).
-  bool image_bytes() const { return done() || state_ == State::kHeader || state_ == State::kPayload; }
-  // What went wrong (kFailed), or the firmware's message without the marker.
-  const std::string& message() const { return message_; }
-
-  std::uint64_t bytes() const { return bytes_; }
   int rows_complete() const;
   // Decoded pixels, RGB, row-major (complete once done()).
   const std::vector<std::uint8_t>& pixels() const { return pixels_; }
@@ -58,15 +46,10 @@ class PpmReceiver {
 
  private:
   bool step(std::uint8_t c);
-  bool fail(std::string msg);
   bool fail_p3(const char* what);  // damaged P3 pixel data, located
   bool header_token_done();
 
   ImageSpec expected_;
-  State state_ = State::kStart;
-  std::string message_;
-  ErrorLine error_line_;
-  std::uint64_t bytes_ = 0;
   // Header parsing.
   int header_field_ = 0;  // 0 magic, 1 width, 2 height, 3 maxval
   std::string token_;
