@@ -1,18 +1,15 @@
 #include "general_render.hpp"
-#include "image_window.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <memory>
-#include <thread>
-#include <vector>
 
 #include "core/base/arena.hpp"
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "formats/model/scene_builder.hpp"
+#include "general_rows.hpp"
 #include "render/general/render.hpp"
 #include "texture_files.hpp"
 
@@ -30,12 +27,8 @@ bool render_with(const std::string& text, const std::string& name, const std::st
                  const GeneralOptions& options, GeneralResult& out, std::string& error,
                  const WarningSink& warnings) {
   using R = typename M::real;
-  // Arena: the parse log and the final arrays take at most two records per
-  // line, the BVH a bounded amount per object; one allocation, made once.
-  size_t lines = 1;
-  for (char c : text) lines += c == '\n';
-  const size_t record = model::SceneBuilder<R>::record_bytes();
-  const size_t bytes = lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
+  // One allocation, made once.
+  const size_t bytes = general_arena_bytes<R>(text);
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
 
@@ -71,30 +64,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   out.output_name = header.output_name;
   out.features = renderer.features();
   out.path = general_path_name(renderer.path());
-  out.image.width = scene.width;
-  out.image.height = scene.height;
-  out.image.rgba.assign(static_cast<size_t>(scene.width) * scene.height * 4, 0);
-
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  if (threads < 1) threads = 1;
-  if (threads > scene.height) threads = scene.height;
-  const Clock::time_point t_render = Clock::now();
-  std::atomic<int> next{0};
-  LiveWindow* window = options.window != nullptr && options.window->is_open() ? options.window : nullptr;
-  if (window != nullptr) window->begin(scene.width, scene.height);
-  auto work = [&] {
-    for (int y; (y = next.fetch_add(1)) < scene.height;) {
-      uint8_t* row = out.image.rgba.data() + static_cast<size_t>(y) * scene.width * 4;
-      renderer.render_row(y, row);
-      if (window != nullptr) window->row_rgba(y, row);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  out.render_seconds = seconds_since(t_render);
-  out.threads = threads;
+  render_general_rows(renderer, scene.width, scene.height, options, out);
   return true;
 }
 

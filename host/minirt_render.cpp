@@ -1,11 +1,7 @@
 #include "minirt_render.hpp"
-#include "image_window.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <memory>
-#include <thread>
-#include <vector>
 
 #include "core/base/arena.hpp"
 #include "core/math/math_libm.hpp"
@@ -13,6 +9,7 @@
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
 #include "formats/model/scene_builder.hpp"
+#include "general_rows.hpp"
 #include "render/general/render.hpp"
 #include "texture_files.hpp"
 
@@ -24,11 +21,7 @@ template <class M>
 bool render_with(const std::string& text, const std::string& name, const std::string& base_dir, int width,
                  int height, const GeneralOptions& options, GeneralResult& out, std::string& error) {
   using R = typename M::real;
-  size_t lines = 1;
-  for (char c : text) lines += c == '\n';
-  const size_t record = model::SceneBuilder<R>::record_bytes();
-  const size_t bytes =
-      lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
+  const size_t bytes = general_arena_bytes<R>(text);
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
 
@@ -65,29 +58,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   out.build_seconds = seconds_since(t_build);
   out.features = renderer.features();
   out.path = general_path_name(renderer.path());
-  out.image.width = width;
-  out.image.height = height;
-  out.image.rgba.assign(static_cast<size_t>(width) * height * 4, 0);
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  if (threads < 1) threads = 1;
-  if (threads > height) threads = height;
-  const Clock::time_point t_render = Clock::now();
-  std::atomic<int> next{0};
-  LiveWindow* window = options.window != nullptr && options.window->is_open() ? options.window : nullptr;
-  if (window != nullptr) window->begin(width, height);
-  auto work = [&] {
-    for (int y; (y = next.fetch_add(1)) < height;) {
-      uint8_t* row = out.image.rgba.data() + static_cast<size_t>(y) * width * 4;
-      renderer.render_row(y, row);
-      if (window != nullptr) window->row_rgba(y, row);  // --show: as each row is done
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  out.render_seconds = seconds_since(t_render);
-  out.threads = threads;
+  render_general_rows(renderer, width, height, options, out);
   return true;
 }
 
