@@ -1,8 +1,14 @@
 #include "test_support.hpp"
 
+#include <catch2/catch.hpp>
+
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdio>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace minrt::test {
 
@@ -21,6 +27,23 @@ std::string read_file(const std::string& path) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+std::string temp_dir(const std::string& tag) {
+  std::string dir = "/tmp/minrt-" + tag + "-XXXXXX";
+  REQUIRE(::mkdtemp(dir.data()) != nullptr);
+  return dir;
+}
+
+CommandRun run_in_dir(const std::string& cwd, const std::string& command, const std::string& input) {
+  const std::string err = cwd + "/.stderr";
+  const std::string line = "cd '" + cwd + "' && " + command + " 2>" + err + " >/dev/null <'" + input + "'";
+  const int rc = std::system(line.c_str());
+  CommandRun r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.err = read_file(err);
+  std::remove(err.c_str());
+  return r;
 }
 
 std::vector<ManifestEntry> read_manifest(const std::string& path) {

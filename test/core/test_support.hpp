@@ -31,6 +31,18 @@ struct RenderResult {
   std::vector<std::string> warnings;
 };
 
+// A fresh directory /tmp/minrt-TAG-XXXXXX; the test fails when it cannot
+// be made.
+std::string temp_dir(const std::string& tag);
+
+struct CommandRun {
+  int status = -1;  // exit status; -1 when killed by a signal
+  std::string err;  // what it wrote to standard error
+};
+// Runs the shell command line `command` in `cwd` with standard input from
+// `input` and standard output discarded.
+CommandRun run_in_dir(const std::string& cwd, const std::string& command, const std::string& input = "/dev/null");
+
 // threads: as minrt --threads (0: every core).
 RenderResult render_bytes(const std::string& sld, int width, int height,
                           PpmFormat format = PpmFormat::kP3,

@@ -17,28 +17,13 @@
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string err;
-};
+using Run = minrt::test::CommandRun;
 
-std::string temp_dir() {
-  char dir[] = "/tmp/minrt-cs418-XXXXXX";
-  REQUIRE(mkdtemp(dir) != nullptr);
-  return dir;
-}
+std::string temp_dir() { return minrt::test::temp_dir("cs418"); }
 
 // Runs minrt in `cwd` with shell words `args`, standard input from `input`.
 Run run_in(const std::string& cwd, const std::string& args, const std::string& input = "/dev/null") {
-  const std::string err = cwd + "/.stderr";
-  const std::string cmd =
-      "cd '" + cwd + "' && " + MINRT_BIN + " " + args + " 2>" + err + " >/dev/null <'" + input + "'";
-  const int rc = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.err = minrt::test::read_file(err);
-  std::remove(err.c_str());
-  return r;
+  return minrt::test::run_in_dir(cwd, std::string(MINRT_BIN) + " " + args, input);
 }
 
 bool exists(const std::string& p) {

@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 
 #include <dirent.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -18,33 +17,15 @@
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string err;
-};
+using minrt::test::run_in_dir;
+using Run = minrt::test::CommandRun;
 
-std::string temp_dir() {
-  char dir[] = "/tmp/minrt-scene-size-XXXXXX";
-  REQUIRE(mkdtemp(dir) != nullptr);
-  return dir;
-}
+std::string temp_dir() { return minrt::test::temp_dir("scene-size"); }
 
 // `head`, then a hole up to one byte more than the bound.
 void write_oversized(const std::string& path, const std::string& head) {
   { std::ofstream(path, std::ios::binary) << head; }
   REQUIRE(::truncate(path.c_str(), static_cast<off_t>(minrt::host::kMaxSceneBytes + 1)) == 0);
-}
-
-// Runs `tool args` in `cwd`; standard output is discarded.
-Run run_in(const std::string& cwd, const std::string& tool, const std::string& args) {
-  const std::string err = cwd + "/.stderr";
-  const std::string cmd = "cd '" + cwd + "' && " + tool + " " + args + " 2>" + err + " >/dev/null </dev/null";
-  const int rc = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.err = minrt::test::read_file(err);
-  std::remove(err.c_str());
-  return r;
 }
 
 // Names in `dir` other than . and ..
@@ -82,7 +63,7 @@ TEST_CASE("minrt refuses a scene file over the size bound in every text format, 
     SECTION(c.name) {
       const std::string dir = temp_dir();
       write_oversized(dir + "/" + c.file, c.head);
-      const Run r = run_in(dir, MINRT_BIN, std::string(c.file) + " -o out.png");
+      const Run r = run_in_dir(dir, std::string(MINRT_BIN) + " " + c.file + " -o out.png");
       CHECK(r.status != 0);
       CHECK(r.err == std::string(c.expected) + kTooLarge + "\n");
       CHECK(entries(dir) == 1);  // the scene alone: no image, no temporary
@@ -95,7 +76,7 @@ TEST_CASE("minrt refuses an EASTRAY include over the size bound", "[cli][bad][si
   const std::string dir = temp_dir();
   { std::ofstream(dir + "/scene.ray") << "#include \"big.inc\"\ndisplay 8 8\n"; }
   write_oversized(dir + "/big.inc", "/* included */\n");
-  const Run r = run_in(dir, MINRT_BIN, "scene.ray -o out.png");
+  const Run r = run_in_dir(dir, std::string(MINRT_BIN) + " scene.ray -o out.png");
   CHECK(r.status != 0);
   CHECK_THAT(r.err, Catch::Contains("big.inc") && Catch::Contains(kTooLarge));
   CHECK(r.err.find('\n') == r.err.size() - 1);  // one line
@@ -106,7 +87,7 @@ TEST_CASE("minrt refuses an EASTRAY include over the size bound", "[cli][bad][si
 TEST_CASE("host-send refuses a scene file over the size bound before it opens a port", "[send][bad][size]") {
   const std::string dir = temp_dir();
   write_oversized(dir + "/scene.txt", "png 8 8 out.png\nsphere 0 0 -2 1\n");
-  const Run r = run_in(dir, MINRT_SEND_BIN, "--sim scene.txt");
+  const Run r = run_in_dir(dir, std::string(MINRT_SEND_BIN) + " --sim scene.txt");
   CHECK(r.status != 0);
   CHECK_THAT(r.err, Catch::Contains("cannot read scene.txt: " + kTooLarge));
   CHECK(r.err.find('\n') == r.err.size() - 1);

@@ -23,29 +23,15 @@
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string err;
-};
+using Run = minrt::test::CommandRun;
 
-std::string temp_dir() {
-  char dir[] = "/tmp/minrt-minirt-XXXXXX";
-  REQUIRE(mkdtemp(dir) != nullptr);
-  return dir;
-}
+std::string temp_dir() { return minrt::test::temp_dir("minirt"); }
 
 // Runs minrt in `cwd` with shell words `args`; no display, so a window
 // cannot open by accident.
 Run run_in(const std::string& cwd, const std::string& args) {
-  const std::string err = cwd + "/.stderr";
-  const std::string cmd = "cd '" + cwd + "' && env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + MINRT_BIN +
-                          " " + args + " 2>" + err + " >/dev/null </dev/null";
-  const int rc = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.err = minrt::test::read_file(err);
-  std::remove(err.c_str());
-  return r;
+  return minrt::test::run_in_dir(
+      cwd, std::string("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER ") + MINRT_BIN + " " + args);
 }
 
 bool exists(const std::string& p) {
