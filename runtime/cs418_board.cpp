@@ -3,7 +3,7 @@
 #include "core/image/png_writer.hpp"
 #include "board_math.hpp"
 #include "formats/cs418/cs418_reader.hpp"
-#include "render/general/render.hpp"
+#include "general_board.hpp"
 
 namespace minrt::fw {
 
@@ -32,23 +32,7 @@ Cs418Result render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, boo
     case cs418::ReadStatus::kOutOfMemory: return Cs418Result::kOutOfMemory;
     case cs418::ReadStatus::kSceneError: return Cs418Result::kSceneError;
   }
-  general::Renderer<Math> renderer;
-  uint8_t* row = nullptr;
-  model::Texture* table = nullptr;
-  const int count = textures != nullptr ? textures->count : 0;
-  if (count > 0 && (table = arena.alloc_zeroed<model::Texture>(static_cast<size_t>(count))) != nullptr) {
-    for (int i = 0; i < count; ++i)
-      table[i] = model::Texture{textures->items[i].width, textures->items[i].height, textures->items[i].rgb};
-    scene.textures = table;
-    scene.texture_count = static_cast<uint32_t>(count);
-  }
-  if ((count > 0 && table == nullptr) || !builder.finish(scene) || !renderer.setup(scene, arena, 1, all_features) ||
-      (row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width))) == nullptr) {
-    error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
-        " bytes)");
-    return Cs418Result::kOutOfMemory;
-  }
-  renderer.render(rows, row);
+  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return Cs418Result::kOutOfMemory;
   return Cs418Result::kOk;
 }
 

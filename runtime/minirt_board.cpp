@@ -4,7 +4,7 @@
 #include "core/image/png_writer.hpp"
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
-#include "render/general/render.hpp"
+#include "general_board.hpp"
 
 namespace minrt::fw {
 
@@ -56,23 +56,7 @@ MinirtResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, i
   scene.width = width;
   scene.height = height;
   scene.camera = minirt::place_camera<Math>(view, width, height);
-  general::Renderer<Math> renderer;
-  uint8_t* row = nullptr;
-  model::Texture* table = nullptr;
-  const int count = textures != nullptr ? textures->count : 0;
-  if (count > 0 && (table = arena.alloc_zeroed<model::Texture>(static_cast<size_t>(count))) != nullptr) {
-    for (int i = 0; i < count; ++i)
-      table[i] = model::Texture{textures->items[i].width, textures->items[i].height, textures->items[i].rgb};
-    scene.textures = table;
-    scene.texture_count = static_cast<uint32_t>(count);
-  }
-  if ((count > 0 && table == nullptr) || !builder.finish(scene) || !renderer.setup(scene, arena, 1, all_features) ||
-      (row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(width))) == nullptr) {
-    error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
-        " bytes)");
-    return MinirtResult::kOutOfMemory;
-  }
-  renderer.render(rows, row);
+  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return MinirtResult::kOutOfMemory;
   return MinirtResult::kOk;
 }
 
