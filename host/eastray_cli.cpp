@@ -16,6 +16,7 @@
 #include "posix/output_file.hpp"
 #include "png_io.hpp"
 #include "render/general/eastray_bvh.hpp"
+#include "render/general/eastray_object_bvh.hpp"
 #include "render/general/eastray_tracer.hpp"
 #include "tiff_io.hpp"
 
@@ -64,7 +65,8 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   // The reader's scratch (part table, a mesh's vertex index) and the BVH
   // over the triangles come after the scene's arrays.
   const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
-                            eastray::triangle_bvh_bytes<R>(caps.triangles) + 4096;
+                            eastray::triangle_bvh_bytes<R>(caps.triangles) +
+                            eastray::object_bvh_bytes<R>(caps.nodes) + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
   Scene scene;
@@ -84,6 +86,7 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   width = scene.width;
   height = scene.height;
   eastray::build_triangle_bvh<M>(scene, arena);  // room was reserved; without it the image is the same, slower
+  eastray::build_object_bvh<M>(scene, arena);
   // Rows are independent: every core takes the next one.
   const eastray::Tracer<M> tracer(scene);
   const std::size_t stride = static_cast<std::size_t>(width) * 3;

@@ -4,6 +4,7 @@
 #include "core/image/png_writer.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "render/general/eastray_bvh.hpp"
+#include "render/general/eastray_object_bvh.hpp"
 #include "render/general/eastray_tracer.hpp"
 
 namespace minrt::fw {
@@ -28,6 +29,7 @@ EastrayResult render_eastray_rows(const char* text, size_t size, RgbaRowSink row
   eastray::Reader<Math> reader(text, size, scene, arena);
   if (!reader.read(error)) return EastrayResult::kSceneError;
   eastray::build_triangle_bvh<Math>(scene, arena);  // without room, the same image, slower
+  eastray::build_object_bvh<Math>(scene, arena);
   R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
   uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
   if (linear == nullptr || row == nullptr) {

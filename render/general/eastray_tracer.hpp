@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
+#include "core/base/bit_cast.hpp"
 #include "core/image/row_sink.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/eastray/eastray_scene.hpp"
@@ -256,7 +257,8 @@ class Tracer {
 
   Hit nearest(const V& o, const V& d, R t_min, R t_max, bool shadow) const {
     Hit hit;
-    if (s_.root != kNone) nearest_in(s_.root, o, d, t_min, t_max, hit, shadow);
+    if (s_.unbounded_objects != nullptr) nearest_object(o, d, t_min, t_max, hit, shadow);
+    else if (s_.root != kNone) nearest_in(s_.root, o, d, t_min, t_max, hit, shadow);
     if (s_.triangle_bvh_nodes == nullptr) {
       for (int32_t i = 0; i < s_.triangle_count; ++i) triangle(i, o, d, t_min, t_max, hit, shadow);
       return hit;
@@ -279,6 +281,47 @@ class Tracer {
       stack[top++] = nd.index + (flip ? 1u : 0u);
     }
     return hit;
+  }
+
+  // The main obj's objects through their hierarchy (eastray_object_bvh.hpp).
+  // The walk in order keeps the first of equally near hits, so an object
+  // earlier in the list than the best so far may replace it at the same t.
+  void nearest_object(const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
+    constexpr int32_t kNoObject = 0x7fffffff;  // the caller's t_max stays exclusive
+    int32_t best = kNoObject;
+    auto test = [&](int32_t id) {
+      R limit = best != kNoObject && id < best ? next_above(t_max) : t_max;
+      Hit h;
+      nearest_in(id, o, d, t_min, limit, h, shadow);
+      if (!h.found) return;
+      hit = h;
+      t_max = h.t;
+      best = id;
+    };
+    for (int32_t i = 0; i < s_.unbounded_count; ++i) test(s_.unbounded_objects[i]);
+    if (s_.object_bvh_nodes == nullptr) return;
+    const auto* nodes = static_cast<const general::BvhNode<R>*>(s_.object_bvh_nodes);
+    const V inv = general::inverse_dir(d);
+    uint32_t stack[general::kBvhStack];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const general::BvhNode<R>& nd = nodes[stack[--top]];
+      if (general::box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
+      if (nd.count > 0) {
+        for (uint32_t k = 0; k < nd.count; ++k) test(s_.object_bvh_refs[nd.index + k]);
+        continue;
+      }
+      const bool flip = d[nd.axis] < R(0);
+      stack[top++] = nd.index + (flip ? 0u : 1u);  // the farther child waits
+      stack[top++] = nd.index + (flip ? 1u : 0u);
+    }
+  }
+  // The least value above a positive t (t itself when infinite or NaN).
+  static R next_above(R t) {
+    if (!(t > R(0) && t < R(3e38))) return t;
+    if constexpr (sizeof(R) == 4) return bit_cast<R>(bit_cast<uint32_t>(t) + 1u);
+    else return bit_cast<R>(bit_cast<uint64_t>(t) + 1u);
   }
 
   // A start point pushed off the surface along `side`, so a new ray does

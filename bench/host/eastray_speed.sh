@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# EASTRAY speed on the host: the three largest shared scenes (by bytes)
+# and generated many-object scenes (bench/host/make_eastray_scene.py,
+# --grid 10, 20 and 40 objects a side) in double and in the board's float
+# arithmetic. Prints the median wall time of N interleaved runs (minrt uses
+# every core) and the CPU seconds of the last run. With --baseline PATH, an
+# other minrt build is run in the same rounds; speed-up: the ratio of the
+# median wall times.
+# Usage: bench/host/eastray_speed.sh [--runs N] [--baseline MINRT] [--shared DIR]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+shared=$root/../shared
+runs=3
+baseline=
+while [ $# -gt 0 ]; do
+  case $1 in
+    --runs) runs=$2; shift 2 ;;
+    --baseline) baseline=$2; shift 2 ;;
+    --shared) shared=$2; shift 2 ;;
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "eastray_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+minrt=$root/build/release/host/minrt
+[ -x "$minrt" ] || { echo "eastray_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
+[ -z "$baseline" ] || [ -x "$baseline" ] || { echo "eastray_speed.sh: error: baseline '$baseline' is not an executable" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "cpu: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
+scenes=()
+while read -r _ f; do scenes+=("$f"); done < <(for f in "$shared"/formats/eastray/*.ray; do echo "$(stat -c %s "$f") $f"; done | sort -rn | head -3)
+for g in 10 20 40; do
+  python3 "$root/bench/host/make_eastray_scene.py" --grid "$g" > "$work/grid$g.ray"
+  scenes+=("$work/grid$g.ray")
+done
+# seconds and CPU seconds of one run: BIN SCENE PRECISION...
+run() {
+  local bin=$1 scene=$2
+  shift 2
+  /usr/bin/time -f "%e %U %S" -o "$work/time" "$bin" "$@" "$scene" -o "$work/img.png" 2>/dev/null
+  awk '{print $1, $2 + $3}' "$work/time"
+}
+median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+declare -A wall cpu bwall bcpu
+precisions=("double" "float")
+for ((r = 0; r < runs; r++)); do
+  for s in "${scenes[@]}"; do
+    for p in "${precisions[@]}"; do
+      args=(--precision "$p")
+      [ "$p" = float ] && args+=(--shims portable)
+      key="$(basename "$s" .ray) $p"
+      read -r w c < <(run "$minrt" "$s" "${args[@]}")
+      wall[$key]="${wall[$key]:-} $w"
+      cpu[$key]=$c
+      if [ -n "$baseline" ]; then
+        read -r w c < <(run "$baseline" "$s" "${args[@]}")
+        bwall[$key]="${bwall[$key]:-} $w"
+        bcpu[$key]=$c
+      fi
+    done
+  done
+done
+if [ -n "$baseline" ]; then
+  printf "%-28s %-7s %8s %7s %10s %9s %8s\n" scene arith wall cpu "base wall" "base cpu" speedup
+else
+  printf "%-28s %-7s %8s %7s\n" scene arith wall cpu
+fi
+for s in "${scenes[@]}"; do
+  for p in "${precisions[@]}"; do
+    key="$(basename "$s" .ray) $p"
+    m=$(echo "${wall[$key]}" | tr ' ' '\n' | grep . | median)
+    if [ -n "$baseline" ]; then
+      b=$(echo "${bwall[$key]}" | tr ' ' '\n' | grep . | median)
+      printf "%-28s %-7s %7.2fs %6.2fs %9.2fs %8.2fs %7.1fx\n" "$(basename "$s")" "$p" "$m" "${cpu[$key]}" "$b" \
+        "${bcpu[$key]}" "$(awk -v a="$b" -v b="$m" 'BEGIN {print (b > 0 ? a / b : 0)}')"
+    else
+      printf "%-28s %-7s %7.2fs %6.2fs\n" "$(basename "$s")" "$p" "$m" "${cpu[$key]}"
+    fi
+  done
+done
