@@ -183,14 +183,14 @@ struct Scene {
   // A bounding-volume hierarchy over the triangles, when one was built
   // (render/general/eastray_bvh.hpp); without it every ray tests them all.
   const void* triangle_bvh_nodes = nullptr;
-  const int32_t* triangle_bvh_refs = nullptr;
+  const uint32_t* triangle_bvh_refs = nullptr;
   int32_t triangle_bvh_node_count = 0;
   // A hierarchy over the main obj's objects by their world bounds, and the
   // objects unbounded on some side, tested by every ray
   // (render/general/eastray_object_bvh.hpp); without it every ray walks
   // the whole tree. Both hold node ids.
   const void* object_bvh_nodes = nullptr;
-  const int32_t* object_bvh_refs = nullptr;
+  const uint32_t* object_bvh_refs = nullptr;
   int32_t object_bvh_node_count = 0;
   const int32_t* unbounded_objects = nullptr;
   int32_t unbounded_count = 0;

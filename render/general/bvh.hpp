@@ -118,12 +118,13 @@ constexpr size_t bvh_footprint(uint32_t n) {
          Arena::footprint<Bounds<R>>(n) + Arena::footprint<Vec3<R>>(n);
 }
 
-// Builds over every sphere, triangle and solid. False when the arena is too small
-// (or, for a pathological scene, the tree would be deeper than the stack).
-template <class M>
-bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<typename M::real>& out) {
+// Builds over n items: `item(i, ref, box)` gives the i-th item's reference
+// and padded bounds. False when the arena is too small (or, for a
+// pathological scene, the tree would be deeper than the stack). The EASTRAY
+// tracer builds its hierarchies with it too.
+template <class M, class Item>
+bool build_bvh_over(uint32_t n, Arena& arena, Bvh<typename M::real>& out, Item item) {
   using R = typename M::real;
-  const uint32_t n = scene.sphere_count + scene.triangle_count + scene.solid_count;
   out = Bvh<R>{};
   if (n == 0) return true;
   auto* nodes = arena.alloc_zeroed<BvhNode<R>>(2 * static_cast<size_t>(n));
@@ -136,24 +137,20 @@ bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<ty
     return false;
   }
   for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t polys = scene.sphere_count + scene.triangle_count;
-    refs[i] = i < scene.sphere_count ? i
-              : i < polys            ? (i - scene.sphere_count) | kTriangleBit
-                                     : (i - polys) | kSolidBit;
-    boxes[i] = bvh_detail::bounds_of(scene, refs[i]);
+    item(i, refs[i], boxes[i]);
     centers[i] = (boxes[i].lo + boxes[i].hi) * R(0.5);
   }
   // Work items: node to fill, its range of refs, its depth.
-  struct Item {
+  struct Work {
     uint32_t node, begin, end;
     int depth;
   };
-  Item stack[kBvhStack];
+  Work stack[kBvhStack];
   int top = 0;
-  stack[top++] = Item{0, 0, n, 0};
+  stack[top++] = Work{0, 0, n, 0};
   uint32_t used = 1;
   while (top > 0) {
-    const Item it = stack[--top];
+    const Work it = stack[--top];
     BvhNode<R>& node = nodes[it.node];
     Bounds<R> box = Bounds<R>::empty();
     Bounds<R> cbox = Bounds<R>::empty();
@@ -253,14 +250,28 @@ bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<ty
     node.index = left;
     node.count = 0;
     node.axis = static_cast<uint16_t>(axis);
-    stack[top++] = Item{left + 1, mid, it.end, it.depth + 1};
-    stack[top++] = Item{left, it.begin, mid, it.depth + 1};
+    stack[top++] = Work{left + 1, mid, it.end, it.depth + 1};
+    stack[top++] = Work{left, it.begin, mid, it.depth + 1};
   }
   arena.release_top(mark);
   out.nodes = nodes;
   out.refs = refs;
   out.node_count = used;
   return true;
+}
+
+// Builds over every sphere, triangle and solid of a general scene.
+template <class M>
+bool build_bvh(const model::Scene<typename M::real>& scene, Arena& arena, Bvh<typename M::real>& out) {
+  using R = typename M::real;
+  const uint32_t n = scene.sphere_count + scene.triangle_count + scene.solid_count;
+  const uint32_t polys = scene.sphere_count + scene.triangle_count;
+  return build_bvh_over<M>(n, arena, out, [&](uint32_t i, uint32_t& ref, Bounds<R>& box) {
+    ref = i < scene.sphere_count ? i
+          : i < polys            ? (i - scene.sphere_count) | kTriangleBit
+                                 : (i - polys) | kSolidBit;
+    box = bvh_detail::bounds_of(scene, ref);
+  });
 }
 
 // Slab test against a box: the distance at which the ray enters it (0 when

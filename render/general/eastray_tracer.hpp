@@ -263,17 +263,27 @@ class Tracer {
       for (int32_t i = 0; i < s_.triangle_count; ++i) triangle(i, o, d, t_min, t_max, hit, shadow);
       return hit;
     }
-    // The hierarchy: nearer child first, boxes beyond the nearest hit skipped.
+    // The hierarchy: nearer child first, boxes beyond the nearest hit
+    // skipped; of equally near triangles the first in the list wins, as in
+    // the loop above (and on a board without room for the hierarchy).
     const auto* nodes = static_cast<const general::BvhNode<R>*>(s_.triangle_bvh_nodes);
     const V inv = general::inverse_dir(d);
+    constexpr int32_t kNoTriangle = 0x7fffffff;  // the t_max so far stays exclusive
+    int32_t best = kNoTriangle;
     uint32_t stack[general::kBvhStack];
     int top = 0;
-    if (general::box_entry(nodes[0].box, o, inv, t_max) >= R(0)) stack[top++] = 0;
+    stack[top++] = 0;
     while (top > 0) {
       const general::BvhNode<R>& nd = nodes[stack[--top]];
-      if (general::box_entry(nd.box, o, inv, t_max) < R(0)) continue;
+      if (general::box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
       if (nd.count > 0) {
-        for (uint32_t k = 0; k < nd.count; ++k) triangle(s_.triangle_bvh_refs[nd.index + k], o, d, t_min, t_max, hit, shadow);
+        for (uint32_t k = 0; k < nd.count; ++k) {
+          const int32_t i = static_cast<int32_t>(s_.triangle_bvh_refs[nd.index + k]);
+          const R limit = best != kNoTriangle && i < best ? next_above(t_max) : t_max;
+          R reached = limit;
+          triangle(i, o, d, t_min, reached, hit, shadow);
+          if (reached != limit) t_max = reached, best = i;
+        }
         continue;
       }
       const bool flip = d[nd.axis] < R(0);
@@ -309,7 +319,7 @@ class Tracer {
       const general::BvhNode<R>& nd = nodes[stack[--top]];
       if (general::box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
       if (nd.count > 0) {
-        for (uint32_t k = 0; k < nd.count; ++k) test(s_.object_bvh_refs[nd.index + k]);
+        for (uint32_t k = 0; k < nd.count; ++k) test(static_cast<int32_t>(s_.object_bvh_refs[nd.index + k]));
         continue;
       }
       const bool flip = d[nd.axis] < R(0);
