@@ -12,12 +12,11 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
-#include "core/base/bit_cast.hpp"
 #include "core/image/row_sink.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/eastray/eastray_scene.hpp"
 #include "render/general/bvh.hpp"
-#include "render/general/quadric_shape.hpp"
+#include "render/general/csg_intersect.hpp"
 
 namespace minrt::eastray {
 
@@ -167,60 +166,16 @@ class Tracer {
     return M::exp(-d / half * R(0.69314718055994530942));
   }
 
-  // ------------------------------------------------------------ CSG walk
-  bool accepted(int32_t node, const V& p) const {
-    int32_t cur = node;
-    for (int32_t par = s_.nodes[cur].parent; par != kNone; cur = par, par = s_.nodes[cur].parent) {
-      const Node& pn = s_.nodes[par];
-      if (pn.mode == NodeKind::kTop) return true;
-      for (int32_t c = pn.first_child; c != kNone; c = s_.nodes[c].next) {
-        if (c == cur) continue;
-        const bool in = node_inside(c, p);
-        if (pn.mode == NodeKind::kAnd && !in) return false;
-        if (pn.mode == NodeKind::kOr && in) return false;
-      }
-    }
-    return true;
-  }
+  // ------------------------------------------------------------ CSG (render/general/csg_intersect.hpp)
+  general::CsgScene<R> csg() const { return {s_.nodes, s_.primitives}; }
 
-  bool node_inside(int32_t id, const V& p) const {
-    const Node& n = s_.nodes[id];
-    if (n.kind == NodeKind::kLeaf) return inside(s_.primitives[n.primitive], p);
-    if (n.mode == NodeKind::kAnd) {
-      for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next)
-        if (!node_inside(c, p)) return false;
-      return n.first_child != kNone;
-    }
-    for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next)
-      if (node_inside(c, p)) return true;
-    return false;
-  }
-
-  // The nearest accepted crossing below hit.t (or t_max) in the subtree.
-  void nearest_in(int32_t id, const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
-    const Node& n = s_.nodes[id];
-    if (n.kind == NodeKind::kLeaf) {
-      const Primitive<R>& prim = s_.primitives[n.primitive];
-      if (shadow && prim.no_shadow) return;
-      Crossing<R> c[4];
-      const int k = crossings<M>(prim, o, d, t_min, t_max, c);
-      for (int i = 0; i < k; ++i) {
-        if (!accepted(id, o + d * c[i].t)) continue;
-        t_max = c[i].t;
-        hit.t = c[i].t;
-        V wn = prim.to_local.transposed(c[i].normal);
-        if (prim.inverted) wn = -wn;
-        const R len2 = dot(wn, wn);
-        hit.normal = len2 > R(0) ? wn / M::sqrt(len2) : -d;
-        hit.geo = hit.normal;
-        hit.material = prim.material[c[i].face];
-        hit.found = true;
-        return;
-      }
-      return;
-    }
-    if (n.kind == NodeKind::kRange && !meets<M>(s_.primitives[n.primitive], o, d, t_min, t_max)) return;
-    for (int32_t c = n.first_child; c != kNone; c = s_.nodes[c].next) nearest_in(c, o, d, t_min, t_max, hit, shadow);
+  void take(const general::SolidHit<R>& h, Hit& hit) const {
+    if (!h.found) return;
+    hit.t = h.t;
+    hit.normal = h.normal;
+    hit.geo = h.normal;
+    hit.material = h.material;
+    hit.found = true;
   }
 
   void triangle(int32_t i, const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
@@ -257,8 +212,17 @@ class Tracer {
 
   Hit nearest(const V& o, const V& d, R t_min, R t_max, bool shadow) const {
     Hit hit;
-    if (s_.unbounded_objects != nullptr) nearest_object(o, d, t_min, t_max, hit, shadow);
-    else if (s_.root != kNone) nearest_in(s_.root, o, d, t_min, t_max, hit, shadow);
+    if (s_.root != kNone) {
+      general::SolidHit<R> h;
+      if (s_.unbounded_objects != nullptr) {
+        const general::CsgObjects<R> objects{static_cast<const general::BvhNode<R>*>(s_.object_bvh_nodes),
+                                             s_.object_bvh_refs, s_.unbounded_objects, s_.unbounded_count};
+        general::csg_nearest_object<M>(csg(), objects, o, d, t_min, t_max, h, shadow);
+      } else {
+        general::csg_nearest<M>(csg(), s_.root, o, d, t_min, t_max, h, shadow);
+      }
+      take(h, hit);
+    }
     if (s_.triangle_bvh_nodes == nullptr) {
       for (int32_t i = 0; i < s_.triangle_count; ++i) triangle(i, o, d, t_min, t_max, hit, shadow);
       return hit;
@@ -275,11 +239,11 @@ class Tracer {
     stack[top++] = 0;
     while (top > 0) {
       const general::BvhNode<R>& nd = nodes[stack[--top]];
-      if (general::box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
+      if (general::box_entry(nd.box, o, inv, general::next_above(t_max)) < R(0)) continue;
       if (nd.count > 0) {
         for (uint32_t k = 0; k < nd.count; ++k) {
           const int32_t i = static_cast<int32_t>(s_.triangle_bvh_refs[nd.index + k]);
-          const R limit = best != kNoTriangle && i < best ? next_above(t_max) : t_max;
+          const R limit = best != kNoTriangle && i < best ? general::next_above(t_max) : t_max;
           R reached = limit;
           triangle(i, o, d, t_min, reached, hit, shadow);
           if (reached != limit) t_max = reached, best = i;
@@ -291,47 +255,6 @@ class Tracer {
       stack[top++] = nd.index + (flip ? 1u : 0u);
     }
     return hit;
-  }
-
-  // The main obj's objects through their hierarchy (eastray_object_bvh.hpp).
-  // The walk in order keeps the first of equally near hits, so an object
-  // earlier in the list than the best so far may replace it at the same t.
-  void nearest_object(const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
-    constexpr int32_t kNoObject = 0x7fffffff;  // the caller's t_max stays exclusive
-    int32_t best = kNoObject;
-    auto test = [&](int32_t id) {
-      R limit = best != kNoObject && id < best ? next_above(t_max) : t_max;
-      Hit h;
-      nearest_in(id, o, d, t_min, limit, h, shadow);
-      if (!h.found) return;
-      hit = h;
-      t_max = h.t;
-      best = id;
-    };
-    for (int32_t i = 0; i < s_.unbounded_count; ++i) test(s_.unbounded_objects[i]);
-    if (s_.object_bvh_nodes == nullptr) return;
-    const auto* nodes = static_cast<const general::BvhNode<R>*>(s_.object_bvh_nodes);
-    const V inv = general::inverse_dir(d);
-    uint32_t stack[general::kBvhStack];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const general::BvhNode<R>& nd = nodes[stack[--top]];
-      if (general::box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
-      if (nd.count > 0) {
-        for (uint32_t k = 0; k < nd.count; ++k) test(static_cast<int32_t>(s_.object_bvh_refs[nd.index + k]));
-        continue;
-      }
-      const bool flip = d[nd.axis] < R(0);
-      stack[top++] = nd.index + (flip ? 0u : 1u);  // the farther child waits
-      stack[top++] = nd.index + (flip ? 1u : 0u);
-    }
-  }
-  // The least value above a positive t (t itself when infinite or NaN).
-  static R next_above(R t) {
-    if (!(t > R(0) && t < R(3e38))) return t;
-    if constexpr (sizeof(R) == 4) return bit_cast<R>(bit_cast<uint32_t>(t) + 1u);
-    else return bit_cast<R>(bit_cast<uint64_t>(t) + 1u);
   }
 
   // A start point pushed off the surface along `side`, so a new ray does

@@ -1,14 +1,15 @@
-// One intersector for every EASTRAY primitive but the polygon (kinds 0-8,
-// 10-16): a general quadric in its local frame, optionally clipped to a
+// One intersector for the general model's quadric solids
+// (formats/model/quadric.hpp; every EASTRAY primitive but the polygon,
+// kinds 0-8 and 10-16): a general quadric in its local frame, optionally clipped to a
 // slab on local z with flat caps, and the box as three slabs. The ray is
 // taken into the local frame by the world-to-local affine map (direction
 // not renormalised), so the ray parameter t is the world one.
 #pragma once
 
 #include "core/math/vec3.hpp"
-#include "formats/eastray/eastray_scene.hpp"
+#include "formats/model/quadric.hpp"
 
-namespace minrt::eastray {
+namespace minrt::general {
 
 template <class R>
 struct Crossing {
@@ -31,8 +32,8 @@ Vec3<R> quadric_gradient(const R* q, const Vec3<R>& p) {
 
 // Inside the solid (before the sign), at a local point.
 template <class R>
-bool local_inside(const Primitive<R>& s, const Vec3<R>& p) {
-  if (s.shape == Shape::kBox) {
+bool local_inside(const model::Quadric<R>& s, const Vec3<R>& p) {
+  if (s.shape == model::QuadricShape::kBox) {
     const R ax = p.x < R(0) ? -p.x : p.x, ay = p.y < R(0) ? -p.y : p.y, az = p.z < R(0) ? -p.z : p.z;
     return ax <= s.q[0] && ay <= s.q[1] && az <= s.q[2];
   }
@@ -42,14 +43,14 @@ bool local_inside(const Primitive<R>& s, const Vec3<R>& p) {
 }
 
 template <class R>
-bool inside(const Primitive<R>& s, const Vec3<R>& world) {
+bool inside(const model::Quadric<R>& s, const Vec3<R>& world) {
   return local_inside(s, s.to_local.point(world)) != s.inverted;
 }
 
 // The surface crossings with t in (t_min, t_max), ascending; returns how
 // many (at most 4: two on the quadric, two caps; two for the box).
 template <class M>
-int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>& origin,
+int crossings(const model::Quadric<typename M::real>& s, const Vec3<typename M::real>& origin,
               const Vec3<typename M::real>& dir, typename M::real t_min, typename M::real t_max,
               Crossing<typename M::real>* out) {
   using R = typename M::real;
@@ -66,7 +67,7 @@ int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>
     }
     out[i] = Crossing<R>{t, normal, face};
   };
-  if (s.shape == Shape::kBox) {
+  if (s.shape == model::QuadricShape::kBox) {
     R t0 = -R(1e30), t1 = R(1e30);
     int f0 = -1, f1 = -1;
     const R oo[3] = {o.x, o.y, o.z}, dd[3] = {d.x, d.y, d.z};
@@ -77,7 +78,7 @@ int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>
         continue;
       }
       R ta = (-h - oo[a]) / dd[a], tb = (h - oo[a]) / dd[a];
-      int fa = kFaceBox + 2 * a + 1, fb = kFaceBox + 2 * a;  // -axis, +axis faces
+      int fa = model::kFaceBox + 2 * a + 1, fb = model::kFaceBox + 2 * a;  // -axis, +axis faces
       if (ta > tb) {
         const R x = ta;
         ta = tb, tb = x;
@@ -89,8 +90,8 @@ int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>
     }
     if (t0 > t1 || f0 < 0 || f1 < 0) return 0;
     auto face_normal = [](int f) {
-      const int a = (f - kFaceBox) / 2;
-      const R sgn = ((f - kFaceBox) & 1) != 0 ? R(-1) : R(1);
+      const int a = (f - model::kFaceBox) / 2;
+      const R sgn = ((f - model::kFaceBox) & 1) != 0 ? R(-1) : R(1);
       return a == 0 ? V{sgn, R(0), R(0)} : a == 1 ? V{R(0), sgn, R(0)} : V{R(0), R(0), sgn};
     };
     add(t0, face_normal(f0), f0);
@@ -107,7 +108,7 @@ int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>
     const V p = o + d * t;
     if (s.clip_low && p.z < s.z_low) return;
     if (s.clip_high && p.z > s.z_high) return;
-    add(t, quadric_gradient(q, p), kFaceSide);
+    add(t, quadric_gradient(q, p), model::kFaceSide);
   };
   if (a == R(0)) {
     if (b != R(0)) on_surface(-c / b);
@@ -129,12 +130,12 @@ int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>
     if (s.clip_low) {
       const R t = (s.z_low - o.z) / d.z;
       const V p = o + d * t;
-      if (quadric_value(q, p) < R(0)) add(t, V{R(0), R(0), R(-1)}, kFaceBottom);
+      if (quadric_value(q, p) < R(0)) add(t, V{R(0), R(0), R(-1)}, model::kFaceBottom);
     }
     if (s.clip_high) {
       const R t = (s.z_high - o.z) / d.z;
       const V p = o + d * t;
-      if (quadric_value(q, p) < R(0)) add(t, V{R(0), R(0), R(1)}, kFaceTop);
+      if (quadric_value(q, p) < R(0)) add(t, V{R(0), R(0), R(1)}, model::kFaceTop);
     }
   }
   return n;
@@ -143,7 +144,7 @@ int crossings(const Primitive<typename M::real>& s, const Vec3<typename M::real>
 // Whether the ray (t in (t_min, t_max)) meets the solid at all: it starts
 // inside or crosses its surface. For RANGE bounds.
 template <class M>
-bool meets(const Primitive<typename M::real>& s, const Vec3<typename M::real>& origin,
+bool meets(const model::Quadric<typename M::real>& s, const Vec3<typename M::real>& origin,
            const Vec3<typename M::real>& dir, typename M::real t_min, typename M::real t_max) {
   using R = typename M::real;
   if (local_inside(s, s.to_local.point(origin + dir * t_min))) return true;
@@ -151,4 +152,12 @@ bool meets(const Primitive<typename M::real>& s, const Vec3<typename M::real>& o
   return crossings<M>(s, origin, dir, t_min, t_max, c) > 0;
 }
 
+}  // namespace minrt::general
+
+namespace minrt::eastray {
+using general::crossings;
+using general::Crossing;
+using general::inside;
+using general::local_inside;
+using general::meets;
 }  // namespace minrt::eastray
