@@ -3,7 +3,7 @@
 // flat caps, or a box; per-face materials; the sign (a complement). EASTRAY
 // primitives of kinds 0-8 and 10-16 are these (formats/eastray); the
 // intersector is render/general/quadric_shape.hpp, the bounds
-// render/general/eastray_bounds.hpp.
+// render/general/csg_bounds.hpp.
 #pragma once
 
 #include <stdint.h>

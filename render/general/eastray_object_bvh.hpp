@@ -1,6 +1,6 @@
 // A bounding-volume hierarchy over the main obj's objects (quadrics, boxes,
 // CSG blocks: the root's items, which are independent), by their
-// conservative world bounds (eastray_bounds.hpp). Objects unbounded on some
+// conservative world bounds (csg_bounds.hpp). Objects unbounded on some
 // side go to a list every ray tests; objects that can never be hit (an AND
 // of disjoint items) are left out. Built once in the arena by the general
 // tracer's builder (binned SAH, render/general/bvh.hpp); the tracer walks
@@ -13,7 +13,7 @@
 #include "core/base/arena.hpp"
 #include "formats/eastray/eastray_scene.hpp"
 #include "render/general/bvh.hpp"
-#include "render/general/eastray_bounds.hpp"
+#include "render/general/csg_bounds.hpp"
 
 namespace minrt::eastray {
 
@@ -43,7 +43,7 @@ bool build_object_bvh(Scene<typename M::real>& s, Arena& arena) {
   }
   int32_t bounded = 0, open = 0;
   for (int32_t c = s.nodes[s.root].first_child; c != kNone; c = s.nodes[c].next) {
-    const Box<R> b = node_box<M>(s, c);
+    const general::OpenBox<R> b = general::node_box<M>(general::CsgScene<R>{s.nodes, s.primitives}, c);
     if (b.empty()) continue;
     if (!b.finite()) {
       unbounded[open++] = c;

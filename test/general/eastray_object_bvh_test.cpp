@@ -1,5 +1,5 @@
 // The hierarchy over EASTRAY objects (render/general/eastray_object_bvh.hpp)
-// and the bounds it is built from (eastray_bounds.hpp): every crossing of
+// and the bounds it is built from (csg_bounds.hpp): every crossing of
 // every primitive kind under random moves lies in the primitive's bound;
 // a scene of assorted objects and CSG blocks renders the same bytes with
 // and without the hierarchy in double and in the board's float; equally
@@ -16,7 +16,7 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "formats/eastray/eastray_reader.hpp"
-#include "render/general/eastray_bounds.hpp"
+#include "render/general/csg_bounds.hpp"
 #include "render/general/eastray_object_bvh.hpp"
 #include "render/general/eastray_tracer.hpp"
 
@@ -168,7 +168,7 @@ TEST_CASE("eastray object bounds hold every crossing of every kind under moves",
   int bounded = 0, crossings_seen = 0;
   for (int32_t p = 0; p < l.scene.primitive_count; ++p) {
     const eastray::Primitive<double>& prim = l.scene.primitives[p];
-    const eastray::Box<double> b = eastray::primitive_box<M>(prim);
+    const general::OpenBox<double> b = general::primitive_box<M>(prim);
     INFO("primitive " << p << " kind " << int(prim.kind));
     const bool open = prim.kind == 1 || prim.kind == 4 || prim.kind == 5 || prim.kind == 7 || prim.kind == 8 ||
                       (prim.kind == 0 && prim.q[9] == 0.0);

@@ -1,5 +1,7 @@
-// Conservative world-space bounds of EASTRAY primitives and CSG blocks, for
-// the hierarchy over the main obj's objects (eastray_object_bvh.hpp). A
+// Conservative world-space bounds of the general model's quadric solids and
+// CSG blocks (formats/model/quadric.hpp, csg.hpp), for the hierarchy over a
+// tree's objects (csg_intersect.hpp; built for EASTRAY scenes by
+// eastray_object_bvh.hpp). A
 // side may be infinite (an unclipped cylinder, a plane); a block that is
 // infinite on any side is tested by every ray. Every point a ray can hit
 // on a primitive lies in the closure of its inside, so an AND block's hits
@@ -11,34 +13,36 @@
 
 #include <stdint.h>
 
-#include "formats/eastray/eastray_scene.hpp"
+#include "formats/model/csg.hpp"
+#include "formats/model/quadric.hpp"
+#include "render/general/csg_intersect.hpp"
 
-namespace minrt::eastray {
+namespace minrt::general {
 
 // Relative widening of every finite side (float rounding is ~6e-8).
 inline constexpr double kBoundPad = 1e-3;
 
 // An axis-aligned box whose sides may be +-infinity (kInfinity and beyond).
 template <class R>
-struct Box {
+struct OpenBox {
   static constexpr R kInfinity = R(1e30);
   R lo[3], hi[3];
 
-  static Box everything() { return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}}; }
-  static Box nothing() { return {{kInfinity, kInfinity, kInfinity}, {-kInfinity, -kInfinity, -kInfinity}}; }
+  static OpenBox everything() { return {{-kInfinity, -kInfinity, -kInfinity}, {kInfinity, kInfinity, kInfinity}}; }
+  static OpenBox nothing() { return {{kInfinity, kInfinity, kInfinity}, {-kInfinity, -kInfinity, -kInfinity}}; }
   bool empty() const { return lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]; }
   bool finite() const {
     for (int a = 0; a < 3; ++a)
       if (!(lo[a] > -kInfinity && hi[a] < kInfinity)) return false;
     return true;
   }
-  void unite(const Box& b) {
+  void unite(const OpenBox& b) {
     for (int a = 0; a < 3; ++a) {
       if (b.lo[a] < lo[a]) lo[a] = b.lo[a];
       if (b.hi[a] > hi[a]) hi[a] = b.hi[a];
     }
   }
-  void intersect(const Box& b) {
+  void intersect(const OpenBox& b) {
     for (int a = 0; a < 3; ++a) {
       if (b.lo[a] > lo[a]) lo[a] = b.lo[a];
       if (b.hi[a] < hi[a]) hi[a] = b.hi[a];
@@ -70,10 +74,10 @@ typename M::real root_of(typename M::real v) {
 
 // The local bound of a primitive's inside (before the sign).
 template <class M>
-Box<typename M::real> local_box(const Primitive<typename M::real>& s) {
+OpenBox<typename M::real> local_box(const model::Quadric<typename M::real>& s) {
   using R = typename M::real;
-  Box<R> b = Box<R>::everything();
-  if (s.shape == Shape::kBox) {
+  OpenBox<R> b = OpenBox<R>::everything();
+  if (s.shape == model::QuadricShape::kBox) {
     for (int a = 0; a < 3; ++a) b.lo[a] = -s.q[a], b.hi[a] = s.q[a];
     return b;
   }
@@ -86,7 +90,7 @@ Box<typename M::real> local_box(const Primitive<typename M::real>& s) {
     if (axes != 1) return b;
     const int a = q[6] != R(0) ? 0 : q[7] != R(0) ? 1 : 2;
     const R edge = -q[9] / q[6 + a];
-    Box<R> h = Box<R>::everything();
+    OpenBox<R> h = OpenBox<R>::everything();
     if (q[6 + a] > R(0)) h.hi[a] = edge;
     else h.lo[a] = edge;
     b.intersect(h);
@@ -107,7 +111,7 @@ Box<typename M::real> local_box(const Primitive<typename M::real>& s) {
     const R m2 = -(c02 * g0 + c12 * g1 + c22 * g2) / (R(2) * det3);
     const R k = -(m0 * g0 + m1 * g1 + m2 * g2) / R(2) - q[9];  // -F(m)
     const R m[3] = {m0, m1, m2}, inv[3] = {c00 / det3, c11 / det3, c22 / det3};
-    Box<R> e;
+    OpenBox<R> e;
     for (int a = 0; a < 3; ++a) {
       const R r = root_of<M>(k * inv[a]);
       e.lo[a] = m[a] - r, e.hi[a] = m[a] + r;
@@ -137,7 +141,7 @@ Box<typename M::real> local_box(const Primitive<typename M::real>& s) {
     }
   }
   R kmax = R(0);
-  Box<R> e = Box<R>::nothing();
+  OpenBox<R> e = OpenBox<R>::nothing();
   for (int i = 0; i < nz; ++i) {
     const R z = zs[i];
     const R k = (alpha * z + beta) * z + gamma;
@@ -151,7 +155,7 @@ Box<typename M::real> local_box(const Primitive<typename M::real>& s) {
   const R rx = root_of<M>(kmax * i00), ry = root_of<M>(kmax * i11);
   e.lo[0] = e.lo[0] - rx, e.hi[0] = e.hi[0] + rx;
   e.lo[1] = e.lo[1] - ry, e.hi[1] = e.hi[1] + ry;
-  e.lo[2] = -Box<R>::kInfinity, e.hi[2] = Box<R>::kInfinity;
+  e.lo[2] = -OpenBox<R>::kInfinity, e.hi[2] = OpenBox<R>::kInfinity;
   b.intersect(e);
   return b;
 }
@@ -159,8 +163,8 @@ Box<typename M::real> local_box(const Primitive<typename M::real>& s) {
 // w + W * box by interval arithmetic (an infinite side times an exact zero
 // adds nothing).
 template <class R>
-Box<R> mapped(const Affine<R>& to_world, const Box<R>& l) {
-  Box<R> w;
+OpenBox<R> mapped(const model::Affine<R>& to_world, const OpenBox<R>& l) {
+  OpenBox<R> w;
   const R t[3] = {to_world.t.x, to_world.t.y, to_world.t.z};
   for (int i = 0; i < 3; ++i) {
     R lo = t[i], hi = t[i];
@@ -169,13 +173,13 @@ Box<R> mapped(const Affine<R>& to_world, const Box<R>& l) {
       const R c = to_world.m[i * 3 + j];
       if (c == R(0)) continue;
       const R a = c > R(0) ? l.lo[j] : l.hi[j], bb = c > R(0) ? l.hi[j] : l.lo[j];
-      if (!(a > -Box<R>::kInfinity && a < Box<R>::kInfinity)) neg_inf = true;
+      if (!(a > -OpenBox<R>::kInfinity && a < OpenBox<R>::kInfinity)) neg_inf = true;
       else lo = lo + c * a;
-      if (!(bb > -Box<R>::kInfinity && bb < Box<R>::kInfinity)) pos_inf = true;
+      if (!(bb > -OpenBox<R>::kInfinity && bb < OpenBox<R>::kInfinity)) pos_inf = true;
       else hi = hi + c * bb;
     }
-    w.lo[i] = neg_inf ? -Box<R>::kInfinity : lo;
-    w.hi[i] = pos_inf ? Box<R>::kInfinity : hi;
+    w.lo[i] = neg_inf ? -OpenBox<R>::kInfinity : lo;
+    w.hi[i] = pos_inf ? OpenBox<R>::kInfinity : hi;
   }
   return w;
 }
@@ -184,46 +188,46 @@ Box<R> mapped(const Affine<R>& to_world, const Box<R>& l) {
 
 // The world bound of a primitive's hits.
 template <class M>
-Box<typename M::real> primitive_box(const Primitive<typename M::real>& s) {
+OpenBox<typename M::real> primitive_box(const model::Quadric<typename M::real>& s) {
   using R = typename M::real;
-  Affine<R> to_world;
-  if (!s.to_local.inverse(to_world)) return Box<R>::everything();
-  Box<R> l;
+  model::Affine<R> to_world;
+  if (!s.to_local.inverse(to_world)) return OpenBox<R>::everything();
+  OpenBox<R> l;
   if (s.inverted) {
     // The complement of a half-space is a half-space; of anything else, unbounded.
     const R* q = s.q;
-    const bool half = s.shape == Shape::kQuadric && !s.clip_low && !s.clip_high && q[0] == R(0) && q[1] == R(0) &&
+    const bool half = s.shape == model::QuadricShape::kQuadric && !s.clip_low && !s.clip_high && q[0] == R(0) && q[1] == R(0) &&
                       q[2] == R(0) && q[3] == R(0) && q[4] == R(0) && q[5] == R(0) &&
                       (q[6] != R(0)) + (q[7] != R(0)) + (q[8] != R(0)) == 1;
-    if (!half) return Box<R>::everything();
-    Primitive<R> flipped = s;
+    if (!half) return OpenBox<R>::everything();
+    model::Quadric<R> flipped = s;
     for (int i = 6; i < 10; ++i) flipped.q[i] = -q[i];
     l = bounds_detail::local_box<M>(flipped);
   } else {
     l = bounds_detail::local_box<M>(s);
   }
-  if (l.empty()) return Box<R>::nothing();
+  if (l.empty()) return OpenBox<R>::nothing();
   l.widen();
-  Box<R> w = bounds_detail::mapped(to_world, l);
+  OpenBox<R> w = bounds_detail::mapped(to_world, l);
   w.widen();
   return w;
 }
 
 // The world bound of a CSG node's hits (recursive over its items).
 template <class M>
-Box<typename M::real> node_box(const Scene<typename M::real>& s, int32_t id) {
+OpenBox<typename M::real> node_box(const CsgScene<typename M::real>& s, int32_t id) {
   using R = typename M::real;
-  const Node& n = s.nodes[id];
-  if (n.kind == NodeKind::kLeaf) return primitive_box<M>(s.primitives[n.primitive]);
-  if (n.mode == NodeKind::kAnd) {
-    if (n.first_child == kNone) return Box<R>::nothing();
-    Box<R> b = Box<R>::everything();
-    for (int32_t c = n.first_child; c != kNone; c = s.nodes[c].next) b.intersect(node_box<M>(s, c));
+  const model::CsgNode& n = s.nodes[id];
+  if (n.kind == model::NodeKind::kLeaf) return primitive_box<M>(s.solids[n.primitive]);
+  if (n.mode == model::NodeKind::kAnd) {
+    if (n.first_child == model::kNoNode) return OpenBox<R>::nothing();
+    OpenBox<R> b = OpenBox<R>::everything();
+    for (int32_t c = n.first_child; c != model::kNoNode; c = s.nodes[c].next) b.intersect(node_box<M>(s, c));
     return b;
   }
-  Box<R> b = Box<R>::nothing();
-  for (int32_t c = n.first_child; c != kNone; c = s.nodes[c].next) b.unite(node_box<M>(s, c));
+  OpenBox<R> b = OpenBox<R>::nothing();
+  for (int32_t c = n.first_child; c != model::kNoNode; c = s.nodes[c].next) b.unite(node_box<M>(s, c));
   return b;
 }
 
-}  // namespace minrt::eastray
+}  // namespace minrt::general
