@@ -1,7 +1,7 @@
 // The EASTRAY reader and tracer on arbitrary (already preprocessed) text:
 // the reader accepts or refuses with a located message, never crashes or
 // hangs; an accepted small scene renders without reading out of bounds and
-// gives opaque pixels.
+// gives opaque pixels, walking the BVHs over its objects and triangles.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -10,6 +10,8 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "formats/eastray/eastray_reader.hpp"
+#include "render/general/eastray_bvh.hpp"
+#include "render/general/eastray_object_bvh.hpp"
 #include "render/general/eastray_tracer.hpp"
 
 namespace {
@@ -20,7 +22,8 @@ void read_one(const uint8_t* data, size_t size) {
   using Scene = minrt::eastray::Scene<R>;
   constexpr typename Scene::Capacities kItems = Scene::Capacities::all(512);
   static std::vector<unsigned char> storage(Scene::bytes_for(kItems) + minrt::eastray::Reader<M>::scratch_bytes() +
-                                            4096 * 4 + 4096);
+                                            minrt::eastray::object_bvh_bytes<R>(512) +
+                                            minrt::eastray::triangle_bvh_bytes<R>(512) + 4096 * 4 + 4096);
   minrt::Arena arena(storage.data(), storage.size());
   minrt::eastray::Scene<R> scene;
   if (!scene.allocate(arena, kItems)) std::abort();
@@ -30,6 +33,11 @@ void read_one(const uint8_t* data, size_t size) {
     if (d.length <= 0 || !d.has_pos) std::abort();  // a refusal always says what and where
     return;
   }
+  // The hierarchies over any accepted scene's objects and triangles (their
+  // bounds meet every coefficient and move the reader lets through); the
+  // render below walks them.
+  minrt::eastray::build_triangle_bvh<M>(scene, arena);
+  minrt::eastray::build_object_bvh<M>(scene, arena);
   if (static_cast<int64_t>(scene.width) * scene.height > 64 || scene.max_depth > 4 || scene.anti > 2) return;
   std::vector<R> linear(static_cast<size_t>(scene.width) * 3);
   std::vector<uint8_t> rgba(static_cast<size_t>(scene.width) * 4);

@@ -69,6 +69,7 @@ namespace bounds_detail {
 template <class M>
 typename M::real root_of(typename M::real v) {
   using R = typename M::real;
+  if (v != v) return OpenBox<R>::kInfinity;  // NaN: no bound known
   return v > R(0) ? M::sqrt(v) : R(0);
 }
 
@@ -210,6 +211,10 @@ OpenBox<typename M::real> primitive_box(const model::Quadric<typename M::real>& 
   l.widen();
   OpenBox<R> w = bounds_detail::mapped(to_world, l);
   w.widen();
+  for (int a = 0; a < 3; ++a) {  // a NaN side (overflowing moves or coefficients) is open
+    if (w.lo[a] != w.lo[a]) w.lo[a] = -OpenBox<R>::kInfinity;
+    if (w.hi[a] != w.hi[a]) w.hi[a] = OpenBox<R>::kInfinity;
+  }
   return w;
 }
 

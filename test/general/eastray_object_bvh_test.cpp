@@ -193,6 +193,25 @@ TEST_CASE("eastray object bounds hold every crossing of every kind under moves",
   CHECK(crossings_seen > 1000);
 }
 
+TEST_CASE("eastray object bounds: a NaN or overflowing solid is unbounded, and so is an OR holding it", "[eastray][bvh]") {
+  using M = PortableFloat;
+  model::Quadric<float> q{};
+  q.shape = model::QuadricShape::kQuadric;
+  q.q[0] = q.q[1] = q.q[2] = 1.0f;
+  q.q[9] = -1.0f;
+  CHECK(general::primitive_box<M>(q).finite());  // the unit sphere
+  q.q[9] = __builtin_nanf("");
+  CHECK_FALSE(general::primitive_box<M>(q).finite());
+  q.q[9] = -1.0f;
+  q.to_local.m[0] = __builtin_nanf("");  // a singular or NaN map
+  CHECK_FALSE(general::primitive_box<M>(q).finite());
+  Loaded<M> l(std::string(kHeader) + "obj [ [ 2 red 1  0 0 0  1 ;  2 red 1  5 0 0  1e25 ; ] 2 red 1  0 0 0  1 ; ]\n");
+  const general::CsgScene<float> csg{l.scene.nodes, l.scene.primitives};
+  const int32_t block = l.scene.nodes[l.scene.root].first_child;
+  CHECK_FALSE(general::node_box<M>(csg, block).finite());                 // radius squared overflows
+  CHECK(general::node_box<M>(csg, l.scene.nodes[block].next).finite());  // the plain sphere
+}
+
 TEST_CASE("eastray object hierarchy: the same image as the plain walk", "[eastray][bvh]") {
   for (uint64_t seed : {1u, 2u, 3u}) {
     INFO("seed " << seed);
