@@ -35,35 +35,6 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
   return a;
 }
 
-// Every protocol gives the raw protocol's PNG, and its pixels are minrt's
-// `--precision float --shims portable` image.
-void check_scene(hs_test::TempDir& dir, const std::string& scene, const std::vector<std::string>& size) {
-  const std::string host = dir.file("host.png");
-  const RunResult m =
-      run(with({HS_MINRT, "-q", "--precision", "float", "--shims", "portable", scene, "-o", host}, size));
-  INFO(scene << "\n" << m.err);
-  REQUIRE(m.status == 0);
-  const std::string raw = dir.file("raw.png");
-  const RunResult r = send_sim(scene, raw, size);
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  minrt::host::RgbaImage want;
-  std::string why;
-  REQUIRE(minrt::host::read_png(host, want, why));
-  for (const auto& protocol : text_protocols()) {
-    const std::string got = dir.file("got.png");
-    const RunResult p = send_sim(scene, got, with(protocol, size));
-    INFO(joined(protocol) << "\n" << p.err);
-    REQUIRE(p.status == 0);
-    CHECK(hs_test::read_file(got) == hs_test::read_file(raw));
-    minrt::host::RgbaImage img;
-    REQUIRE(minrt::host::read_png(got, img, why));
-    CHECK(img.width == want.width);
-    CHECK(img.height == want.height);
-    CHECK(img.rgba == want.rgba);
-  }
-}
-
 }  // namespace
 
 TEST_CASE("text-scene upload: miniRT and EASTRAY tags are accepted, in both byte orders of the course words",
@@ -95,7 +66,7 @@ TEST_CASE("miniRT scenes over course and framed: the raw protocol's PNG, pixels 
   const std::string valid = hs_test::shared_dir() + "/formats/minirt/valid/";
   // earth: a texture travels ahead of the text (the preamble, read in place).
   for (const char* name : {"mandatory_basic", "bonus_cone", "earth"})
-    check_scene(dir, valid + name + ".rt", kMinirtSize);
+    hs_test::check_png_on_every_protocol(dir, valid + name + ".rt", kMinirtSize);
 }
 
 TEST_CASE("EASTRAY scenes over course and framed: the raw protocol's PNG, pixels the host float model's",
@@ -105,7 +76,7 @@ TEST_CASE("EASTRAY scenes over course and framed: the raw protocol's PNG, pixels
   const std::string ray = hs_test::shared_dir() + "/formats/eastray/";
   // preproc_define_include: host-send expands #include and #define first.
   for (const char* name : {"basic_sphere_floor_elight", "preproc_define_include", "kinds_20_polygon_mesh"})
-    check_scene(dir, ray + name + ".ray", {});
+    hs_test::check_png_on_every_protocol(dir, ray + name + ".ray", {});
 }
 
 TEST_CASE("broken miniRT and EASTRAY files over course and framed: located error, status 3, no file",

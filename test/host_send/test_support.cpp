@@ -1,5 +1,7 @@
 #include "test_support.hpp"
 
+#include <catch2/catch.hpp>
+
 #include <dirent.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -13,6 +15,8 @@
 #include <iterator>
 #include <stdexcept>
 #include <thread>
+
+#include "png_io.hpp"
 
 namespace hs_test {
 
@@ -130,6 +134,36 @@ std::string joined(const std::vector<std::string>& words) {
   std::string s;
   for (const auto& w : words) s += (s.empty() ? "" : " ") + w;
   return s;
+}
+
+void check_png_on_every_protocol(const TempDir& dir, const std::string& scene, const std::vector<std::string>& extra) {
+  const std::string host = dir.file("host.png");
+  std::vector<std::string> model{HS_MINRT, "-q", "--precision", "float", "--shims", "portable", scene, "-o", host};
+  model.insert(model.end(), extra.begin(), extra.end());
+  const RunResult m = run(model);
+  INFO(scene << "\n" << m.err);
+  REQUIRE(m.status == 0);
+  const std::string raw = dir.file("raw.png");
+  const RunResult r = send_sim(scene, raw, extra);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  minrt::host::RgbaImage want;
+  std::string why;
+  REQUIRE(minrt::host::read_png(host, want, why));
+  for (const auto& protocol : text_protocols()) {
+    const std::string got = dir.file("got.png");
+    std::vector<std::string> options = protocol;
+    options.insert(options.end(), extra.begin(), extra.end());
+    const RunResult p = send_sim(scene, got, options);
+    INFO(joined(protocol) << "\n" << p.err);
+    REQUIRE(p.status == 0);
+    CHECK(read_file(got) == read_file(raw));
+    minrt::host::RgbaImage img;
+    REQUIRE(minrt::host::read_png(got, img, why));
+    CHECK(img.width == want.width);
+    CHECK(img.height == want.height);
+    CHECK(img.rgba == want.rgba);
+  }
 }
 
 }  // namespace hs_test

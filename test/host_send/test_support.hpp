@@ -57,4 +57,10 @@ const std::vector<std::vector<std::string>>& text_protocols();
 // The words with a space between, for test messages.
 std::string joined(const std::vector<std::string>& words);
 
+// A scene whose board image is a PNG (CS418, miniRT, EASTRAY), in `dir`
+// with `extra` options (a --size, say): every protocol of text_protocols()
+// gives the raw protocol's PNG byte for byte, and its pixels are minrt's
+// `--precision float --shims portable` image.
+void check_png_on_every_protocol(const TempDir& dir, const std::string& scene, const std::vector<std::string>& extra);
+
 }  // namespace hs_test

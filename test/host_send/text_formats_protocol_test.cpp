@@ -170,28 +170,8 @@ TEST_CASE("CS418 scenes over course and framed: the firmware's PNG is the raw pr
   const std::string cs418 = hs_test::shared_dir() + "/formats/cs418/";
   // ray-tex: two 1000x500 textures (3 MB of texels) travel ahead of the text.
   for (const char* name : {"ray-sphere", "ray-shadow-plane", "ray-trans3", "ray-tri", "ray-tex"}) {
-    const std::string scene = cs418 + name + ".txt";
-    const std::string raw = dir.file(std::string(name) + "-raw.png");
-    const std::string host = dir.file(std::string(name) + "-host.png");
-    host_model(scene, host);
-    const RunResult r = send_sim(scene, raw, {});
-    INFO(name << "\n" << r.err);
-    REQUIRE(r.status == 0);
-    minrt::host::RgbaImage want;
-    std::string why;
-    REQUIRE(minrt::host::read_png(host, want, why));
-    for (const auto& protocol : text_protocols()) {
-      const std::string got = dir.file(std::string(name) + "-got.png");
-      const RunResult p = send_sim(scene, got, protocol);
-      INFO(joined(protocol) << "\n" << p.err);
-      REQUIRE(p.status == 0);
-      CHECK(hs_test::read_file(got) == hs_test::read_file(raw));
-      minrt::host::RgbaImage img;
-      REQUIRE(minrt::host::read_png(got, img, why));
-      CHECK(img.width == want.width);
-      CHECK(img.height == want.height);
-      CHECK(img.rgba == want.rgba);
-    }
+    INFO(name);
+    hs_test::check_png_on_every_protocol(dir, cs418 + name + ".txt", {});
   }
 }
 
