@@ -15,8 +15,6 @@ inline auto Tracer<M>::setup_dirvec_constants(DirVec& dv) -> void {
   dv.octant = v[0] == R(0) || v[1] == R(0) || v[2] == R(0)
                   ? -1
                   : int32_t{v[0] < R(0)} | int32_t{v[1] < R(0)} << 1 | int32_t{v[2] < R(0)} << 2;
-  if constexpr (S::kCompactDiffuse)
-    for (int k = 0; k < 3; ++k) dv.recip.inv[k] = v[k] == R(0) ? R(0) : R(1.0) / v[k];
   for (int i = n_objects_ - 1; i >= 0; --i) {
     const Object& m = objects_[i];
     R* c = const_cast<R*>(consts_of(dv, m));
@@ -59,14 +57,6 @@ inline auto Tracer<M>::setup_dirvec_constants(DirVec& dv) -> void {
       else c[1] = R(__builtin_nan(""));
       c[5] = aa != R(0) && !m.inverted && c[4] > R(0) ? R(0) : R(__builtin_nan(""));
     }
-    if constexpr (S::kCompactDiffuse) {
-      R* h = const_cast<R*>(compact_of(dv, m));
-      if (m.form == kFormPlane) {
-        h[0] = c[0];
-      } else if (m.form != kFormBox) {
-        for (int k = 0; k < 6; ++k) h[k] = c[k];
-      }
-    }
   }
 }
 
@@ -91,14 +81,6 @@ inline auto Tracer<M>::setup_startp(const R* p) -> void {
       // once s_k is past it, fl(c - s_k) has the other sign (or is 0) and
       // d <= 0, or NaN, which fails the face test. A ray whose code avoids
       // every bit here gets no positive distance from the box.
-      if constexpr (S::kCompactDiffuse) {
-        if (m.form == kFormBox)
-          for (int k = 0; k < 3; ++k) {
-            const R pos = fneg_cond(m.inverted, m.abc[k]) - s[k];    // v_k > 0
-            const R neg = fneg_cond(!m.inverted, m.abc[k]) - s[k];   // v_k < 0
-            for (int o = 0; o < 8; ++o) m.faces.face[o][k] = (o >> k & 1) != 0 ? neg : pos;
-          }
-      }
       if (m.form == kFormBox) {
         uint32_t ahead = 0;
         for (int k = 0; k < 3; ++k) {

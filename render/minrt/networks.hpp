@@ -192,29 +192,14 @@ MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> 
 }
 
 template <MathPolicy M>
-MINRT_INLINE auto Tracer<M>::trace_network_octant(ObjectList net, const DirVec& dv) -> void {
-  for (ObjectList e = net; *e != nullptr; ++e) {
-    const Object& m = **e;
-    if ((m.ahead & dv.code) == 0 && e[1] == nullptr) break;  // see trace_network
-    const int t0 = solver_octant<true>(m, dv);
-    if (t0 != 0)
-      record_hit(net, m, t0, dv.v, startp_fast_);
-    else if (!m.inverted)
-      break;
-  }
-}
-
-template <MathPolicy M>
 template <bool kCull>
 MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
   tmin_ = R(1000000000.0);
   if (kCull && dv.octant >= 0) {
     // The rows and networks the masks leave for this octant, in order.
     for (const LiveRow* lr = live_rows_ + dv.octant * (n_or_rows_ + 1); lr->nets != nullptr; ++lr) {
-      if (lr->range != nullptr &&
-          !(solver_octant(*lr->range, dv) != 0 && solver_dist_ < tmin_))
-        continue;
-      for (const ObjectList* a = lr->nets; *a != nullptr; ++a) trace_network_octant(*a, dv);
+      if (lr->range != nullptr && !(solver_fast2(*lr->range, dv) != 0 && solver_dist_ < tmin_)) continue;
+      for (const ObjectList* a = lr->nets; *a != nullptr; ++a) trace_network<true>(*a, dv);
     }
     return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
   }

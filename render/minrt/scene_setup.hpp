@@ -80,12 +80,7 @@ inline auto Tracer<M>::load_environment(const Scene<R>& s) -> void {
 template <MathPolicy M>
 inline auto Tracer<M>::load_objects(const Scene<R>& s) -> void {
   n_objects_ = s.object_count;
-  // Each direction's row: the compact constants of every object, then the
-  // full ones.
-  int compact = 0;
-  for (int i = 0; i < n_objects_; ++i) compact += compact_count(s.objects[i].form);
-  int offset = compact;
-  compact = 0;
+  int offset = 0;
   for (int i = 0; i < n_objects_; ++i) {
     const SceneObject<R>& in = s.objects[i];
     Object& o = objects_[i];
@@ -116,10 +111,8 @@ inline auto Tracer<M>::load_objects(const Scene<R>& s) -> void {
     setup_slab(o);
     o.ahead = ~0u;
     o.consts_offset = offset * static_cast<int>(sizeof(R));
-    o.compact_offset = compact * static_cast<int>(sizeof(R));
     o.index = i;
     offset += consts_count(o.form);
-    compact += compact_count(o.form);
   }
 }
 

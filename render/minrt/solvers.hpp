@@ -148,49 +148,4 @@ MINRT_INLINE auto Tracer<M>::solver_fast2(const Object& m, const DirVec& dv) -> 
   return solve_second_fast<kAheadOnly>(m, c, s[0], s[1], s[2], s[3]);
 }
 
-template <MathPolicy M>
-inline auto Tracer<M>::compact_of(const DirVec& dv, const Object& m) -> const R* {
-  return reinterpret_cast<const R*>(reinterpret_cast<const char*>(dv.c) + m.compact_offset);
-}
-
-template <MathPolicy M>
-template <bool kAheadOnly>
-MINRT_INLINE auto Tracer<M>::solver_octant(const Object& m, const DirVec& dv) -> int {
-  if constexpr (!S::kCompactDiffuse) {
-    return solver_fast2<kAheadOnly>(m, dv);
-  } else {
-    const R* s = m.start;
-    const R* v = dv.v;
-    if (m.form == kFormBox) {
-      // solve_box_fast with d_k = (c[2k] - s_k) * c[2k + 1].
-      const R* f = m.faces.face[dv.octant];
-      const R d0 = f[0] * dv.recip.inv[0];
-      if (fabs(d0 * v[1] + s[1]) < m.abc[1] && fabs(d0 * v[2] + s[2]) < m.abc[2]) {
-        solver_dist_ = d0;
-        return 1;
-      }
-      const R d1 = f[1] * dv.recip.inv[1];
-      if (fabs(d1 * v[0] + s[0]) < m.abc[0] && fabs(d1 * v[2] + s[2]) < m.abc[2]) {
-        solver_dist_ = d1;
-        return 2;
-      }
-      const R d2 = f[2] * dv.recip.inv[2];
-      if (fabs(d2 * v[0] + s[0]) < m.abc[0] && fabs(d2 * v[1] + s[1]) < m.abc[1]) {
-        solver_dist_ = d2;
-        return 3;
-      }
-      return 0;
-    }
-    const R* h = compact_of(dv, m);
-    if (m.form == kFormPlane) {
-      if (h[0] < R(0)) {
-        solver_dist_ = h[0] * s[3];
-        return 1;
-      }
-      return 0;
-    }
-    return solve_second_fast<kAheadOnly>(m, h, s[0], s[1], s[2], s[3]);
-  }
-}
-
 }  // namespace minrt

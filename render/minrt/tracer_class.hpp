@@ -73,7 +73,7 @@ class Tracer : private TracerState<M> {
 
   // Arena bytes that suffice for any valid scene at this width.
   static constexpr size_t max_arena_bytes(int width) {
-    return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * (6 + kMaxCompactCount)) +
+    return Arena::footprint<R>(size_t{kDirvecCount} * limits::kMaxObjects * 6) +
            live_list_bytes(limits::kMaxOrNetworks, limits::kMaxOrNetworks * limits::kMaxOrNetworkLength) +
            shadow_list_bytes(limits::kMaxOrNetworks, limits::kMaxOrNetworks * limits::kMaxOrNetworkLength) +
            pixel_line_bytes(width);
@@ -172,13 +172,6 @@ class Tracer : private TracerState<M> {
   static int consts_count(int32_t form) {
     return form == kFormBox ? 6 : form == kFormPlane ? 4 : 6;
   }
-  // Compact constants per direction (solver_octant): none for boxes, which
-  // use the direction's inverse, c[0] for planes, all six for other forms.
-  static constexpr int kMaxCompactCount = S::kCompactDiffuse ? 6 : 0;
-  static int compact_count(int32_t form) {
-    if (!S::kCompactDiffuse || form == kFormBox) return 0;
-    return form == kFormPlane ? 1 : 6;
-  }
   // AND networks listed in the OR rows, all rows together.
   static int or_entries_total(const Scene<R>& scene) {
     int n = 0;
@@ -188,8 +181,7 @@ class Tracer : private TracerState<M> {
   }
   static int consts_total(const Scene<R>& scene) {
     int n = 0;
-    for (int i = 0; i < scene.object_count; ++i)
-      n += consts_count(scene.objects[i].form) + compact_count(scene.objects[i].form);
+    for (int i = 0; i < scene.object_count; ++i) n += consts_count(scene.objects[i].form);
     return n;
   }
   static R sgn(R x) {
@@ -289,14 +281,6 @@ class Tracer : private TracerState<M> {
   template <bool kAheadOnly = false>
   MINRT_INLINE int solver_fast2(const Object& m, const DirVec& dv);
 
-  // solver_fast2 from the compact constants (kCompactDiffuse), for a
-  // direction with no zero component after setup_startp<true>: the same
-  // operations on the same values, boxes taking fl(c - start_k) from the
-  // start table and 1/v_k from the direction.
-  static const R* compact_of(const DirVec& dv, const Object& m);
-  template <bool kAheadOnly = false>
-  MINRT_INLINE int solver_octant(const Object& m, const DirVec& dv);
-
   // --- direction and start tables -----------------------------------------
 
   void setup_dirvec_constants(DirVec& dv);
@@ -358,8 +342,6 @@ class Tracer : private TracerState<M> {
   // box masks of setup_startp<true> are valid).
   template <bool kCull>
   MINRT_INLINE void trace_network(ObjectList net, const DirVec& dv);
-  // trace_network<true> with solver_octant.
-  MINRT_INLINE void trace_network_octant(ObjectList net, const DirVec& dv);
 
   // kCull: skip the networks forward culling rules out (the masks must be
   // set up for the current start point).

@@ -11,29 +11,9 @@
 
 namespace minrt {
 
-// Type A when the condition holds, else B (no <type_traits> in the core).
-template <bool kCond, class A, class B>
-struct PickType {
-  using type = A;
-};
-template <class A, class B>
-struct PickType<false, A, B> {
-  using type = B;
-};
-
 template <MathPolicy M>
 struct TracerState {
   using R = typename M::real;
-
-  // Compact per-direction data for the diffuse rays of one octant (see
-  // solver_octant): on hosts, where the full direction tables (about 0.5 MB
-  // for contest.sld) miss the first-level cache on nearly every ray; the
-  // firmware, without a data cache, keeps the full tables only.
-#if defined(__x86_64__) || defined(__aarch64__)
-  static constexpr bool kCompactDiffuse = true;
-#else
-  static constexpr bool kCompactDiffuse = false;
-#endif
 
   static constexpr int kDirvecGroups = 5;
   static constexpr int kDirvecsPerGroup = 120;
@@ -43,33 +23,19 @@ struct TracerState {
   static constexpr int kLightDirvec = kDirvecGroups * kDirvecsPerGroup;
   static constexpr int kDirvecCount = kLightDirvec + 1 + kMaxReflections;
 
-  struct DirInverse {
-    R inv[3];  // 1 / v; 0 for a zero component
-  };
-  struct NoDirInverse {};
   // Per-direction tables: for each object, the constants its fast solver
-  // needs for rays along `v` (6 for boxes, 4 for planes, 6 otherwise),
-  // after the compact constants (kCompactDiffuse, see compact_count).
+  // needs for rays along `v` (6 for boxes, 4 for planes, 6 otherwise).
   struct DirVec {
     R v[3];
-    [[no_unique_address]] typename PickType<kCompactDiffuse, DirInverse, NoDirInverse>::type recip;
     R* c;
     uint32_t code;  // direction_code(v)
     int32_t octant;  // bit k: v_k < 0; -1 when a component is 0
   };
-  // Per start point, for boxes (kCompactDiffuse): fl(c - start_k) for the
-  // face constant c of solve_box_fast along axis k, for directions of each
-  // octant (DirVec::octant).
-  struct BoxFaces {
-    R face[8][3];
-  };
-  struct NoBoxFaces {};
   // Fields the intersection loops touch come first, to share cache lines.
   struct Object {
     int32_t form, rotated;
     bool inverted;
     int consts_offset;  // in bytes, to save a shift in the ray loops
-    int compact_offset;  // in bytes: the object's compact constants (kCompactDiffuse)
     int index;
     R abc[3];
     R rot[3];  // after preprocessing: the yz, zx, xy cross-term coefficients
@@ -87,7 +53,6 @@ struct TracerState {
     // the fast solver can return may lie ahead of the current start point;
     // all bits for other forms (see setup_startp).
     uint32_t ahead;
-    [[no_unique_address]] typename PickType<kCompactDiffuse, BoxFaces, NoBoxFaces>::type faces;
   };
   struct Reflection {
     int surface_id;
