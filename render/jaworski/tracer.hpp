@@ -102,26 +102,39 @@ class Tracer {
   // Objects are visited planes first, then the spheres the hierarchy cannot
   // rule out; a tie goes to the lower index, as in the original's file order.
   R closest(const V& o, const V& d, int32_t& hit) const {
+    Nearest n = planes_hit(o, d);
+    bvh_.for_hits(o, d, [&](int32_t i, R doc, R delta) {
+      const R root = M::sqrt(delta);
+      n.offer(-doc - root, i);
+      n.offer(-doc + root, i);
+      return false;
+    });
+    hit = n.hit;
+    return n.best;
+  }
+
+  // The nearest hit so far; offer() keeps the smaller t > 0, and on a tie the
+  // lower object index.
+  struct Nearest {
     R best = R(-1);
-    hit = kNone;
-    auto offer = [&](R t, int32_t i) {
+    int32_t hit = kNone;
+    void offer(R t, int32_t i) {
       if (t > R(0) && (hit == kNone || t < best || (t == best && i < hit))) {
         best = t;
         hit = i;
       }
-    };
+    }
+  };
+
+  // Every ray tests every plane (the hierarchy holds only spheres).
+  Nearest planes_hit(const V& o, const V& d) const {
+    Nearest n;
     for (int32_t p = 0; p < bvh_.plane_count(); ++p) {
       const int32_t i = bvh_.plane(p);
       const Object<R>& ob = s_.objects[i];
-      offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
+      n.offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
     }
-    bvh_.for_hits(o, d, [&](int32_t i, R doc, R delta) {
-      const R root = M::sqrt(delta);
-      offer(-doc - root, i);
-      offer(-doc + root, i);
-      return false;
-    });
-    return best;
+    return n;
   }
 
   V normal_at(const Object<R>& ob, const V& x) const {
@@ -143,19 +156,7 @@ class Tracer {
     if (depth == 0) return s_.background;
     const R dd = dot(d, d);
     if (!SphereBvh<M>::unit_enough(dd)) return trace(depth, o, d);
-    R best = R(-1);
-    int32_t hit = kNone;
-    auto offer = [&](R t, int32_t i) {
-      if (t > R(0) && (hit == kNone || t < best || (t == best && i < hit))) {
-        best = t;
-        hit = i;
-      }
-    };
-    for (int32_t p = 0; p < bvh_.plane_count(); ++p) {
-      const int32_t i = bvh_.plane(p);
-      const Object<R>& ob = s_.objects[i];
-      offer(dot(ob.point - o, ob.normal) / dot(d, ob.normal), i);
-    }
+    Nearest n = planes_hit(o, d);
     for (int32_t k = 0; k < count; ++k) {
       const auto& sp = candidates[k];
       const V oc = o - sp.c;
@@ -163,10 +164,10 @@ class Tracer {
       const R delta = doc * doc - dot(oc, oc) + sp.r2;
       if (!(delta >= R(0))) continue;
       const R root = M::sqrt(delta);
-      offer(-doc - root, sp.index);
-      offer(-doc + root, sp.index);
+      n.offer(-doc - root, sp.index);
+      n.offer(-doc + root, sp.index);
     }
-    return shade(depth, o, d, best, hit);
+    return shade(depth, o, d, n.best, n.hit);
   }
 
   V shade(int32_t depth, const V& o, const V& d, R t, int32_t hit) const {
