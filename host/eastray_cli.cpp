@@ -18,6 +18,7 @@
 #include "render/general/eastray_bvh.hpp"
 #include "render/general/eastray_object_bvh.hpp"
 #include "render/general/eastray_tracer.hpp"
+#include "thread_count.hpp"
 #include "tiff_io.hpp"
 
 namespace minrt::host {
@@ -91,9 +92,7 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   const eastray::Tracer<M> tracer(scene);
   const std::size_t stride = static_cast<std::size_t>(width) * 3;
   rgb.assign(stride * static_cast<std::size_t>(height), 0);
-  int threads = static_cast<int>(std::thread::hardware_concurrency());
-  if (threads < 1) threads = 1;
-  if (threads > height) threads = height;
+  const int threads = minrt_thread_count(0, height);  // every core
   std::atomic<int> next{0};
   if (window != nullptr && !window->is_open()) window = nullptr;
   if (window != nullptr) window->begin(width, height);

@@ -15,7 +15,7 @@
 #include "formats/model/scene_builder.hpp"
 #include "general_render.hpp"
 #include "image_window.hpp"
-#include "minrt_parallel.hpp"
+#include "thread_count.hpp"
 #include "render/general/render.hpp"
 
 namespace minrt::host {

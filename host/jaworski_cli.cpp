@@ -16,6 +16,7 @@
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "posix/output_file.hpp"
 #include "render/jaworski/tracer.hpp"
+#include "thread_count.hpp"
 
 namespace minrt::host {
 
@@ -68,9 +69,7 @@ bool render(const std::string& text, const std::string& name, int threads, BmpIm
   bmp.bytes.reset(new uint8_t[bmp.size]);
   BmpWriter::header(bmp.bytes.get(), scene.width, scene.height);
   uint8_t* const rows = bmp.bytes.get() + BmpWriter::kHeaderBytes;
-  if (threads < 1) threads = static_cast<int>(std::thread::hardware_concurrency());
-  if (threads < 1) threads = 1;
-  if (threads > scene.height) threads = scene.height;
+  threads = minrt_thread_count(threads, scene.height);
   std::atomic<int> next{0};
   const bool live = window.is_open();
   if (live) window.begin(scene.width, scene.height);

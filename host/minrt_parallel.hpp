@@ -22,14 +22,9 @@
 #include "core/base/arena.hpp"
 #include "core/image/row_sink.hpp"
 #include "render/minrt/tracer.hpp"
+#include "thread_count.hpp"
 
 namespace minrt::host {
-
-// 0: every core.
-inline int minrt_thread_count(int requested, int height) {
-  int n = requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
-  return std::clamp(n, 1, std::max(height, 1));
-}
 
 // Rows a worker takes at a time: every worker replays the geometry of the
 // rows above its band, and a band's two boundary rows are traced twice when
