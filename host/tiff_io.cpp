@@ -1,11 +1,11 @@
 #include "tiff_io.hpp"
 
-#include <dlfcn.h>
 #include <tiffio.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <mutex>
+
+#include "shared_library.hpp"
 
 namespace minrt::host {
 
@@ -25,27 +25,14 @@ struct TiffLibrary {
 // The library's functions, loaded once; null with the reason if it is not
 // installed.
 const TiffLibrary* load_tiff(std::string& why) {
-  static TiffLibrary library;
-  static std::string error;
-  static std::once_flag once;
-  std::call_once(once, [] {
-    void* handle = dlopen(MINRT_TIFF_SONAME, RTLD_NOW | RTLD_LOCAL);
-    if (handle == nullptr) {
-      const char* e = dlerror();
-      error = std::string("cannot load libtiff (") + (e != nullptr ? e : MINRT_TIFF_SONAME) + ")";
-      return;
-    }
-#define MINRT_TIFF_LOAD(name)                                                      \
-  library.name = reinterpret_cast<decltype(library.name)>(dlsym(handle, #name)); \
-  if (library.name == nullptr && error.empty()) error = "libtiff has no " #name;
-    MINRT_TIFF_FUNCTIONS(MINRT_TIFF_LOAD)
+  return load_library_once<TiffLibrary>(
+      MINRT_TIFF_SONAME, "libtiff",
+      [](TiffLibrary& library, SymbolBinder& bind) {
+#define MINRT_TIFF_LOAD(name) bind(library.name, #name);
+        MINRT_TIFF_FUNCTIONS(MINRT_TIFF_LOAD)
 #undef MINRT_TIFF_LOAD
-  });
-  if (!error.empty()) {
-    why = error;
-    return nullptr;
-  }
-  return &library;
+      },
+      why);
 }
 
 }  // namespace
