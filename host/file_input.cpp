@@ -17,16 +17,22 @@ bool read_whole_file(const std::string& path, std::string& out, std::string& err
     error = std::strerror(errno);
     return false;
   }
+  const bool ok = read_whole_fd(fd, out, error, max_bytes);
+  ::close(fd);
+  return ok;
+}
+
+bool read_whole_fd(int fd, std::string& out, std::string& error, std::size_t max_bytes) {
+  out.clear();
   struct stat st {};
   if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
     error = S_ISDIR(st.st_mode) ? std::strerror(EISDIR) : std::strerror(errno);
-    ::close(fd);
     return false;
   }
+  const std::string too_large = "larger than " + std::to_string(max_bytes) + " bytes";
   // A regular file says its size up front: refuse it before reading.
   if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes) {
-    error = "larger than " + std::to_string(max_bytes) + " bytes";
-    ::close(fd);
+    error = too_large;
     return false;
   }
   char buf[65536];
@@ -36,17 +42,16 @@ bool read_whole_file(const std::string& path, std::string& out, std::string& err
     if (n < 0) {
       if (errno == EINTR) continue;
       error = std::strerror(errno);
-      ::close(fd);
       return false;
     }
+    // A pipe or device says nothing up front: stop one read past the bound.
     if (out.size() + static_cast<std::size_t>(n) > max_bytes) {
-      error = "larger than " + std::to_string(max_bytes) + " bytes";
-      ::close(fd);
+      error = too_large;
+      out.clear();
       return false;
     }
     out.append(buf, static_cast<std::size_t>(n));
   }
-  ::close(fd);
   return true;
 }
 

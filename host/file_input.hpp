@@ -19,9 +19,12 @@ inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
 
 // Reads `path` into `out`. False with `error` set to the reason ("Is a
 // directory", "No such file or directory", "larger than N bytes", ...) when
-// it cannot; `max_bytes` bounds what is read.
-bool read_whole_file(const std::string& path, std::string& out, std::string& error,
-                     std::size_t max_bytes = static_cast<std::size_t>(-1));
+// it cannot; `max_bytes` bounds what is read (every caller names its bound).
+bool read_whole_file(const std::string& path, std::string& out, std::string& error, std::size_t max_bytes);
+
+// The same from an open descriptor (minrt's standard input), left open;
+// `out` is empty after a failure.
+bool read_whole_fd(int fd, std::string& out, std::string& error, std::size_t max_bytes);
 
 // minrt's scene files: reads `path` (unless it is "-", whose text the caller
 // already has) into `text`; on failure prints "minrt: error: cannot read

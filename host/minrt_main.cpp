@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/base/text_numbers.hpp"
+#include "file_input.hpp"
 #include "general_cli.hpp"
 #include "image_stream_decoder.hpp"
 #include "image_window.hpp"
@@ -230,10 +231,10 @@ int main(int argc, char** argv) {
   if (scene_format != minrt::host::SceneFormat::kSld) {
     std::string head;
     if (scene_path == nullptr) {
-      char buf[65536];
-      for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, stdin)) > 0;) stdin_text.append(buf, n);
-      if (std::ferror(stdin) != 0) {
-        std::fprintf(stderr, "minrt: error: cannot read <stdin>: %s\n", std::strerror(errno));
+      // Bounded like a scene file (file_input.hpp), before anything is written.
+      std::string why;
+      if (!minrt::host::read_whole_fd(STDIN_FILENO, stdin_text, why, minrt::host::kMaxSceneBytes)) {
+        std::fprintf(stderr, "minrt: error: cannot read <stdin>: %s\n", why.c_str());
         return kExitUsage;
       }
       head = stdin_text.substr(0, 4096);

@@ -440,7 +440,9 @@ int run(const Options& options) {
       return fail(kExitFirmware, "scene rejected before sending: " + why);
   }
   std::string program;
-  if (!o.program.empty() && !minrt::host::read_whole_file(o.program, program, why))
+  // No larger than the board's program region (memory_map.h): a larger one
+  // could only be refused by the board after the whole upload.
+  if (!o.program.empty() && !minrt::host::read_whole_file(o.program, program, why, MINRT_PROGRAM_MAX_SIZE))
     return fail(kExitUsage, "cannot read " + o.program + ": " + why);
   Image reference;
   if (!o.verify_ref.empty()) {

@@ -86,7 +86,7 @@ bool parse_ppm(const std::string& bytes, Image& image, std::string& error) {
 
 bool load_ppm(const std::string& path, Image& image, std::string& error) {
   std::string bytes, why;
-  if (!minrt::host::read_whole_file(path, bytes, why)) {
+  if (!minrt::host::read_whole_file(path, bytes, why, kMaxReferenceBytes)) {
     error = "cannot read " + path + ": " + why;
     return false;
   }

@@ -1,6 +1,9 @@
 // Comparing a received image with a reference (P3 or P6) and hashing it.
 #pragma once
 
+#include <minrt/limits.hpp>
+
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,6 +15,13 @@ struct Image {
   int height = 0;
   std::vector<std::uint8_t> rgb;
 };
+
+// The largest reference --verify reads: a P3 of the largest image the board
+// sends (minrt/limits.hpp) at up to 16 bytes a pixel (three numbers of up to
+// three digits with their separators, as other writers lay them out), and a
+// header. A larger file cannot be such an image.
+inline constexpr std::size_t kMaxReferenceBytes =
+    std::size_t{16} * minrt::limits::kMaxImageWidth * minrt::limits::kMaxImageHeight + 4096;
 
 // Parses a P3 or P6 file's bytes (maxval 255); false with a message.
 bool parse_ppm(const std::string& bytes, Image& image, std::string& error);

@@ -1,7 +1,9 @@
 // The one bound on a scene file's size (host/file_input.hpp kMaxSceneBytes)
-// as every host tool meets it: minrt in each text format, an EASTRAY
-// include, host-send. The files are sparse: a real header, then a hole up
-// to one byte over the bound, so the test costs no disk.
+// as every host tool meets it: minrt in each text format and on standard
+// input, an EASTRAY include, host-send; and host-send's other inputs, the
+// --program image (the board's program region) and the --verify reference.
+// The files are sparse: a real header, then a hole up to one byte over the
+// bound, so the test costs no disk.
 #include <catch2/catch.hpp>
 
 #include <dirent.h>
@@ -12,8 +14,11 @@
 #include <fstream>
 #include <string>
 
+#include <minrt/memory_map.h>
+
 #include "file_input.hpp"
 #include "test_support.hpp"
+#include "verify.hpp"
 
 namespace {
 
@@ -22,10 +27,11 @@ using Run = minrt::test::CommandRun;
 
 std::string temp_dir() { return minrt::test::temp_dir("scene-size"); }
 
-// `head`, then a hole up to one byte more than the bound.
-void write_oversized(const std::string& path, const std::string& head) {
+// `head`, then a hole up to one byte more than `bound`.
+void write_oversized(const std::string& path, const std::string& head,
+                     std::size_t bound = minrt::host::kMaxSceneBytes) {
   { std::ofstream(path, std::ios::binary) << head; }
-  REQUIRE(::truncate(path.c_str(), static_cast<off_t>(minrt::host::kMaxSceneBytes + 1)) == 0);
+  REQUIRE(::truncate(path.c_str(), static_cast<off_t>(bound + 1)) == 0);
 }
 
 // Names in `dir` other than . and ..
@@ -40,6 +46,10 @@ int entries(const std::string& dir) {
   ::closedir(d);
   return n;
 }
+
+// One red ball: a valid SLD scene, so that host-send gets past the scene.
+constexpr const char* kBall =
+    "0 0 -100 0 0\n1 0 0\n255\n0 3 1 0 50 50 50 0 0 0 1 1 250 255 0 0\n-1\n0 -1\n-1\n99 0 -1\n-1\n";
 
 const std::string kTooLarge = "larger than " + std::to_string(minrt::host::kMaxSceneBytes) + " bytes";
 
@@ -92,5 +102,57 @@ TEST_CASE("host-send refuses a scene file over the size bound before it opens a 
   CHECK_THAT(r.err, Catch::Contains("cannot read scene.txt: " + kTooLarge));
   CHECK(r.err.find('\n') == r.err.size() - 1);
   CHECK(entries(dir) == 1);
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+TEST_CASE("minrt refuses standard input over the scene bound, from a pipe or a file, one line, no image",
+          "[cli][bad][size]") {
+  const std::string dir = temp_dir();
+  const std::string expected = "minrt: error: cannot read <stdin>: " + kTooLarge + "\n";
+  SECTION("a pipe: read up to the bound, then refused") {
+    const Run r = run_in_dir(dir, "(head -c " + std::to_string(minrt::host::kMaxSceneBytes + 1) + " /dev/zero | " +
+                                      MINRT_BIN + " -o out.png)");
+    CHECK(r.status == 2);
+    CHECK(r.err == expected);
+    CHECK(entries(dir) == 0);
+  }
+  SECTION("a file: refused by its size before reading") {
+    write_oversized(dir + "/scene.txt", "png 8 8 out.png\nsphere 0 0 -2 1\n");
+    const Run r = run_in_dir(dir, std::string(MINRT_BIN) + " -o out.png", dir + "/scene.txt");
+    CHECK(r.status == 2);
+    CHECK(r.err == expected);
+    CHECK(entries(dir) == 1);
+  }
+  SECTION("at the bound exactly: read, then judged as a scene") {
+    write_oversized(dir + "/scene.txt", "png 8 8 out.png\nsphere 0 0 -2 1\n", minrt::host::kMaxSceneBytes - 1);
+    const Run r = run_in_dir(dir, std::string(MINRT_BIN) + " -o out.png", dir + "/scene.txt");
+    CHECK(r.err.find(kTooLarge) == std::string::npos);
+  }
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+TEST_CASE("host-send refuses a --program larger than the board's program region before it opens a port",
+          "[send][bad][size]") {
+  const std::string dir = temp_dir();
+  { std::ofstream(dir + "/scene.sld") << kBall; }
+  write_oversized(dir + "/big.bin", "\x6f", MINRT_PROGRAM_MAX_SIZE);
+  const Run r = run_in_dir(dir, std::string(MINRT_SEND_BIN) + " --sim --protocol course --program big.bin scene.sld");
+  CHECK(r.status == 2);
+  CHECK(r.err == "host-send: error: cannot read big.bin: larger than " + std::to_string(MINRT_PROGRAM_MAX_SIZE) +
+                     " bytes\n");
+  CHECK(entries(dir) == 2);  // no image
+  std::system(("rm -rf '" + dir + "'").c_str());
+}
+
+TEST_CASE("host-send refuses a --verify reference larger than the largest image before it opens a port",
+          "[send][bad][size]") {
+  const std::string dir = temp_dir();
+  { std::ofstream(dir + "/scene.sld") << kBall; }
+  write_oversized(dir + "/ref.ppm", "P3\n4096 4096\n255\n", minrt::send::kMaxReferenceBytes);
+  const Run r = run_in_dir(dir, std::string(MINRT_SEND_BIN) + " --sim --verify ref.ppm scene.sld");
+  CHECK(r.status == 2);
+  CHECK(r.err == "host-send: error: cannot read ref.ppm: larger than " +
+                     std::to_string(minrt::send::kMaxReferenceBytes) + " bytes\n");
+  CHECK(entries(dir) == 2);
   std::system(("rm -rf '" + dir + "'").c_str());
 }
