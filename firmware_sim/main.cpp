@@ -75,7 +75,7 @@ void write_output(const std::string& path, Writer w) {
   std::ostringstream text;
   w(text);
   std::string error;
-  if (!minrt::host::write_file_atomically(path, text.str(), false, error)) die(kExitIo, error);
+  if (!minrt::host::write_file_atomically(path, text.str(), false, minrt::host::Durability::kSynced, error)) die(kExitIo, error);
 }
 
 int run(const std::vector<std::string>& argv) {

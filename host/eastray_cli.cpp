@@ -206,7 +206,7 @@ int run_eastray_cli(EastrayCli& cli) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
   }
-  AtomicOutput output;
+  AtomicOutput output(cli.durability);
   bool written = output.open(out_path, cli.write_through, why);
   if (written) {
     if (tiff) {

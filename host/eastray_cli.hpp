@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "posix/output_file.hpp"
 #include "render_variants.hpp"
 
 namespace minrt::host {
@@ -21,6 +22,7 @@ struct EastrayCli {
   bool save = true;        // -n turns it off
   bool quiet = false;      // -q: no warnings
   bool write_through = false;
+  minrt::host::Durability durability = minrt::host::Durability::kRenameOnly;  // kSynced with --sync
   bool show = false;       // -s: a window that shows the rows as they render
   Variant variant;
 };

@@ -97,7 +97,7 @@ int run_cs418_cli(GeneralCli& cli) {
                  result.threads == 1 ? "" : "s");
   if (out_path.empty()) out_path = result.output_name;
 
-  AtomicOutput output;
+  AtomicOutput output(cli.durability);
   if (!output.open(out_path, cli.write_through, why)) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "general_render.hpp"
+#include "posix/output_file.hpp"
 
 namespace minrt::host {
 
@@ -14,6 +15,7 @@ struct GeneralCli {
   std::string scene_text;      // already read when scene_path is "-"
   const char* output_path = nullptr;  // -o, else the name in the scene
   bool write_through = false;
+  minrt::host::Durability durability = minrt::host::Durability::kRenameOnly;  // kSynced with --sync
   bool quiet = false;
   bool stats = false;  // print the path and features on standard error
   bool show = false;   // --show: the image in a window afterwards

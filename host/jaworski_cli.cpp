@@ -127,7 +127,7 @@ int run_jaworski_cli(JaworskiCli& cli) {
     return kExitSceneError;
   }
   if (cli.save) {
-    AtomicOutput output;
+    AtomicOutput output(cli.durability);
     if (!output.open(out_path, cli.write_through, why) ||
         std::fwrite(bmp.bytes.get(), 1, bmp.size, output.file()) != bmp.size || !output.commit(why)) {
       output.discard();

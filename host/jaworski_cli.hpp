@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "posix/output_file.hpp"
 #include "render_variants.hpp"
 
 namespace minrt::host {
@@ -17,6 +18,7 @@ struct JaworskiCli {
   bool show = false;       // -s/--show: the image in a window afterwards
   int threads = 0;         // --threads (0: every core); the same bytes for any count
   bool write_through = false;
+  minrt::host::Durability durability = minrt::host::Durability::kRenameOnly;  // kSynced with --sync
   Variant variant;
 };
 

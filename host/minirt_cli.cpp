@@ -95,7 +95,7 @@ int run_minirt_cli(MinirtCli& cli) {
                  path.c_str(), width, height, result.path, result.features, result.parse_seconds, result.build_seconds,
                  result.render_seconds, result.threads, result.threads == 1 ? "" : "s");
   if (write) {
-    AtomicOutput output;
+    AtomicOutput output(cli.durability);
     if (!output.open(out_path, cli.write_through, why)) {
       print_minirt_error("minrt: " + why);
       return kMinirtExitError;

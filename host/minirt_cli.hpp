@@ -8,6 +8,7 @@
 #include <string>
 
 #include "general_render.hpp"
+#include "posix/output_file.hpp"
 
 namespace minrt::host {
 
@@ -18,6 +19,7 @@ struct MinirtCli {
   const char* output_path = nullptr;  // -o: write instead of showing
   bool show = false;                  // --show with -o: both
   bool write_through = false;
+  minrt::host::Durability durability = minrt::host::Durability::kRenameOnly;  // kSynced with --sync
   bool stats = false;
   int width = 0, height = 0;          // 0: the default size
   GeneralOptions options;

@@ -222,7 +222,8 @@ int main(int argc, char** argv) {
     usage_error("this combination of --precision and --shims is not built (portable shims are float only)");
   // An image is cheap to render again, and syncing took a tenth of a small
   // render's run: atomic replacement by default, durability on request.
-  minrt::host::set_output_sync(sync);
+  const minrt::host::Durability durability =
+      sync ? minrt::host::Durability::kSynced : minrt::host::Durability::kRenameOnly;
 
   // Which reader: the option, else the extension and the first word. Standard
   // input is read whole first so that it can be looked at.
@@ -258,6 +259,7 @@ int main(int argc, char** argv) {
     j.output_path = output_path;
     j.save = !no_save;
     j.write_through = write_through;
+    j.durability = durability;
     j.variant = variant;
     j.show = show;
     j.threads = general.options.threads;
@@ -269,6 +271,7 @@ int main(int argc, char** argv) {
     m.output_path = output_path;
     m.show = show;
     m.write_through = write_through;
+    m.durability = durability;
     m.stats = general.stats;
     if (size_given) {
       m.width = options.width;
@@ -286,6 +289,7 @@ int main(int argc, char** argv) {
     e.save = !no_save;
     e.quiet = quiet;
     e.write_through = write_through;
+    e.durability = durability;
     e.variant = variant;
     e.show = show;
     return minrt::host::run_eastray_cli(e);
@@ -295,6 +299,7 @@ int main(int argc, char** argv) {
     general.scene_text = std::move(stdin_text);
     general.output_path = output_path;
     general.write_through = write_through;
+    general.durability = durability;
     general.quiet = quiet;
     general.options.variant = variant;
     general.show = show;
@@ -319,7 +324,7 @@ int main(int argc, char** argv) {
 
   // With -o the image goes to a unique temporary file renamed into place
   // only once it is complete (output_file.hpp).
-  minrt::host::AtomicOutput output;
+  minrt::host::AtomicOutput output(durability);
   std::FILE* out = stdout;
   if (output_path != nullptr) {
     std::string why;

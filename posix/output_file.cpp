@@ -40,8 +40,6 @@ void register_temp(const std::string& temp) {
 
 void unregister_temp() { g_have_temp = 0; }
 
-bool g_sync = true;
-
 std::string folder_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
   if (slash == std::string::npos) return ".";
@@ -71,8 +69,6 @@ bool sync_folder(const std::string& path, int& err) {
 }
 
 }  // namespace
-
-void set_output_sync(bool sync) { g_sync = sync; }
 
 bool check_output_target(const std::string& path, bool write_through, std::string& error) {
   if (path == "-") return true;
@@ -144,7 +140,7 @@ bool AtomicOutput::commit(std::string& error) {
   if (file_ == nullptr) return false;
   bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
   int err = errno;
-  if (ok && !direct_ && g_sync && ::fsync(fileno(file_)) != 0 && errno != EINVAL) {
+  if (ok && !direct_ && durability_ == Durability::kSynced && ::fsync(fileno(file_)) != 0 && errno != EINVAL) {
     ok = false;
     err = errno;
   }
@@ -157,7 +153,7 @@ bool AtomicOutput::commit(std::string& error) {
     ok = false;
     err = errno;
   }
-  if (ok && !direct_ && g_sync && !sync_folder(path_, err)) {
+  if (ok && !direct_ && durability_ == Durability::kSynced && !sync_folder(path_, err)) {
     // The new file is in place and whole; only its durability is in doubt.
     error = "cannot sync the folder of " + path_ + ": " + std::strerror(err);
     unregister_temp();
@@ -174,8 +170,8 @@ bool AtomicOutput::commit(std::string& error) {
 }
 
 bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
-                           std::string& error) {
-  AtomicOutput out;
+                           Durability durability, std::string& error) {
+  AtomicOutput out(durability);
   if (!out.open(path, write_through, error)) return false;
   if (std::fwrite(bytes.data(), 1, bytes.size(), out.file()) != bytes.size()) {
     error = "cannot write " + path + ": " + std::strerror(errno);

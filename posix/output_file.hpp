@@ -1,8 +1,8 @@
 // Writing an output file so that nothing is half-written or replaced by
 // mistake: the bytes go to a unique temporary file in the target's folder,
 // which is renamed over the target only when complete (and synced first
-// unless the process opts out, see set_output_sync), and only onto a
-// regular file or a new name. A FIFO, device or symbolic link is
+// when the caller asks for it, see Durability), and only onto a regular
+// file or a new name. A FIFO, device or symbolic link is
 // refused unless the caller asks to write through it; "-" is standard
 // output. SIGINT, SIGTERM and SIGHUP remove the temporary file.
 #pragma once
@@ -17,21 +17,21 @@ namespace minrt::host {
 // target is a directory, or a special file without `write_through`.
 bool check_output_target(const std::string& path, bool write_through, std::string& error);
 
+// Whether commit() makes the file durable: kSynced fsyncs the file before
+// the rename and its folder after it. With kRenameOnly the rename still
+// gives readers, other runs and a killed process only the old or the whole
+// new file; only a power cut or kernel crash soon after may lose the new
+// file. Each writer chooses (minrt: kSynced only with --sync).
+enum class Durability { kRenameOnly, kSynced };
+
 // The whole of `bytes` through an AtomicOutput: `path` is either the
 // complete file or untouched. False with the reason.
 bool write_file_atomically(const std::string& path, const std::string& bytes, bool write_through,
-                           std::string& error);
-
-// Whether commit() makes the file durable: fsync of the file before the
-// rename and of its folder after it (the default, true). Without it the
-// rename still gives readers, other runs and a killed process only the old
-// or the whole new file; only a power cut or kernel crash soon after may
-// lose the new file. Process-wide: set once by main from its options.
-void set_output_sync(bool sync);
+                           Durability durability, std::string& error);
 
 class AtomicOutput {
  public:
-  AtomicOutput() = default;
+  explicit AtomicOutput(Durability durability) : durability_(durability) {}
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
   ~AtomicOutput() { discard(); }
@@ -40,7 +40,7 @@ class AtomicOutput {
   // or standard output for "-"). False with the reason.
   bool open(const std::string& path, bool write_through, std::string& error);
   std::FILE* file() const { return file_; }
-  // Flushes, syncs (see set_output_sync) and renames into place. False with the reason (the
+  // Flushes, syncs (with Durability::kSynced) and renames into place. False with the reason (the
   // temporary file is then removed).
   bool commit(std::string& error);
   // Removes the temporary file; the target is left as it was.
@@ -50,6 +50,7 @@ class AtomicOutput {
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
   bool direct_ = false;  // writing to the target itself (stdout or write-through)
+  Durability durability_;
 };
 
 }  // namespace minrt::host

@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   std::printf("coverage         %ld %ld\n", d.coverage_a, d.coverage_b);
   if (sheet != nullptr) {
     const minrt::host::RgbaImage out = minrt::host::contact_sheet(img[0], img[1]);
-    minrt::host::AtomicOutput file;
+    minrt::host::AtomicOutput file(minrt::host::Durability::kSynced);
     std::string why;
     if (!file.open(sheet, false, why) || !minrt::host::write_png(file.file(), out, why) || !file.commit(why)) {
       std::fprintf(stderr, "image-compare: error: %s: %s\n", sheet, why.c_str());

@@ -579,7 +579,7 @@ int run(const Options& options) {
     if (!minrt::host::compress_png(r.image, compressed, err)) return fail(kExitLink, "cannot recompress the board's PNG: " + err);
     written = &compressed;
   }
-  if (!write_file_atomically(o.output, *written, o.write_through, err)) return fail(kExitLink, err);
+  if (!write_file_atomically(o.output, *written, o.write_through, minrt::host::Durability::kSynced, err)) return fail(kExitLink, err);
 
   if (!o.quiet) {
     const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;

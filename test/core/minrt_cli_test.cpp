@@ -165,23 +165,53 @@ TEST_CASE("minrt: -o syncs the file and its folder only with --sync", "[cli]") {
   const std::string ball = minrt::test::shared_dir() + "/scenes/ball.sld";
   char dir[] = "/tmp/minrt-sync-XXXXXX";
   REQUIRE(mkdtemp(dir) != nullptr);
-  const std::string d = dir, target = d + "/image.ppm", log = d + "/trace";
-  const std::string expected = run("--size 16x16 " + ball).out;
-  // Counts the fsync calls of one run that writes `target`.
-  auto fsyncs = [&](const std::string& options) {
-    const std::string cmd = "strace -f -qq -e trace=fsync -o " + log + " " + MINRT_BIN + " --size 16x16 " + options +
-                            " -o " + target + " " + ball;
+  const std::string d = dir, log = d + "/trace";
+  // Counts the fsync calls of one run of `command`, which writes `target`.
+  auto fsyncs = [&](const std::string& command, const std::string& target) {
+    const std::string cmd = "strace -f -qq -e trace=fsync -o " + log + " " + command;
     REQUIRE(std::system(cmd.c_str()) == 0);
-    CHECK(minrt::test::read_file(target) == expected);
+    CHECK(minrt::test::read_file(target).size() > 0);
     const std::string trace = minrt::test::read_file(log);
     int n = 0;
     for (std::size_t at = 0; (at = trace.find("fsync(", at)) != std::string::npos; ++at) ++n;
     return n;
   };
-  CHECK(fsyncs("") == 0);        // replaced atomically, not synced
-  CHECK(fsyncs("--sync") == 2);  // the file, then its folder after the rename
-  std::remove(target.c_str());
-  std::remove(log.c_str());
+  const std::string ppm = d + "/image.ppm";
+  const std::string expected = run("--size 16x16 " + ball).out;
+  auto minrt = [&](const std::string& options, const std::string& scene, const std::string& target) {
+    return std::string(MINRT_BIN) + " --size 16x16 " + options + " -o " + target + " " + scene;
+  };
+  CHECK(fsyncs(minrt("", ball, ppm), ppm) == 0);  // replaced atomically, not synced
+  CHECK(minrt::test::read_file(ppm) == expected);
+  CHECK(fsyncs(minrt("--sync", ball, ppm), ppm) == 2);  // the file, then its folder after the rename
+  CHECK(minrt::test::read_file(ppm) == expected);
+  // Every format's writer takes the choice from the option.
+  const struct {
+    const char *file, *text;
+  } scenes[] = {
+      {"cs418.txt", "png 8 8 out.png\nsphere 0 0 -2 1\n"},
+      {"jaworski.txt",
+       "imwidth 8 imheight 8 canvwidth 1 canvheight 1 depth 1 lights directional 1 white 0 0 1 "
+       "objects sphere 0 0 5 1 diffusive red\n"},
+      {"scene.rt", "A 0.2 255,255,255\nC 0,0,10 0,0,-1 70\nL 0,5,5 0.8 255,255,255\nsp 0,0,0 2 255,0,0\n"},
+      {"scene.ray",
+       "display 8 8 0 0 7 7 1 1 1 ;\ncondition 4 0.01 0.00001 0 ;\ncamera 0 2 9  0 1 0  0 10 0  25 0 ;\n"
+       "sky 0.2 0.4 0.8 ;\nenv 0.2 0.2 0.2 ;\nshadow 1 ;\n"
+       "color [ grey 0.6 0.6 0.6  0 0 0  0 0 0  1 1  0  0 0 1 ; ]\nobj [ 2 grey 1  0 1 0  1 ; ]\n"},
+  };
+  const std::string png = d + "/image.png";
+  for (const auto& sc : scenes) {
+    INFO(sc.file);
+    const std::string scene = d + "/" + sc.file;
+    { std::ofstream(scene) << sc.text; }
+    CHECK(fsyncs(minrt("", scene, png), png) == 0);
+    CHECK(fsyncs(minrt("--sync", scene, png), png) == 2);
+    std::remove(scene.c_str());
+  }
+  // The other writers always sync: image-compare's contact sheet, say.
+  CHECK(fsyncs(std::string(MINRT_IMAGE_COMPARE_BIN) + " --sheet " + d + "/sheet.png " + png + " " + png + " >/dev/null",
+               d + "/sheet.png") == 2);
+  for (const char* name : {"image.ppm", "image.png", "sheet.png", "trace"}) std::remove((d + "/" + name).c_str());
   CHECK(rmdir(dir) == 0);  // no temporary left behind
 }
 

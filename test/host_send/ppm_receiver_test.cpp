@@ -155,7 +155,7 @@ TEST_CASE("expected image size", "[ppm]") {
 
 TEST_CASE("write_file_atomically leaves no partial file", "[ppm]") {
   std::string err;
-  CHECK_FALSE(minrt::send::write_file_atomically("/nonexistent-dir/x.ppm", "P6", false, err));
+  CHECK_FALSE(minrt::send::write_file_atomically("/nonexistent-dir/x.ppm", "P6", false, minrt::host::Durability::kSynced, err));
   CHECK_THAT(err, Catch::Contains("/nonexistent-dir/x.ppm"));
 }
 

@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
       // Whole or not at all, never onto a FIFO, device or link (posix/output_file.hpp).
       const std::string path = out_dir + "/" + stem_of(scene_path) + "." + v->tag + ".ppm";
       std::string why;
-      if (!minrt::host::write_file_atomically(path, r.image, false, why)) {
+      if (!minrt::host::write_file_atomically(path, r.image, false, minrt::host::Durability::kSynced, why)) {
         std::fprintf(stderr, "accuracy-report: error: %s\n", why.c_str());
         status = 1;  // the other variants' images are still written
       }
