@@ -18,7 +18,7 @@ int32_t find_texture(void* ctx, const char* name, Diagnostic& error) {
 
 }  // namespace
 
-Cs418Result render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, bool all_features,
+SceneResult render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, bool all_features,
                               const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   model::SceneBuilder<R> builder(arena);
@@ -29,14 +29,14 @@ Cs418Result render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, boo
   model::Scene<R> scene;
   switch (reader.read(header, scene, error)) {
     case cs418::ReadStatus::kOk: break;
-    case cs418::ReadStatus::kOutOfMemory: return Cs418Result::kOutOfMemory;
-    case cs418::ReadStatus::kSceneError: return Cs418Result::kSceneError;
+    case cs418::ReadStatus::kOutOfMemory: return SceneResult::kOutOfMemory;
+    case cs418::ReadStatus::kSceneError: return SceneResult::kSceneError;
   }
-  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return Cs418Result::kOutOfMemory;
-  return Cs418Result::kOk;
+  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return SceneResult::kOutOfMemory;
+  return SceneResult::kOk;
 }
 
-Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
+SceneResult render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
                          const send::textures::Table* textures, Diagnostic& error) {
   PngStoredWriter png(out);
   return render_cs418_rows(in, rgba_row_sink_of(png), arena, all_features, textures, error);

@@ -9,20 +9,19 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/image/row_sink.hpp"
+#include "scene_result.hpp"
 #include "protocol/texture_blobs.hpp"
 
 namespace minrt::fw {
 
-enum class Cs418Result { kOk, kSceneError, kOutOfMemory };
-
 // `all_features`: render on the path with every feature compiled in (to
 // measure what the specialised paths save).
 // `textures`: what the preamble brought, or nullptr when there was none.
-Cs418Result render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
+SceneResult render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
                          const send::textures::Table* textures, Diagnostic& error);
 
 // The same into any RGBA row sink (the framed protocol's row sender).
-Cs418Result render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, bool all_features,
+SceneResult render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, bool all_features,
                               const send::textures::Table* textures, Diagnostic& error);
 
 }  // namespace minrt::fw

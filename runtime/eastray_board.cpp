@@ -19,28 +19,28 @@ constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096,
 
 bool is_eastray_start(int first_byte) { return first_byte == '/'; }
 
-EastrayResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
   using R = Math::real;
   eastray::Scene<R> scene;
   if (!scene.allocate(arena, kCapacity)) {
     error.text("no room for the scene tables");
-    return EastrayResult::kOutOfMemory;
+    return SceneResult::kOutOfMemory;
   }
   eastray::Reader<Math> reader(text, size, scene, arena);
-  if (!reader.read(error)) return EastrayResult::kSceneError;
+  if (!reader.read(error)) return SceneResult::kSceneError;
   eastray::build_triangle_bvh<Math>(scene, arena);  // without room, the same image, slower
   eastray::build_object_bvh<Math>(scene, arena);
   R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
   uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
   if (linear == nullptr || row == nullptr) {
     error.text("image row does not fit in the board's memory");
-    return EastrayResult::kOutOfMemory;
+    return SceneResult::kOutOfMemory;
   }
   eastray::Tracer<Math>(scene).render(rows, linear, row);
-  return EastrayResult::kOk;
+  return SceneResult::kOk;
 }
 
-EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
   // The text, whole, at the arena's top: parts are read again at every
   // call. Room is left below it for the scene, the reader's part table and
   // the rows.
@@ -49,7 +49,7 @@ EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnost
                          64 * 1024;
   if (room <= reserve) {
     error.text("no room for the scene text");
-    return EastrayResult::kOutOfMemory;
+    return SceneResult::kOutOfMemory;
   }
   const size_t limit = room - reserve;
   char* text = arena.alloc_top<char>(limit);
@@ -57,7 +57,7 @@ EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnost
   for (int c; (c = in.get()) >= 0;) {
     if (size == limit) {
       error.text("scene larger than the board's memory allows (").number(static_cast<int64_t>(limit)).text(" bytes)");
-      return EastrayResult::kOutOfMemory;
+      return SceneResult::kOutOfMemory;
     }
     text[size++] = static_cast<char>(c);
   }

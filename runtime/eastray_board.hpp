@@ -10,16 +10,15 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/image/row_sink.hpp"
+#include "scene_result.hpp"
 
 namespace minrt::fw {
 
-enum class EastrayResult { kOk, kSceneError, kOutOfMemory };
-
-EastrayResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
+SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
 
 // The same from text already in memory (course and framed uploads) into an
 // RGBA row sink.
-EastrayResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error);
+SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error);
 
 // True when the scene's first byte is host-send's `/*` marker (no other
 // format the board reads starts with '/').

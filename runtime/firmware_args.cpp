@@ -4,17 +4,10 @@
 #include <minrt/serial_protocol.h>
 
 #include "core/base/text_numbers.hpp"
+#include "same_text.hpp"
 
 namespace minrt::fw {
 namespace {
-
-bool equal(const char* a, const char* b) {
-  while (*a != 0 && *a == *b) {
-    ++a;
-    ++b;
-  }
-  return *a == *b;
-}
 
 int length(const char* s) {
   int n = 0;
@@ -33,53 +26,53 @@ bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     const bool takes_value =
-        equal(arg, "--size") || equal(arg, "--format") || equal(arg, "--idle-polls") || equal(arg, "--ram-size");
+        same_text(arg, "--size") || same_text(arg, "--format") || same_text(arg, "--idle-polls") || same_text(arg, "--ram-size");
     if (takes_value && i + 1 >= argc) {
       error.text(arg).text(" needs a value");
       return false;
     }
-    if (equal(arg, "--size")) {
+    if (same_text(arg, "--size")) {
       const char* v = argv[++i];
       if (!parse_size(v, options.render.width, options.render.height)) {
         bad_value(error, arg, v).text("WxH, each 1..").number(limits::kMaxImageWidth);
         return false;
       }
-    } else if (equal(arg, "--format")) {
+    } else if (same_text(arg, "--format")) {
       const char* v = argv[++i];
-      if (equal(v, "p3") || equal(v, "P3")) {
+      if (same_text(v, "p3") || same_text(v, "P3")) {
         options.render.format = PpmFormat::kP3;
-      } else if (equal(v, "p6") || equal(v, "P6")) {
+      } else if (same_text(v, "p6") || same_text(v, "P6")) {
         options.render.format = PpmFormat::kP6;
       } else {
         bad_value(error, arg, v).text("p3 or p6");
         return false;
       }
-    } else if (equal(arg, "--idle-polls")) {
+    } else if (same_text(arg, "--idle-polls")) {
       const char* v = argv[++i];
       if (!parse_decimal(v, 0, 0xffffffffu, options.idle_polls)) {
         bad_value(error, arg, argv[i]).text("a count of polls (0: wait forever)");
         return false;
       }
-    } else if (equal(arg, "--protocol=raw")) {
+    } else if (same_text(arg, "--protocol=raw")) {
       options.protocol = Protocol::kRaw;
-    } else if (equal(arg, "--protocol=course")) {
+    } else if (same_text(arg, "--protocol=course")) {
       options.protocol = Protocol::kCourse;
-    } else if (equal(arg, "--protocol=framed")) {
+    } else if (same_text(arg, "--protocol=framed")) {
       options.protocol = Protocol::kFramed;
-    } else if (equal(arg, "--endian=little")) {
+    } else if (same_text(arg, "--endian=little")) {
       options.big_endian = false;
-    } else if (equal(arg, "--endian=big")) {
+    } else if (same_text(arg, "--endian=big")) {
       options.big_endian = true;
-    } else if (equal(arg, "--ram-size")) {
+    } else if (same_text(arg, "--ram-size")) {
       const char* v = argv[++i];
       const char* p = v;
       if (!parse_decimal(p, 'M', 1024, options.ram_mib) || *p != 'M' || p[1] != 0 || options.ram_mib < 4) {
         bad_value(error, arg, v).text("NM, 4M..1024M");
         return false;
       }
-    } else if (equal(arg, "--all-features")) {
+    } else if (same_text(arg, "--all-features")) {
       options.all_features = true;
-    } else if (equal(arg, "--footprint")) {
+    } else if (same_text(arg, "--footprint")) {
       options.footprint = true;
     } else {
       error.text("unknown argument ").quoted(arg, length(arg));

@@ -8,16 +8,15 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/image/row_sink.hpp"
+#include "scene_result.hpp"
 
 namespace minrt::fw {
 
-enum class JaworskiResult { kOk, kSceneError, kOutOfMemory };
-
-JaworskiResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
+SceneResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
 
 // The same into any RGBA row sink, bottom row first (the framed protocol's
 // row sender).
-JaworskiResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error);
+SceneResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error);
 
 // True when a scene's first word (lower case, letters only) or its first
 // byte ('#') says it is one of Jaworski's.

@@ -60,12 +60,11 @@ int status_of(minrt::RenderStatus status) {
   return MINRT_STATUS_SCENE_ERROR;
 }
 
-// The text formats' boards' results (text_scene_board.hpp, *_board.hpp) all
-// read kOk, kSceneError, kOutOfMemory.
-template <class Result>
-minrt::RenderStatus status_of(Result r) {
-  if (r == Result::kOk) return minrt::RenderStatus::kOk;
-  return r == Result::kOutOfMemory ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
+// The text formats' boards' result (scene_result.hpp) as the render status.
+minrt::RenderStatus status_of(minrt::fw::SceneResult r) {
+  if (r == minrt::fw::SceneResult::kOk) return minrt::RenderStatus::kOk;
+  return r == minrt::fw::SceneResult::kOutOfMemory ? minrt::RenderStatus::kOutOfMemory
+                                                   : minrt::RenderStatus::kSceneError;
 }
 
 // Course protocol, a CS418, Jaworski, miniRT or EASTRAY scene after its marker word: the

@@ -1,6 +1,7 @@
 #include "minirt_board.hpp"
 
 #include "board_math.hpp"
+#include "same_text.hpp"
 #include "core/image/png_writer.hpp"
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
@@ -17,31 +18,23 @@ int32_t find_texture(void* ctx, const char* name, Diagnostic& error) {
   return i;
 }
 
-bool same(const char* a, const char* b) {
-  while (*a != 0 && *a == *b) {
-    ++a;
-    ++b;
-  }
-  return *a == *b;
-}
-
 }  // namespace
 
 bool is_minirt_start(const char* first_word) {
   static constexpr const char* kWords[] = {"a", "c", "l", "sp", "pl", "cy", "co", "plc", "spt"};
   for (const char* w : kWords)
-    if (same(first_word, w)) return true;
+    if (same_text(first_word, w)) return true;
   return false;
 }
 
-MinirtResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
-                           const send::textures::Table* textures, Diagnostic& error) {
+SceneResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
+                          const send::textures::Table* textures, Diagnostic& error) {
   PngStoredWriter png(out);
   return render_minirt_rows(in, rgba_row_sink_of(png), arena, width, height, all_features, textures, error);
 }
 
-MinirtResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
-                                bool all_features, const send::textures::Table* textures, Diagnostic& error) {
+SceneResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
+                               bool all_features, const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   model::SceneBuilder<R> builder(arena);
   minirt::Reader<Math> reader(
@@ -50,14 +43,14 @@ MinirtResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, i
   minirt::View<R> view;
   switch (reader.read(scene, view, error)) {
     case minirt::ReadStatus::kOk: break;
-    case minirt::ReadStatus::kOutOfMemory: return MinirtResult::kOutOfMemory;
-    case minirt::ReadStatus::kSceneError: return MinirtResult::kSceneError;
+    case minirt::ReadStatus::kOutOfMemory: return SceneResult::kOutOfMemory;
+    case minirt::ReadStatus::kSceneError: return SceneResult::kSceneError;
   }
   scene.width = width;
   scene.height = height;
   scene.camera = minirt::place_camera<Math>(view, width, height);
-  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return MinirtResult::kOutOfMemory;
-  return MinirtResult::kOk;
+  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return SceneResult::kOutOfMemory;
+  return SceneResult::kOk;
 }
 
 }  // namespace minrt::fw

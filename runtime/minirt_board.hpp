@@ -9,18 +9,17 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/image/row_sink.hpp"
+#include "scene_result.hpp"
 #include "protocol/texture_blobs.hpp"
 
 namespace minrt::fw {
 
-enum class MinirtResult { kOk, kSceneError, kOutOfMemory };
-
-MinirtResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
-                           const send::textures::Table* textures, Diagnostic& error);
+SceneResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
+                          const send::textures::Table* textures, Diagnostic& error);
 
 // The same into RGBA rows (the framed protocol's RowFramer, or the PNG).
-MinirtResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
-                                bool all_features, const send::textures::Table* textures, Diagnostic& error);
+SceneResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
+                               bool all_features, const send::textures::Table* textures, Diagnostic& error);
 
 // True when a scene's first word (lower case, letters only) is a miniRT
 // element identifier: a, c, l, sp, pl, cy, co, plc, spt.

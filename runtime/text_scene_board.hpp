@@ -11,20 +11,19 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/image/row_sink.hpp"
+#include "scene_result.hpp"
 #include "protocol/text_scene_upload.hpp"
 
 namespace minrt::fw {
 
-enum class TextSceneResult { kOk, kSceneError, kOutOfMemory };
-
 // Into an RGBA row sink (framed: the RowFramer, 4 bytes a pixel).
-TextSceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaRowSink rows, Arena& arena,
-                                       int width, int height, bool all_features, Diagnostic& error);
+SceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaRowSink rows, Arena& arena,
+                                   int width, int height, bool all_features, Diagnostic& error);
 
 // The format's own image streamed on `out`, as in the raw protocol (course):
 // a stored-deflate PNG for CS418, miniRT and EASTRAY, a 32-bit BMP for
 // Jaworski.
-TextSceneResult stream_text_scene(const send::text::TextScene& scene, ByteSink out, Arena& arena, int width,
-                                  int height, bool all_features, Diagnostic& error);
+SceneResult stream_text_scene(const send::text::TextScene& scene, ByteSink out, Arena& arena, int width,
+                              int height, bool all_features, Diagnostic& error);
 
 }  // namespace minrt::fw
