@@ -76,6 +76,18 @@ class Tracer {
     sink.end();
   }
 
+  // A colour channel's byte: 255 x v clamped to [0, 1], rounded half to
+  // even (test/general/jaworski_byte_test.cpp pins it).
+  static uint8_t to_byte(R v) {
+    const R x = R(255) * max0(min1(v));
+    // Round half to even (Haskell's round) by the addition's own rounding:
+    // x is in [0, 255] (a NaN v gives 0), so x + 2^52 (2^23 in float) has
+    // no bits below the units and rounds x to nearest, ties to even; the
+    // subtraction is then exact.
+    const R rounded = (x + kRoundShift) - kRoundShift;
+    return static_cast<uint8_t>(M::to_int(rounded));
+  }
+
  private:
   static constexpr R kEps = static_cast<R>(1e-5);
   static constexpr R kRoundShift = sizeof(R) >= 8 ? R(4503599627370496.0) : R(8388608.0);  // 2^52, 2^23
@@ -87,16 +99,6 @@ class Tracer {
   // Haskell's max 0 y and min 1 y (a NaN argument gives 0 and NaN).
   static R max0(R y) { return R(0) <= y ? y : R(0); }
   static R min1(R y) { return R(1) <= y ? R(1) : y; }
-
-  static uint8_t to_byte(R v) {
-    const R x = R(255) * max0(min1(v));
-    // Round half to even (Haskell's round) by the addition's own rounding:
-    // x is in [0, 255] (a NaN v gives 0), so x + 2^52 (2^23 in float) has
-    // no bits below the units and rounds x to nearest, ties to even; the
-    // subtraction is then exact.
-    const R rounded = (x + kRoundShift) - kRoundShift;
-    return static_cast<uint8_t>(M::to_int(rounded));
-  }
 
   // Smallest t > 0 over all objects, the first object on a tie; -1 if none.
   // Objects are visited planes first, then the spheres the hierarchy cannot
