@@ -7,6 +7,7 @@
 #include "core/base/arena.hpp"
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "math_policy_dispatch.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "formats/model/scene_builder.hpp"
 #include "general_rows.hpp"
@@ -32,9 +33,7 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
 
-  using Clock = std::chrono::steady_clock;
-  auto seconds_since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
-  const Clock::time_point t_parse = Clock::now();
+  const auto t_parse = std::chrono::steady_clock::now();
   model::SceneBuilder<R> builder(arena);
   TextureFiles textures(base_dir, &load_png_texture, cs418::kMaxTextures, "textures");
   MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
@@ -53,18 +52,11 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   }
   scene.textures = textures.table();
   scene.texture_count = textures.count();
-  out.parse_seconds = seconds_since(t_parse);
-  const Clock::time_point t_build = Clock::now();
-  general::Renderer<M> renderer;
-  if (!renderer.setup(scene, arena, options.seed, options.force_full, options.full_tree)) {
+  out.output_name = header.output_name;
+  if (!set_up_and_render<M>(scene, arena, scene.width, scene.height, options, t_parse, out)) {
     error = name + ": error: scene does not fit in memory (BVH)";
     return false;
   }
-  out.build_seconds = seconds_since(t_build);
-  out.output_name = header.output_name;
-  out.features = renderer.features();
-  out.path = general_path_name(renderer.path());
-  render_general_rows(renderer, scene.width, scene.height, options, out);
   return true;
 }
 
@@ -83,19 +75,11 @@ const char* general_path_name(uint32_t path) {
 bool render_cs418(const std::string& text, const std::string& name, const std::string& base_dir,
                   const GeneralOptions& options, GeneralResult& out, std::string& error,
                   const WarningSink& warnings) {
-  const Variant v = options.variant;
-  if (v.precision == Precision::kDouble && v.shims == ShimSet::kLibm)
-    return render_with<LibmDouble>(text, name, base_dir, options, out, error, warnings);
-  if (v.precision == Precision::kFloat) {
-    switch (v.shims) {
-      case ShimSet::kLibm: return render_with<LibmFloat>(text, name, base_dir, options, out, error, warnings);
-      case ShimSet::kPortable: return render_with<PortableFloat>(text, name, base_dir, options, out, error, warnings);
-      case ShimSet::kPortableFast:
-        return render_with<PortableFloatFast>(text, name, base_dir, options, out, error, warnings);
-      case ShimSet::kPortableMin:
-        return render_with<PortableFloatMin>(text, name, base_dir, options, out, error, warnings);
-    }
-  }
+  bool ok = false;
+  if (with_math_policy(options.variant, [&]<class M>() {
+        ok = render_with<M>(text, name, base_dir, options, out, error, warnings);
+      }))
+    return ok;
   error = name + ": error: this combination of --precision and --shims is not built";
   return false;
 }

@@ -1,7 +1,8 @@
 // What the host's drivers of the general tracer (CS418: general_render.cpp,
 // miniRT: minirt_render.cpp) share around the parse: the one arena a scene's
-// text needs, and the rows rendered on several threads into the result's
-// image, each also shown in the --show window as it is done.
+// text needs, the renderer's set-up with its timings, and the rows rendered
+// on several threads into the result's image, each also shown in the --show
+// window as it is done.
 #pragma once
 
 #include <atomic>
@@ -57,6 +58,27 @@ void render_general_rows(general::Renderer<M>& renderer, int width, int height, 
   for (auto& t : pool) t.join();
   out.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out.threads = threads;
+}
+
+// After the parse (begun at `t_parse`): sets the renderer up over `scene`
+// (its BVH in `arena`), records the times, features and path in `out`, and
+// renders the rows. False when the BVH does not fit; the caller words that
+// its format's way.
+template <class M>
+bool set_up_and_render(const model::Scene<typename M::real>& scene, Arena& arena, int width, int height,
+                       const GeneralOptions& options, std::chrono::steady_clock::time_point t_parse,
+                       GeneralResult& out) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  out.parse_seconds = seconds_since(t_parse);
+  const Clock::time_point t_build = Clock::now();
+  general::Renderer<M> renderer;
+  if (!renderer.setup(scene, arena, options.seed, options.force_full, options.full_tree)) return false;
+  out.build_seconds = seconds_since(t_build);
+  out.features = renderer.features();
+  out.path = general_path_name(renderer.path());
+  render_general_rows(renderer, width, height, options, out);
+  return true;
 }
 
 }  // namespace minrt::host

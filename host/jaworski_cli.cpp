@@ -11,6 +11,7 @@
 #include "core/image/bmp_writer.hpp"
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "math_policy_dispatch.hpp"
 #include "file_input.hpp"
 #include "image_window.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
@@ -115,13 +116,11 @@ int run_jaworski_cli(JaworskiCli& cli) {
   LiveWindow window;
   if (cli.show && !window.open("minrt: " + shown, why))
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
-  bool ok;
-  const Variant v = cli.variant;
-  if (v.precision == Precision::kDouble) ok = render<LibmDouble>(cli.scene_text, shown, cli.threads, bmp, window, error);
-  else if (v.shims == ShimSet::kLibm) ok = render<LibmFloat>(cli.scene_text, shown, cli.threads, bmp, window, error);
-  else if (v.shims == ShimSet::kPortableFast) ok = render<PortableFloatFast>(cli.scene_text, shown, cli.threads, bmp, window, error);
-  else if (v.shims == ShimSet::kPortableMin) ok = render<PortableFloatMin>(cli.scene_text, shown, cli.threads, bmp, window, error);
-  else ok = render<PortableFloat>(cli.scene_text, shown, cli.threads, bmp, window, error);
+  bool ok = false;
+  if (!with_math_policy(cli.variant, [&]<class M>() {
+        ok = render<M>(cli.scene_text, shown, cli.threads, bmp, window, error);
+      }))
+    error = "minrt: error: this combination of --precision and --shims is not built";
   if (!ok) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return kExitSceneError;

@@ -5,6 +5,7 @@
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "math_policy_dispatch.hpp"
 #include "minrt_parallel.hpp"
 #include "protocol/course_word_values.hpp"
 
@@ -42,31 +43,18 @@ template <class MakeValues>
 RenderStatus dispatch(Variant v, const MakeValues& make, const RowSink& out, const RenderOptions& options,
                       Diagnostic& error, const WarningSink& warnings, int threads,
                       const RowSink* finished = nullptr) {
-  if (variant_name(v) == nullptr) {
+  RenderStatus status = RenderStatus::kBadOptions;
+  if (!with_math_policy(v, [&]<class M>() { status = run<M>(make, out, options, error, warnings, threads, finished); }))
     error.text("this precision and shim combination is not built");
-    return RenderStatus::kBadOptions;
-  }
-  if (v.precision == Precision::kDouble) return run<LibmDouble>(make, out, options, error, warnings, threads, finished);
-  switch (v.shims) {
-    case ShimSet::kLibm: return run<LibmFloat>(make, out, options, error, warnings, threads, finished);
-    case ShimSet::kPortable: return run<PortableFloat>(make, out, options, error, warnings, threads, finished);
-    case ShimSet::kPortableFast: return run<PortableFloatFast>(make, out, options, error, warnings, threads, finished);
-    case ShimSet::kPortableMin: return run<PortableFloatMin>(make, out, options, error, warnings, threads, finished);
-  }
-  return RenderStatus::kBadOptions;
+  return status;
 }
 
 }  // namespace
 
 const char* variant_name(Variant v) {
-  if (v.precision == Precision::kDouble) return v.shims == ShimSet::kLibm ? LibmDouble::name : nullptr;
-  switch (v.shims) {
-    case ShimSet::kLibm: return LibmFloat::name;
-    case ShimSet::kPortable: return PortableFloat::name;
-    case ShimSet::kPortableFast: return PortableFloatFast::name;
-    case ShimSet::kPortableMin: return PortableFloatMin::name;
-  }
-  return nullptr;
+  const char* name = nullptr;
+  with_math_policy(v, [&]<class M>() { name = M::name; });
+  return name;
 }
 
 RenderStatus render_variant(Variant v, ByteSource in, ByteSink out, const RenderOptions& options,
