@@ -52,6 +52,7 @@ SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic
     return SceneResult::kOutOfMemory;
   }
   const size_t limit = room - reserve;
+  const size_t top = arena.top_mark();
   char* text = arena.alloc_top<char>(limit);
   size_t size = 0;
   for (int c; (c = in.get()) >= 0;) {
@@ -61,6 +62,13 @@ SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic
     }
     text[size++] = static_cast<char>(c);
   }
+  // Keep only what arrived, moved up against the top: the room below is the
+  // hierarchies' (with the whole buffer kept, a scene of some 1500 objects
+  // left them too little, and every ray tested every object).
+  arena.release_top(top);
+  char* kept = arena.alloc_top<char>(size);
+  for (size_t i = size; i-- > 0;) kept[i] = text[i];  // kept >= text: from the end
+  text = kept;
   PngStoredWriter png(out);
   return render_eastray_rows(text, size, rgba_row_sink_of(png), arena, error);
 }
