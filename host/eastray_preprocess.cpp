@@ -14,6 +14,7 @@ namespace {
 constexpr int kMaxIncludeDepth = 64;
 constexpr int kMaxMacroDepth = 32;  // a body naming a macro is expanded again, this deep at most
 constexpr std::size_t kMaxExpandedBytes = std::size_t{1} << 29;
+constexpr std::size_t kExpansionCost = 64;  // bytes one macro expansion counts for beyond its body
 
 bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
@@ -122,6 +123,7 @@ class Expander {
     while (i < one.size() && blank(one[i])) ++i;
     if (i >= one.size() || one[i] != '#') {
       std::string expanded;
+      produced_ = out_.text.size();
       if (!expand(one, expanded, 0, shown, line)) return false;
       if (out_.text.size() + expanded.size() > kMaxExpandedBytes)
         return fail(shown, line, 0, "the expanded scene is larger than " + std::to_string(kMaxExpandedBytes) + " bytes");
@@ -217,6 +219,13 @@ class Expander {
           const bool ok = expand(it->second, body, depth + 1, shown, line);
           expanding_.pop_back();
           if (!ok) return false;
+          // Bodies naming a macro twice double at every level: count what
+          // every level copies, and each expansion as 64 bytes more (its
+          // call), so 2^30 copies of a 1-byte body stop within a second
+          // instead of running out of time or memory.
+          produced_ += body.size() + kExpansionCost;
+          if (produced_ > kMaxExpandedBytes)
+            return fail(shown, line, 0, "macro expansion larger than " + std::to_string(kMaxExpandedBytes) + " bytes");
           out += body;
         } else {
           out += name;
@@ -235,6 +244,7 @@ class Expander {
   std::map<std::string, std::string> macros_;
   std::vector<std::string> stack_;
   std::vector<std::string> expanding_;
+  std::size_t produced_ = 0;  // bytes of the scene so far plus every copy made expanding this line
   std::string error_;
 };
 

@@ -150,7 +150,8 @@ class Reader {
   }
 
   // Reads a number; `what` names it in the message.
-  bool number(R& out, const char* what) {
+  // `mapping`: a mapping `< ... >` may follow (not after a RANGE's kind).
+  bool number(R& out, const char* what, bool mapping = true) {
     if (!is_number()) {
       char msg[128] = "expected a number (";
       int n = 19;
@@ -159,22 +160,25 @@ class Reader {
       msg[n] = 0;
       return fail_here(msg);
     }
-    if (parse_real<R>(tok_.s, tok_.length, out) != NumberStatus::kOk) {
-      fail_at(tok_.pos, "number out of range: ");
+    const NumberStatus st = parse_real<R>(tok_.s, tok_.length, out);
+    if (st != NumberStatus::kOk) {
+      // The token has a number's syntax: the parser refuses only values
+      // beyond the format (kNonFinite) and tokens longer than it reads.
+      fail_at(tok_.pos, st == NumberStatus::kNonFinite ? "number out of range: " : "number has too many digits: ");
       error_->quoted(tok_.s, tok_.length);
       return false;
     }
     advance();
-    skip_mapping();
+    if (mapping) skip_mapping();
     return ok_;
   }
   bool vec(V& out, const char* what) {
     return number(out.x, what) && number(out.y, what) && number(out.z, what);
   }
-  bool integer(int32_t& out, const char* what, int32_t lo, int32_t hi) {
+  bool integer(int32_t& out, const char* what, int32_t lo, int32_t hi, bool mapping = true) {
     const SourcePos at = tok_.pos;
     R v;
-    if (!number(v, what)) return false;
+    if (!number(v, what, mapping)) return false;
     if (!(v >= R(lo) && v <= R(hi)) || M::from_int(M::to_int(v)) != v) {
       fail_at(at, "expected a whole number from ");
       error_->number(lo).text(" to ").number(hi).text(" (").text(what).text(")");
@@ -662,7 +666,7 @@ class Reader {
     advance();
     const SourcePos kind_at = tok_.pos;
     int32_t kind;
-    if (!integer(kind, "RANGE primitive kind 0 to 8", -1000, 1000)) return false;
+    if (!integer(kind, "RANGE primitive kind 0 to 8", -1000, 1000, false)) return false;
     if (kind < 0 || kind > 8) {
       fail_at(kind_at, "RANGE primitive must be of kind 0 to 8, found kind ");
       error_->number(kind);
@@ -711,10 +715,18 @@ class Reader {
     int32_t mat = kNone;
     if (!material_ref(w, mat)) return false;
     R sign;
+    const SourcePos sign_at = tok_.pos;
+    const char* sign_text = tok_.s;
+    const int sign_length = tok_.length;
     in_polygon_ = kind == 20;  // the '<' after its sign opens the mesh, not a mapping
     const bool sign_ok = number(sign, "sign 1 or -1");
     in_polygon_ = false;
     if (!sign_ok) return false;
+    if (!(sign == R(1) || sign == R(-1))) {  // line 1049 knows only 1 and -1
+      fail_at(sign_at, "the sign must be 1 or -1, found ");
+      error_->quoted(sign_text, sign_length);
+      return false;
+    }
     if (kind == 20) return polygon(w, m, mat, sign < R(0), at);
     R p[13];
     int n = 0;
