@@ -1,0 +1,228 @@
+// EASTRAY invalid inputs beyond ../shared and test/general/eastray_bad
+// (issue 14): each class the issue lists in new forms, plus the lexical and
+// preprocessor corner cases (unterminated comments and include names,
+// include cycles through three files, self-referring and exploding macros,
+// bad number spellings, empty files, binary garbage, huge tokens, deep
+// nesting). Each must give one `file:line:col: error: ...` line, a non-zero
+// status and no image, from minrt and from host-send (refused before any
+// link is opened, whatever the protocol).
+#include "eastray_probe_support.hpp"
+
+#include <algorithm>
+
+using namespace eprobe;
+
+namespace {
+
+// 6 lines; the objects start on line 7.
+const char* kHead =
+    "display 32 24 0 0 31 23 1 1 1 ;\ncondition 4 0.01 0.00001 0 ;\ncamera 0 2 9  0 1 0  0 10 0  25 0 ;\n"
+    "sky 0.2 0.4 0.8 ;\nenv 0.2 0.2 0.2 ;\ncolor [ grey 0.6 0.6 0.6  0 0 0  0 0 0  1 1  0  0 0 1 ; ]\n";
+
+struct Case {
+  std::string name;
+  std::string text;
+  std::string where;    // what the line starts with: FILE:LINE:COL:
+  std::string message;  // a part of the message
+};
+
+std::vector<Case> cases() {
+  const std::string h = kHead;
+  const std::string tri = "p 0 0 0 0  p 1 1 0 0  p 2 0 1 0  ";
+  std::vector<Case> c = {
+      // comments and the preprocessor
+      {"comment-open-at-end", h + "obj [ 2 grey 1  0 1 0  1 ; ]\n/* never closed\n", "comment-open-at-end.ray:8:1:",
+       "unterminated comment"},
+      {"comment-second-open", h + "obj [ 2 grey 1  0 1 0  1 ; /* a */ /* b\n ]\n", "comment-second-open.ray:7:36:",
+       "unterminated comment"},
+      {"comment-in-define", "#define X /* \n" + h + "obj [ ]\n", "comment-in-define.ray:1:11:", "unterminated comment"},
+      {"include-open-quote", h + "#include \"colors.h\nobj [ ]\n", "include-open-quote.ray:7:10:", "no closing \""},
+      {"include-open-angle", h + "#include <colors.h\nobj [ ]\n", "include-open-angle.ray:7:10:", "no closing >"},
+      {"include-no-name", h + "#include\nobj [ ]\n", "include-no-name.ray:7:", "#include needs"},
+      {"include-missing", h + "obj [\n#include \"nowhere/none.h\"\n]\n", "include-missing.ray:8:10:", "none.h"},
+      {"unknown-directive", h + "#ifdef X\nobj [ ]\n", "unknown-directive.ray:7:", "ifdef"},
+      {"macro-self", h + "#define R R 1\nobj [ 2 grey 1  0 1 0  R ; ]\n", "macro-self.ray:8:24:", "expected a number"},
+      {"macro-mutual", h + "#define A B\n#define B A\nobj [ 2 grey 1  0 1 0  A ; ]\n", "macro-mutual.ray:9:24:",
+       "expected a number"},
+      // parts
+      {"part-twice", h + "obj [ p ; ]\nobj p [ 2 grey 1  0 1 0  1 ; ]\nobj p [ 2 grey 1  0 1 0  2 ; ]\n", "part-twice.ray:9:5:",
+       "part defined twice"},
+      {"parts-no-main", h + "obj a [ b ; ]\nobj b [ 2 grey 1  0 1 0  1 ; ]\n", "parts-no-main.ray:9:1:", "no main object"},
+      {"cycle-of-3", h + "obj [ a ; ]\nobj a [ b ; ]\nobj b [ c ; ]\nobj c [ 2 grey 1 0 1 0 1 ; a ; ]\n", "cycle-of-3.ray:10:28:",
+       "recursive call of part 'a'"},
+      {"uncalled-cycle", h + "obj [ 2 grey 1 0 1 0 1 ; ]\nobj a [ b ; ]\nobj b [ a ; ]\n", "uncalled-cycle.ray:9:9:",
+       "recursive call"},
+      {"call-without-semicolon", h + "obj [ p ]\nobj p [ 2 grey 1  0 1 0  1 ; ]\n", "call-without-semicolon.ray:7:9:",
+       "expected ';'"},
+      // RANGE
+      {"range-kind-9", h + "obj [ ( 9  0 1 0  1 ; 2 grey 1  0 1 0  0.5 ; ) ]\n", "range-kind-9.ray:7:9:", "kind 0 to 8, found kind 9"},
+      {"range-kind-17", h + "obj [ ( 17  0 1 0  1 ; 2 grey 1  0 1 0  0.5 ; ) ]\n", "range-kind-17.ray:7:9:", "found kind 17"},
+      {"range-kind-20", h + "obj [ ( 20 < " + tri + "P 0 1 2 ; > ; 2 grey 1  0 1 0  0.5 ; ) ]\n", "range-kind-20.ray:7:9:",
+       "found kind 20"},
+      {"range-kind-15", h + "obj [ { ( 15  0 1 0  0 1 0  1 1 ; 2 grey 1  0 1 0  0.5 ; ) } ]\n", "range-kind-15.ray:7:11:",
+       "found kind 15"},
+      // polygons
+      {"vertex-negative-in-face", h + "obj [ 20 grey 1 < " + tri + "P 0 1 -2 ; > ; ]\n", "vertex-negative-in-face.ray:7:58:",
+       "vertex number of the face"},
+      {"vertex-negative-id", h + "obj [ 20 grey 1 < p -1 0 0 0  p 1 1 0 0  p 2 0 1 0  P -1 1 2 ; > ; ]\n",
+       "vertex-negative-id.ray:7:21:", "vertex number"},
+      {"vertex-huge", h + "obj [ 20 grey 1 < " + tri + "P 0 1 99999999999 ; > ; ]\n", "vertex-huge.ray:7:58:", "whole number"},
+      {"vertex-fraction", h + "obj [ 20 grey 1 < " + tri + "P 0 1 2.5 ; > ; ]\n", "vertex-fraction.ray:7:58:", "whole number"},
+      {"vertex-undefined-last", h + "obj [ 20 grey 1 < " + tri + "P 0 1 2 ;\n  P 2 1 3 ; > ; ]\n", "vertex-undefined-last.ray:8:",
+       "undefined vertex 3"},
+      {"vertex-after-face", h + "obj [ 20 grey 1 < " + tri + "P 0 1 2 ;  p 3 1 1 0 > ; ]\n", "vertex-after-face.ray:7:63:",
+       "must all come before the faces"},
+      {"face-two-vertices", h + "obj [ 20 grey 1 < " + tri + "P 0 1 ; > ; ]\n", "face-two-vertices.ray:7:", "at least 3 vertices"},
+      {"polygon-unterminated", h + "obj [ 20 grey 1 < " + tri + "P 0 1 2 ;\n ; ]\n", "polygon-unterminated.ray:8:2:",
+       "in the polygon"},
+      // numbers
+      {"number-1e", h + "obj [ 2 grey 1  0 1 0  1e ; ]\n", "number-1e.ray:7:24:", "expected a number"},
+      {"number-1e+", h + "obj [ 2 grey 1  0 1 0  1e+ ; ]\n", "number-1e+.ray:7:24:", "expected a number"},
+      {"number-minus-minus", h + "obj [ 2 grey 1  0 1 0  --1 ; ]\n", "number-minus-minus.ray:7:24:", "expected a number"},
+      {"number-dot", h + "obj [ 2 grey 1  0 1 0  . ; ]\n", "number-dot.ray:7:24:", "expected a number"},
+      {"number-plus", h + "obj [ 2 grey 1  0 1 0  + ; ]\n", "number-plus.ray:7:24:", "expected a number"},
+      {"number-two-points", h + "obj [ 2 grey 1  0 1 0  1.2.3 ; ]\n", "number-two-points.ray:7:24:", "expected a number"},
+      {"number-hex", h + "obj [ 2 grey 1  0 1 0  0x10 ; ]\n", "number-hex.ray:7:24:", "expected a number"},
+      {"number-huge-exponent", h + "obj [ 2 grey 1  0 1 0  1e99999 ; ]\n", "number-huge-exponent.ray:7:24:", "out of range"},
+      {"number-huge-negative", h + "obj [ 2 grey 1  -1e400 1 0  1 ; ]\n", "number-huge-negative.ray:7:17:", "out of range"},
+      {"number-tiny-radius", h + "obj [ 2 grey 1  0 1 0  1e-99999 ; ]\n", "number-tiny-radius.ray:7:7:", "radius must be above 0"},
+      {"number-nan", h + "obj [ 2 grey 1  0 1 0  NaN ; ]\n", "number-nan.ray:7:24:", "expected a number"},
+      {"number-inf", h + "obj [ 2 grey 1  0 1 0  inf ; ]\n", "number-inf.ray:7:24:", "expected a number"},
+      {"number-minus-infinity", h + "obj [ 2 grey 1  0 1 0  -Infinity ; ]\n", "number-minus-infinity.ray:7:24:", "expected a number"},
+      {"number-fullwidth", h + "obj [ 2 grey 1  0 1 0  \xef\xbc\x91 ; ]\n", "number-fullwidth.ray:7:24:", "expected a number"},
+      {"number-300-digits", h + "obj [ 2 grey 1  0 1 0  0." + std::string(300, '3') + " ; ]\n", "number-300-digits.ray:7:24:",
+       "too many digits"},
+      // signs and kinds
+      {"sign-zero", h + "obj [ 2 grey 0  0 1 0  1 ; ]\n", "sign-zero.ray:7:14:", "sign must be 1 or -1"},
+      {"sign-two", h + "obj [ { 16 grey 2  0 1 0  1 1 1 ; } ]\n", "sign-two.ray:7:17:", "sign must be 1 or -1, found '2'"},
+      {"sign-polygon", h + "obj [ 20 grey 0.5 < " + tri + "P 0 1 2 ; > ; ]\n", "sign-polygon.ray:7:15:", "sign must be 1 or -1"},
+      {"kind-9", h + "obj [ 9 grey 1  0 1 0  1 ; ]\n", "kind-9.ray:7:7:", "unknown object kind 9"},
+      {"kind-minus-4", h + "obj [ -4 grey 1  0 1 0  1 ; ]\n", "kind-minus-4.ray:7:7:", "object kind"},
+      // blocks
+      {"main-unterminated", h + "obj [ 2 grey 1  0 1 0  1 ;", "main-unterminated.ray:7:", "unterminated block"},
+      {"and-unterminated", h + "obj [ 2 grey 1  0 1 0  1 ;\n { [ 2 grey 1  0 1 0  1 ; ]\n", "and-unterminated.ray:8:2:",
+       "unterminated block"},
+      {"range-closed-by-bracket", h + "obj [ ( 2 0 1 0 2 ; 2 grey 1  0 1 0  1 ;\n]\n", "range-closed-by-bracket.ray:8:1:", "found ']'"},
+      {"and-closed-by-bracket", h + "obj [ { 2 grey 1  0 1 0  1 ; ] }\n", "and-closed-by-bracket.ray:7:30:", "found ']'"},
+      {"one-close-too-many", h + "obj [ 2 grey 1  0 1 0  1 ; ] ]\n", "one-close-too-many.ray:7:30:", "unknown statement ']'"},
+      {"deep-nesting", h + "obj [ " + [] {
+         std::string s;
+         for (int i = 0; i < 100000; ++i) s += "[ ";
+         return s;
+       }() + "\n",
+       "deep-nesting.ray:7:", "nested too deeply"},
+      {"deep-nesting-33", h + "obj [ " + [] {
+         std::string s;
+         for (int i = 0; i < 33; ++i) s += "{ ";
+         s += "2 grey 1 0 1 0 1 ; ";
+         for (int i = 0; i < 33; ++i) s += "} ";
+         return s;
+       }() + "]\n",
+       "deep-nesting-33.ray:7:", "nested too deeply"},
+      // statements
+      {"unknown-move", h + "obj [ :mw 1 2 grey 1  0 1 0  1 ; ]\n", "unknown-move.ray:7:7:", "unknown move command ':mw'"},
+      {"mtx-short", h + "obj [ :mtx 1 0 0 0  0 1 0 0  0 0 1 0 2 grey 1  0 1 0  1 ; ]\n", "mtx-short.ray:7:40:", ":mtx element"},
+      {"colour-list-open", "display 32 24 0 0 31 23 1 1 1 ;\ncolor [ grey 0.6 0.6 0.6  0 0 0  0 0 0  1 1  0  0 0 1 ;\n"
+                           "obj [ 2 grey 1  0 1 0  1 ; ]\n",
+       "colour-list-open.ray:3:5:", "expected a number"},
+      {"light-list-open", h + "e_light [ 0 1 0  1 1 1  0 1 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "light-list-open.ray:8:1:",
+       "e_light direction"},
+      {"colour-number-undefined", h + "obj [ 2 7 1  0 1 0  1 ; ]\n", "colour-number-undefined.ray:7:9:", "undefined colour number 7"},
+      {"display-too-wide", "display 4096 24 0 0 31 23 1 1 1 ;\nobj [ ]\n", "display-too-wide.ray:1:9:", "display width"},
+      {"display-step-zero", "display 32 24 0 0 31 23 0 1 1 ;\nobj [ ]\n", "display-step-zero.ray:1:25:", "display step"},
+      {"condition-negative", "condition -1 0.01 0.00001 0 ;\nobj [ ]\n", "condition-negative.ray:1:11:", "condition depth"},
+      // whole files
+      {"empty", "", "empty.ray:1:1:", "no main object"},
+      {"only-a-comment", "/* nothing */\n", "only-a-comment.ray:2:1:", "no main object"},
+      {"nul-byte", std::string("display 32 24 0 0 31 23 1 1 1 \0 ;\n", 34), "nul-byte.ray:1:31:", "expected ';'"},
+      {"long-name", h + "obj [ 2 grey 1  0 1 0  1 ; ]\n" + std::string(3000000, 'a') + "\n", "long-name.ray:8:1:",
+       "unknown statement 'aaaa"},
+      {"long-line", h + "obj [ " + [] {
+         std::string s;
+         for (int i = 0; i < 100000; ++i) s += "2 grey 1 0 1 0 0.1 ; ";
+         return s;
+       }() + "zz ; ]\n",
+       "long-line.ray:7:2100007:", "undefined part 'zz'"},
+  };
+  // Bytes 0x80-0xff and controls, deterministic.
+  std::string garbage;
+  uint32_t x = 12345;
+  for (int i = 0; i < 4000; ++i) {
+    x = x * 1103515245u + 12345u;
+    garbage += static_cast<char>(0x80 | (x >> 24));
+  }
+  c.push_back({"binary-garbage", garbage, "binary-garbage.ray:1:1:", "unknown statement"});
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("eastray probe: invalid inputs get one located error line, status 2, no image", "[eastray][eprobe]") {
+  const std::string dir = temp_dir();
+  // Three files including each other in a ring, and a header for the <...> case.
+  write(dir + "/ring1.h", "/* one */\n#include \"ring2.h\"\n");
+  write(dir + "/ring2.h", "\n\n#include \"ring3.h\"\n");
+  write(dir + "/ring3.h", "#include \"ring1.h\"\n");
+  std::vector<Case> all = cases();
+  all.push_back({"include-ring", std::string(kHead) + "#include \"ring1.h\"\nobj [ ]\n", "ring3.h:1:10:", "#include cycle"});
+  all.push_back({"include-angle-missing", std::string(kHead) + "#include <nothere.h>\nobj [ ]\n", "include-angle-missing.ray:7:10:",
+                 "nothere.h"});
+  for (const Case& c : all) {
+    INFO(c.name);
+    const std::string file = c.name + ".ray";
+    write(dir + "/" + file, c.text);
+    const std::string out = dir + "/" + c.name + ".png";
+    const Run r = run("EASTRAY='" + dir + "/sys' " + std::string(MINRT_BIN) + " -o " + out + " " + file, dir);
+    INFO(r.err.substr(0, 400));
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind(c.where, 0) == 0);
+    CHECK(r.err.find(": error: ") != std::string::npos);
+    CHECK(r.err.find(c.message) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.size() < 400);  // long tokens are shortened in the message
+    CHECK_FALSE(exists(out));
+    // The default name (the scene's name with .png) is not written either.
+    CHECK_FALSE(exists(dir + "/" + c.name + ".png"));
+  }
+}
+
+TEST_CASE("eastray probe: host-send refuses invalid inputs before sending, over every protocol", "[eastray][eprobe]") {
+  const std::string dir = temp_dir();
+  // One of each class; host-send reads with the board's reader.
+  const char* names[] = {"comment-second-open", "include-open-quote", "macro-mutual", "part-twice", "parts-no-main",
+                         "cycle-of-3", "range-kind-20", "vertex-negative-in-face", "number-1e", "number-300-digits",
+                         "sign-two", "deep-nesting-33", "empty", "binary-garbage"};
+  const std::vector<Case> all = cases();
+  for (const char* n : names) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const Case& c) { return c.name == n; });
+    REQUIRE(it != all.end());
+    const std::string file = it->name + ".ray";
+    write(dir + "/" + file, it->text);
+    for (const char* protocol : {"raw", "course", "framed"}) {
+      INFO(n << " over " << protocol);
+      const std::string out = dir + "/out.png";
+      const Run r = run(std::string(MINRT_SEND_BIN) + " --sim --protocol " + protocol + " " + file + " -o " + out, dir);
+      INFO(r.err.substr(0, 400));
+      CHECK(r.status != 0);
+      CHECK(r.err.find("scene rejected before sending: " + it->where) != std::string::npos);
+      CHECK(r.err.find(it->message) != std::string::npos);
+      CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+      CHECK_FALSE(exists(out));
+    }
+  }
+}
+
+TEST_CASE("eastray probe: macros that double at every level stop with an error", "[eastray][eprobe]") {
+  // M0 -> M1 M1 -> ... : 2^30 copies of "1" if nothing stopped it.
+  std::string text = kHead;
+  for (int i = 0; i < 30; ++i) text += "#define M" + std::to_string(i) + " M" + std::to_string(i + 1) + " M" + std::to_string(i + 1) + "\n";
+  text += "#define M30 1\nobj [ 2 grey 1  0 1 0  M0 ; ]\n";
+  const std::string dir = temp_dir();
+  write(dir + "/explode.ray", text);
+  const Run r = run(std::string(MINRT_BIN) + " -o out.png explode.ray", dir);
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind("explode.ray:38:", 0) == 0);
+  CHECK(r.err.find("macro expansion larger than") != std::string::npos);
+  CHECK_FALSE(exists(dir + "/out.png"));
+}
