@@ -43,9 +43,12 @@ class Expander {
     for (const std::string& open : stack_)
       if (open == canon) return false;  // caller reports the cycle
     stack_.push_back(canon);
+    // Text editors of the FM TOWNS's MS-DOS ended files with Ctrl-Z (0x1a):
+    // it ends the file's text, as DOS's own text reading did.
+    const std::size_t dos_eof = text.find('\x1a');
     std::string clean;
     int bad_line = 0, bad_col = 0;
-    if (!strip_comments(text, clean, bad_line, bad_col)) {
+    if (!strip_comments(dos_eof == std::string::npos ? text : text.substr(0, dos_eof), clean, bad_line, bad_col)) {
       error_ = shown + ":" + std::to_string(bad_line) + ":" + std::to_string(bad_col) +
                ": error: unterminated comment (no '*/' before the end of the file)";
       return false;

@@ -379,3 +379,65 @@ TEST_CASE("eastray probe: lights at their limits; object lights; the n flag", "[
                scene("voxel 16 ;\ne_light [ -1 2 1  1 1 1  0 1 ; ]\n", objs), 0);
   }
 }
+
+TEST_CASE("eastray probe: the preprocessor and the text's forms", "[eastray][eprobe]") {
+  const std::string objs = "2 red 1  -0.5 0.4 0  0.5 ;  16 blue 1  0.7 0 0.2  0.3 0.6 0.3 ;";
+  const std::string plain = with_floor(objs);
+  const EastrayImage reference = render(plain);
+  SECTION("CR LF line ends, tabs and a DOS end-of-file mark") {
+    std::string dos;
+    for (char ch : plain) {
+      if (ch == '\n') dos += "\r\n";
+      else if (ch == ' ') dos += '\t';
+      else dos += ch;
+    }
+    dos += "\x1a";
+    CHECK(render(dos).rgb == reference.rgb);
+    CHECK(render(plain + "\x1a this is not read [ { (").rgb == reference.rgb);
+  }
+  SECTION("comments touching tokens, spanning lines, between a kind and its colour") {
+    CHECK(render(with_floor("2/* a */red/*\n*/1  -0.5 0.4 0/**/0.5 ;  16 blue 1  0.7 0 0.2  0.3 0.6 0.3 ;")).rgb ==
+          reference.rgb);
+  }
+  SECTION("one number spelt several ways") {
+    const char* spellings[][2] = {{"-.5", ".5"},     {"-0.5", "+0.5"},       {"-5e-1", "5e-1"},
+                                  {"-5.E-1", "5.E-1"}, {"-0.50000", "0.50000"}, {"-50e-2", "50e-2"}};
+    for (const auto& sp : spellings) {
+      INFO(sp[0] << " " << sp[1]);
+      CHECK(render(with_floor(std::string("2 red 1  ") + sp[0] + " 0.4 0  " + sp[1] +
+                              " ;  16 blue 1  0.7 0 0.2  0.3 0.6 0.3 ;")).rgb == reference.rgb);
+    }
+  }
+  SECTION("#define in numbers, negated, in other defines, several tokens, redefined") {
+    const std::string text = std::string("#define H 0.5\n#define AT -H 0.4 0\n#define BALL 2 red 1\n") +
+                             "#define HALF 0.3\n" + kHead + "obj [\n 1 floor 1  0 -1.5 0  0 1 0 ;\n" +
+                             "BALL  AT  H ;\n#define HALF 0.6\n16 blue 1  0.7 0 0.2  0.3 HALF 0.3 ;\n]\n";
+    CHECK(render(text).rgb == reference.rgb);
+  }
+  SECTION("#include \"...\" beside the including file, nested, and <...> from EASTRAY with a DOS path") {
+    const std::string dir = temp_dir();
+    mkdir((dir + "/parts").c_str(), 0755);
+    mkdir((dir + "/lib").c_str(), 0755);
+    mkdir((dir + "/lib/sub").c_str(), 0755);
+    write(dir + "/parts/ball.h", "#include \"radius.h\"\n2 red 1  -0.5 0.4 0  R ;\n#include <sub\\box.h>\n");
+    write(dir + "/parts/radius.h", "/* beside ball.h, not beside the scene */\n#define R 0.5\n");
+    write(dir + "/lib/sub/box.h", "16 blue 1  0.7 0 0.2  0.3 0.6 0.3 ;\n");
+    write(dir + "/scene.ray", with_floor("#include \"parts/ball.h\"\n"));
+    setenv("EASTRAY", (dir + "/lib/").c_str(), 1);
+    const EastrayImage inc = render(minrt::test::read_file(dir + "/scene.ray"), dir + "/scene.ray");
+    unsetenv("EASTRAY");
+    CHECK(inc.rgb == reference.rgb);
+  }
+  SECTION("a polygon inside AND and RANGE blocks is an independent surface (line 1222)") {
+    const std::string tri = "20 blue 1 < p 0 -1 -1 1  p 1 1 -1 1  p 2 0 1.2 1  P 0 1 2 ; > ;";
+    same_image(with_floor("2 red 1  0 0.3 0  0.8 ; " + tri), with_floor("{ 2 red 1  0 0.3 0  0.8 ; " + tri + " }"), 0);
+    same_image(with_floor("2 red 1  0 0.3 0  0.8 ; " + tri),
+               with_floor("( 2  0 0.3 0  0.9 ; 2 red 1  0 0.3 0  0.8 ; ) " + tri), 0);
+  }
+  SECTION("smooth shading over coplanar faces = flat") {
+    const std::string v = "p 0 -1 -0.5 0  p 1 0 -0.5 0.3  p 2 1 -0.5 0  p 3 1 1 0  p 4 0 1 0.3  p 5 -1 1 0 ";
+    // two flat panels meeting at a crease: smooth only within each panel
+    same_image(with_floor("20 red 1 < " + v + "P 0 1 4 ; s  P 0 4 5 ; s k 2  P 1 2 3 ;  P 1 3 4 ; > ;"),
+               with_floor("20 red 1 < " + v + "P 0 1 4 ;  P 0 4 5 ;  P 1 2 3 ;  P 1 3 4 ; > ;"), 0);
+  }
+}

@@ -290,3 +290,20 @@ TEST_CASE("eastray probe: display, condition, anti and shadow statements", "[eas
     expect(centre(render(probe_scene("condition 2 0.4 0.00001 0 ;\nsky 0 0 0 ;\nenv 0 0 0 ;\n", colors, objs))), 0, 0, 0);
   }
 }
+
+TEST_CASE("eastray probe: the e_light's disc seen in the sky (back_mode 0)", "[eastray][eprobe]") {
+  // Looking straight at the light: sky + colour x cos(0)^conc; outside the
+  // disc's angular radius only the sky; half way: cos(45 degrees)^conc.
+  const auto im = render("display 41 31 0 0 40 30 1 1 1 ;\ncamera 0 0 0  0 0 -1  0 1 0  20 0 ;\n" + std::string(kBase) +
+                         "env 0 0 0 ;\nsky 0.1 0.1 0.1 ;\ne_light [ 0 0 1  0.3 0.2 0.1  1 1 ;  0 0 -1  0.5 0.4 0.3  10 2 ; ]\n"
+                         "color [ " + kMatte + " ]\nobj [ ]\n");
+  expect(centre(im), 0.1 + 0.5, 0.1 + 0.4, 0.1 + 0.3);
+  expect(px(im, 0, 0), 0.1, 0.1, 0.1);
+  // column c's angle from the view line: atan((2(c+0.5)/41 - 1) tan 20)
+  for (int col : {22, 25, 28}) {
+    const double a = std::atan((2 * (col + 0.5) / 41 - 1) * std::tan(20 * kPi / 180)) * 180 / kPi;
+    const double k = a < 10 ? std::pow(std::cos(a / 10 * kPi / 2), 2) : 0;
+    INFO("column " << col << " angle " << a);
+    expect(px(im, col, 15), 0.1 + 0.5 * k, 0.1 + 0.4 * k, 0.1 + 0.3 * k);
+  }
+}
