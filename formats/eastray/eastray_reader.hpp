@@ -412,10 +412,16 @@ class Reader {
       advance();
     }
     R alg;
-    if (!vec(m.diffuse, "diffuse colour") || !vec(m.reflect, "reflectance") || !vec(m.transmit, "transmittance") ||
-        !number(m.ior, "index of refraction") || !number(m.half_distance, "transparency half distance") ||
-        !number(m.bump, "bump"))
+    if (!vec(m.diffuse, "diffuse colour") || !vec(m.reflect, "reflectance") || !vec(m.transmit, "transmittance"))
       return false;
+    const SourcePos ior_at = tok_.pos;
+    if (!number(m.ior, "index of refraction")) return false;
+    // The index matters only for a transparent body (line 554); there it
+    // divides, so 0 or less would bend rays through NaN.
+    const bool transparent = m.transmit.x != R(0) || m.transmit.y != R(0) || m.transmit.z != R(0);
+    if (transparent && !(m.ior > R(0)))
+      return fail_at(ior_at, "index of refraction of a transparent colour must be above 0");
+    if (!number(m.half_distance, "transparency half distance") || !number(m.bump, "bump")) return false;
     const SourcePos alg_at = tok_.pos;
     if (!number(alg, "specular algorithm 0 to 5")) return false;
     int count = 0;

@@ -139,6 +139,11 @@ TEST_CASE("eastray probe: ambient, sky, mist, specular, Fresnel, mirror", "[east
     expect(centre(im), 0.65, 0.45, 0.25);
     expect(px(im, 3, 4), 0.65, 0.45, 0.25);
   }
+  SECTION("an opaque colour's index of refraction is not used (line 554): 0 = 1") {
+    const std::string lights = std::string(kBase) + "env 0.2 0.2 0.2 ;\ne_light [ 1 1 1  1 1 1  0 1 ; ]\n";
+    CHECK(render(probe_scene(lights, "m 0.6 0.7 0.3  0.3 0.3 0.3  0 0 0  0 1  0  0 0.5 9 ;", "2 m 1  0 0 0  1 ;")).rgb ==
+          render(probe_scene(lights, "m 0.6 0.7 0.3  0.3 0.3 0.3  0 0 0  1 1  0  0 0.5 9 ;", "2 m 1  0 0 0  1 ;")).rgb);
+  }
   SECTION("Fresnel at normal incidence: R = ((n-1)/(n+1))^2 for glass") {
     // A slab of ior 1.5 (R = 0.04) facing the eye: white wall behind the eye
     // reflected (0.04), black behind the slab, no internal branching.
