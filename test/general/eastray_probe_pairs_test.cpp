@@ -441,3 +441,32 @@ TEST_CASE("eastray probe: the preprocessor and the text's forms", "[eastray][epr
                with_floor("20 red 1 < " + v + "P 0 1 4 ;  P 0 4 5 ;  P 1 2 3 ;  P 1 3 4 ; > ;"), 0);
   }
 }
+
+TEST_CASE("eastray probe: glass written two ways refracts the same (rays inside CSG)", "[eastray][eprobe]") {
+  // Transparent bodies: the rays that enter must find the same exits, so the
+  // inside/outside logic of CSG and of the finite kinds is exercised too.
+  const std::string glass =
+      "color [ glass 0.05 0.05 0.05  1 1 1  0.9 0.95 1  1.5 3  0  0 0.5 30 ; ]\ncondition 6 0 0.00001 1 ;\n";
+  const std::string behind = "16 red 1  -1 0.3 -2.5  0.4 1.2 0.3 ;  2 blue 1  1 0 -2  0.6 ;";
+  auto s = [&](const std::string& objs) { return with_floor(behind + " " + objs, glass); };
+  SECTION("sphere = kind 0") {
+    same_image(s("2 glass 1  0 0.4 0.5  0.9 ;"), s("0 glass 1  " + axial({0, 0.4, 0.5}, {0, 1, 0}, 1, 0, -0.81).kind0() + " ;"), 10);
+  }
+  SECTION("capped cylinder = AND, tilted") {
+    same_image(s("[ :rz 30 :rx 20 15 glass 1  0 0.3 0.5  0 1 0  0.6 0.7 ; ]"),
+               s("[ :rz 30 :rx 20 { 5 glass 1  0 0.3 0.5  0 1 0  0.6 ;  1 glass 1  0 1 0.5  0 1 0 ;  1 glass 1  0 -0.4 0.5  0 -1 0 ; } ]"),
+               10);
+  }
+  SECTION("box = AND of six planes, turned") {
+    same_image(s("[ :ry 30 16 glass 1  0 0.3 0.5  0.7 0.7 0.5 ; ]"),
+               s("[ :ry 30 { 1 glass 1  0.7 0 0  1 0 0 ;  1 glass 1  -0.7 0 0  -1 0 0 ;  1 glass 1  0 1 0  0 1 0 ;"
+                 "  1 glass 1  0 -0.4 0  0 -1 0 ;  1 glass 1  0 0 1  0 0 1 ;  1 glass 1  0 0 0  0 0 -1 ; } ]"),
+               10);
+  }
+  SECTION("a glass block with a spherical hollow: sign -1 = the negated quadric") {
+    same_image(s("{ 16 glass 1  0 0.3 0.5  0.8 0.8 0.5 ;  2 glass -1  0.2 0.5 0.6  0.5 ; }"),
+               s("{ 16 glass 1  0 0.3 0.5  0.8 0.8 0.5 ;  0 glass 1  " +
+                 axial({0.2, 0.5, 0.6}, {0, 1, 0}, 1, 0, -0.25).negated().kind0() + " ; }"),
+               10);
+  }
+}
