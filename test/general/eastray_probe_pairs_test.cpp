@@ -470,3 +470,40 @@ TEST_CASE("eastray probe: glass written two ways refracts the same (rays inside 
                10);
   }
 }
+
+TEST_CASE("eastray probe: the same scene organised otherwise", "[eastray][eprobe]") {
+  const std::string a = "2 red 1  -0.5 0.4 0  0.5 ;", b = "16 blue 1  0.7 0 0.2  0.3 0.6 0.3 ;";
+  const std::string one = with_floor(a + " " + b);
+  SECTION("two unnamed objs are both drawn (E19) = one obj with both") {
+    same_image(one, with_floor(a) + "obj [ " + b + " ]\n", 0);
+  }
+  SECTION("a part defined before the main obj = after it") {
+    same_image(std::string(kHead) + "obj p [ " + b + " ]\nobj [\n 1 floor 1  0 -1.5 0  0 1 0 ;\n" + a + " p ;\n]\n",
+               with_floor(a + " p ;") + "obj p [ " + b + " ]\n", 0);
+  }
+  SECTION("colours by number = by name; statements in another order") {
+    same_image(one, with_floor("2 1 1  -0.5 0.4 0  0.5 ;  16 2 1  0.7 0 0.2  0.3 0.6 0.3 ;"), 0);
+    same_image(one, "color [ floor 0.5 0.5 0.5  0 0 0  0 0 0  1 1  0  0 0 1 ;\n"
+                    " red 0.9 0.2 0.1  0 0 0  0 0 0  1 1  0  0 0.6 15 ;\n blue 0.1 0.3 0.9  0 0 0  0 0 0  1 1  0  0 0.6 15 ; ]\n"
+                    "obj [\n 1 floor 1  0 -1.5 0  0 1 0 ;\n" + a + " " + b + "\n]\n"
+                    "e_light [ -1 2 1.5  0.8 0.8 0.8  0 1 ; ]\nshadow 1 ;\nenv 0.25 0.25 0.25 ;\nsky 0.1 0.2 0.3 ;\n"
+                    "camera 1 3 10  0 0.8 0  0 10 0  22 0 ;\ncondition 4 0.01 0.00001 0 ;\ndisplay 81 61 0 0 80 60 1 1 1 ;\n",
+               0);
+  }
+  SECTION("a display window = the full image inside it, black outside") {
+    std::string win = one;
+    win.replace(win.find("display 81 61 0 0 80 60"), 23, "display 81 61 7 5 60 44");
+    const EastrayImage full = render(one), part = render(win);
+    int checked = 0;
+    for (int y = 0; y < 61; ++y)
+      for (int x = 0; x < 81; ++x) {
+        const Rgb f = px(full, x, y), p = px(part, x, y);
+        const bool inside = x >= 7 && x <= 60 && y >= 5 && y <= 44;
+        INFO("pixel " << x << " " << y);
+        if (inside) REQUIRE((f.r == p.r && f.g == p.g && f.b == p.b));
+        else REQUIRE(p.r + p.g + p.b == 0);
+        ++checked;
+      }
+    CHECK(checked == 81 * 61);
+  }
+}
