@@ -35,7 +35,8 @@ std::string bare(const std::string& objects, const std::string& extra = "") {
   return std::string(kHead) + extra + "obj [\n" + objects + "\n]\n";
 }
 
-// Same picture within rounding, and a picture with something in it.
+// Same picture within rounding, in double and in the board's float, and a
+// picture with something in it.
 void same_image(const std::string& a, const std::string& b, int edge = 6, int least_covered = 150) {
   const EastrayImage ia = render(a), ib = render(b);
   dump_pair(a, b);
@@ -43,6 +44,13 @@ void same_image(const std::string& a, const std::string& b, int edge = 6, int le
   INFO("scene A:\n" << a << "\nscene B:\n" << b << "\ndiffering pixels: " << n);
   CHECK(n <= edge);
   CHECK(covered(ia, kSky) >= least_covered);
+  // The board's arithmetic, float with the portable shims: the same bound.
+  minrt::host::Variant f;
+  f.precision = minrt::host::Precision::kFloat;
+  f.shims = minrt::host::ShimSet::kPortable;
+  const int nf = differing(render(a, "probe.ray", f), render(b, "probe.ray", f));
+  INFO("differing pixels in float: " << nf);
+  CHECK(nf <= edge);
 }
 
 }  // namespace
