@@ -230,3 +230,24 @@ TEST_CASE("eastray probe: macros that double at every level stop with an error",
   CHECK(r.err.find("macro expansion larger than") != std::string::npos);
   CHECK_FALSE(exists(dir + "/out.png"));
 }
+
+TEST_CASE("eastray probe: an invalid scene writes nothing under its output statement's name either", "[eastray][eprobe]") {
+  const std::string dir = temp_dir();
+  for (const char* name : {"named.png", "named.tif", "named.fal"}) {
+    INFO(name);
+    write(dir + "/o.ray", std::string(kHead) + "output " + name + " ;\nobj [ 2 gold 1  0 1 0  1 ; ]\n");
+    const Run r = run(std::string(MINRT_BIN) + " o.ray", dir);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind("o.ray:8:9: error: undefined colour 'gold'", 0) == 0);
+    CHECK_FALSE(exists(dir + "/" + name));
+    CHECK_FALSE(exists(dir + "/named.png"));
+    CHECK_FALSE(exists(dir + "/o.png"));
+  }
+  // From standard input: the message names <stdin>.
+  write(dir + "/in.txt", "obj [ 2 gold 1  0 1 0  1 ; ]\n");
+  const Run r = run("sh -c '" + std::string(MINRT_BIN) + " --scene-format eastray - -o s.png < in.txt'", dir);
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind("<stdin>:1:9: error: undefined colour 'gold'", 0) == 0);
+  CHECK_FALSE(exists(dir + "/s.png"));
+}
