@@ -606,6 +606,7 @@ class Reader {
                                        parent)) == kNone)
           return false;
         if (!items(w, m, node, is_and ? '}' : ']', at, depth + 1)) return false;
+        if (w.emit) drop_if_empty(node);
       } else if (tok_.is('(')) {
         if (!range(w, m, parent, depth)) return false;
       } else if (tok_.s[0] == ':') {
@@ -700,7 +701,28 @@ class Reader {
       scene_.primitives[prim].inverted = false;
       scene_.nodes[node].primitive = prim;
     }
-    return items(w, m, node, ')', at, depth + 1);
+    if (!items(w, m, node, ')', at, depth + 1)) return false;
+    if (w.emit) drop_if_empty(node);
+    return true;
+  }
+
+  // A block with nothing drawn in it (empty, or only moves and lights) is
+  // no item of its parent, as an empty part call is: otherwise an empty
+  // AND or OR would be nothing and empty RANGE inside an AND would hide its
+  // siblings, where removing the RANGE (line 1274: only a bound) would not.
+  // Nothing was allocated after it, so it is the last node (and a RANGE's
+  // bound the last primitive).
+  void drop_if_empty(int32_t node) {
+    Node& n = scene_.nodes[node];
+    if (n.first_child != kNone || node != scene_.node_count - 1) return;
+    Node& p = scene_.nodes[n.parent];
+    int32_t prev = kNone;
+    for (int32_t c = p.first_child; c != node; c = scene_.nodes[c].next) prev = c;
+    if (prev == kNone) p.first_child = kNone;
+    else scene_.nodes[prev].next = kNone;
+    p.last_child = prev;
+    if (n.primitive != kNone && n.primitive == scene_.primitive_count - 1) --scene_.primitive_count;
+    --scene_.node_count;
   }
 
   // Object light (-1, -2, -3) or primitive.

@@ -265,6 +265,17 @@ TEST_CASE("eastray probe: RANGE on = off in nested blocks, whatever its kind", "
     same_image(with_floor("[ :ry 40 :mx 0.3 " + inner + " ] 2 red 1  0 -1 1.5  0.3 ;"),
                with_floor("[ :ry 40 ( 2  0.3 0.3 0  1.4 ; :mx 0.3 " + inner + " ) :mx 0.3 ] 2 red 1  0 -1 1.5  0.3 ;"), 0);
   }
+  SECTION("an empty RANGE, AND or OR is no item: removing it changes nothing") {
+    const std::string diff = "{ 16 red 1  0 0.3 0  0.7 0.7 0.7 ;  2 blue -1  0.4 0.7 0.4  0.6 ; ";
+    for (const char* empty : {"( 2  0 0.3 0  1.5 ; )", "( 2  5 5 5  0.1 ; )", "{ }", "[ ]", "{ [ ] ( 2 0 0 0 9 ; ) }",
+                              "[ :mx 1 -2  0 3 3  1 1 1  0 ; ]"}) {
+      INFO(empty);
+      const std::string light = std::string(empty).find("-2") != std::string::npos
+                                    ? "p_light [ 1 3 3  1 1 1  0 ; ]\n" : "";
+      same_image(with_floor(diff + "}", light), with_floor(diff + empty + " }"), 0);
+      same_image(with_floor("[ " + diff + "} ]", light), with_floor("[ " + diff + "} " + empty + " ]"), 0);
+    }
+  }
   SECTION("shadow rays through a RANGE they start outside of") {
     same_image(with_floor("2 red 1  0 1.2 0  0.5 ;"), with_floor("( 2  0 1.2 0  0.6 ; 2 red 1  0 1.2 0  0.5 ; )"), 0);
   }
