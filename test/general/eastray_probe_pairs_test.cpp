@@ -526,3 +526,47 @@ TEST_CASE("eastray probe: the same scene organised otherwise", "[eastray][eprobe
     CHECK(checked == 81 * 61);
   }
 }
+
+TEST_CASE("eastray probe: finite kinds under non-uniform moves = AND of moved kind-0 solids", "[eastray][eprobe]") {
+  // The object keeps its local frame (axis +z); the chain stretches and
+  // shears it. The other side writes every solid already moved, as kind 0
+  // coefficients, with no moves: caps, slabs and normals must agree.
+  const Chain ch{{{":my", 0.5}, {":rx", -60}, {":sx", 1.4}, {":ry", 35}, {":sz", 0.6}, {":rz", 20}}};
+  const Affine m = ch.map();
+  auto and_of = [&](const std::vector<Quadric>& parts) {
+    std::string s = "{ ";
+    for (const Quadric& q : parts) s += "0 red 1  " + q.moved(m).kind0() + " ;  ";
+    return s + "}";
+  };
+  const Quadric top = plane({0, 0, 0.8}, {0, 0, 1}), bottom = plane({0, 0, -0.8}, {0, 0, -1}),
+                base = plane({0, 0, 0}, {0, 0, -1});
+  const double s = 0.6, d = 0.3;
+  SECTION("15 cylinder") {
+    same_image(with_floor("[ " + ch.text() + " 15 red 1  0 0 0  0 0 1  0.5 0.8 ; ]"),
+               with_floor(and_of({axial({0, 0, 0}, {0, 0, 1}, 1, -1, -0.25), top, bottom})));
+  }
+  SECTION("11 cone, both nappes") {
+    same_image(with_floor("[ " + ch.text() + " 11 red 1  0 0 0  0 0 1  " + num(s) + " 0.8 ; ]"),
+               with_floor(and_of({axial({0, 0, 0}, {0, 0, 1}, 1, -(1 + s * s), 0), top, bottom})));
+  }
+  SECTION("10 cone, one nappe") {
+    same_image(with_floor("[ " + ch.text() + " 10 red 1  0 0 0  0 0 1  " + num(s) + " 0.8 ; ]"),
+               with_floor(and_of({axial({0, 0, 0}, {0, 0, 1}, 1, -(1 + s * s), 0), top, base})));
+  }
+  SECTION("14 one sheet") {
+    same_image(with_floor("[ " + ch.text() + " 14 red 1  0 0 0  0 0 1  " + num(s) + " " + num(d) + " 0.8 ; ]"),
+               with_floor(and_of({axial({0, 0, 0}, {0, 0, 1}, 1, -(1 + s * s), -d * d), top, bottom})));
+  }
+  SECTION("13 and 12 two sheets") {
+    same_image(with_floor("[ " + ch.text() + " 13 red 1  0 0 0  0 0 1  " + num(s) + " " + num(d) + " 0.8 ; ]"),
+               with_floor(and_of({axial({0, 0, 0}, {0, 0, 1}, 1, -(1 + s * s), s * s * d * d), top, bottom})));
+    same_image(with_floor("[ " + ch.text() + " 12 red 1  0 0 0  0 0 1  " + num(s) + " " + num(d) + " 0.8 ; ]"),
+               with_floor(and_of({axial({0, 0, 0}, {0, 0, 1}, 1, -(1 + s * s), s * s * d * d), top, base})));
+  }
+  SECTION("16 box") {
+    same_image(with_floor("[ " + ch.text() + " 16 red 1  0 0 0  0.5 0.4 0.3 ; ]"),
+               with_floor(and_of({plane({0.5, 0, 0}, {1, 0, 0}), plane({-0.5, 0, 0}, {-1, 0, 0}), plane({0, 0.4, 0}, {0, 1, 0}),
+                                  plane({0, -0.4, 0}, {0, -1, 0}), plane({0, 0, 0.3}, {0, 0, 1}),
+                                  plane({0, 0, -0.3}, {0, 0, -1})})));
+  }
+}
