@@ -167,7 +167,12 @@ TEST_CASE("eastray probe: invalid inputs get one located error line, status 2, n
   write(dir + "/ring1.h", "/* one */\n#include \"ring2.h\"\n");
   write(dir + "/ring2.h", "\n\n#include \"ring3.h\"\n");
   write(dir + "/ring3.h", "#include \"ring1.h\"\n");
+  // A chain of 70 includes, each a file of its own.
+  for (int i = 0; i < 70; ++i) write(dir + "/f" + std::to_string(i) + ".h", "#include \"f" + std::to_string(i + 1) + ".h\"\n");
+  write(dir + "/f70.h", "2 grey 1  0 1 0  1 ;\n");
   std::vector<Case> all = cases();
+  all.push_back({"include-70-deep", std::string(kHead) + "obj [\n#include \"f0.h\"\n]\n", "f63.h:1:10:",
+                 "#include nested deeper than 64"});
   all.push_back({"include-ring", std::string(kHead) + "#include \"ring1.h\"\nobj [ ]\n", "ring3.h:1:10:", "#include cycle"});
   all.push_back({"include-angle-missing", std::string(kHead) + "#include <nothere.h>\nobj [ ]\n", "include-angle-missing.ray:7:10:",
                  "nothere.h"});
