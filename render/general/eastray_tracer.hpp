@@ -401,7 +401,7 @@ class Tracer {
   }
 
   // The colour a ray brings back. `medium_half`: the half distance of the
-  // body the ray travels in (0: air).
+  // body the ray travels in (0: air, where the mist is).
   V radiance(const V& o, const V& d, int depth, R weight, R medium_half) const {
     // condition eps (line 91): distances below it count as 0, so a ray
     // never meets the surface it starts on.
@@ -442,7 +442,9 @@ class Tracer {
         c += kr * radiance(above, rdir, depth + 1, weight * maxc(kr), medium_half);
       }
       if (refract && maxc(kt) > R(0) && weight * maxc(kt) >= s_.min_weight) {
-        const R next_medium = from_inside ? R(0) : m.half_distance;
+        // A body that does not absorb (transparency 0) still keeps the mist
+        // out: its half distance is taken as 1e30, where 2^(-t/h) is 1.
+        const R next_medium = from_inside ? R(0) : m.half_distance > R(0) ? m.half_distance : R(1e30);
         c += kt * radiance(below, normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium);
       }
     }

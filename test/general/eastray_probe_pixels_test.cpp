@@ -119,6 +119,19 @@ TEST_CASE("eastray probe: ambient, sky, mist, specular, Fresnel, mirror", "[east
                                         "2 w 1  0 0 0  1 ;"));
     expect(centre(fog), 0.125 + 0.4 * 0.875, 0.125 + 0.2 * 0.875, 0.125 + 0.8 * 0.875);
   }
+  SECTION("mist counts the air only, not the inside of a clear body") {
+    // Eye at z 10, a slab of ior 1 from z 0.5 to -0.5, a constant white
+    // wall at z -5: 9.5 + 4.5 = 14 of air, half 7: 1/4 (1 inside the slab
+    // would make it 2^(-15/7)). Transparency 0 (no absorption) and 1e6.
+    for (const char* transparency : {"0", "1000000"}) {
+      INFO("transparency " << transparency);
+      const std::string colors = std::string("g 0 0 0  1 1 1  1 1 1  1 ") + transparency +
+                                 "  0  0 0 1 ;  w 0 0 0  0 0 0  0 0 0  1 1  0  5 1 1 1  1 1 1  0 ;";
+      const auto im = render(probe_scene("condition 4 0 0.00001 0 ;\nsky 0 0 0 ;\nenv 0 0 0 ;\nmist 7 0 ;\n", colors,
+                                         "16 g 1  0 0 0  5 5 0.5 ;  1 w 1  0 0 -5  0 0 1 ;"));
+      expect(centre(im), 0.25, 0.25, 0.25);
+    }
+  }
   SECTION("Blinn (model 0) with light and eye on the axis: intensity x 1^n, white") {
     const auto im = render(probe_scene(std::string(kBase) + "env 0 0 0 ;\ne_light [ 0 0 1  1 1 1  0 1 ; ]\n",
                                        "s 0.2 0.3 0.1  0 0 0  0 0 0  1 1  0  0 0.35 30 ;", "2 s 1  0 0 0  1 ;"));
