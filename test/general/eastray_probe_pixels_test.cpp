@@ -249,6 +249,22 @@ TEST_CASE("eastray probe: display, condition, anti and shadow statements", "[eas
       }
     CHECK(shadowed > 10);
   }
+  SECTION("a transparent ball's shadow: the light times transmit at each of its two surfaces") {
+    const std::string colors = std::string(kMatte) + "  g 0 0 0  0 0 0  0.5 0.8 0.9  1 0  0  0 0 1 ;";
+    const std::string balls = "1 m 1  0 -1 0  0 1 0 ;  2 g 1  0 0.5 0  0.8 ;";
+    const auto on = render(probe_scene(lit + "shadow 1 ;\n", colors, balls, cam));
+    const auto off = render(probe_scene(lit + "shadow 0 ;\n", colors, balls, cam));
+    int shadowed = 0;
+    for (int y = 0; y < 31; ++y)
+      for (int x = 0; x < 41; ++x) {
+        const Rgb a = px(on, x, y), b = px(off, x, y);
+        if (a.r == b.r && a.g == b.g && a.b == b.b) continue;
+        ++shadowed;
+        INFO("pixel " << x << " " << y);
+        expect(a, 0.6 * (0.2 + 0.25), 0.7 * (0.2 + 0.64), 0.3 * (0.2 + 0.81));
+      }
+    CHECK(shadowed > 10);
+  }
   SECTION("display window outside the image: nothing computed, a black image (line 78)") {
     for (const char* d : {"display 41 31 0 0 41 30 1 1 1 ;\n", "display 41 31 5 0 4 30 1 1 1 ;\n",
                           "display 41 31 0 -1 40 30 1 1 1 ;\n"}) {
