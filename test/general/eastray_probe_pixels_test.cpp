@@ -137,6 +137,17 @@ TEST_CASE("eastray probe: ambient, sky, mist, specular, Fresnel, mirror", "[east
                                        "s 0.2 0.3 0.1  0 0 0  0 0 0  1 1  0  0 0.35 30 ;", "2 s 1  0 0 0  1 ;"));
     expect(centre(im), 0.2 + 0.35, 0.3 + 0.35, 0.1 + 0.35);
   }
+  SECTION("Blinn-Gaussian (model 1) at h = n: D = G = 1, F = the Fresnel constant, n.v = 1") {
+    const auto im = render(probe_scene(std::string(kBase) + "env 0 0 0 ;\ne_light [ 0 0 1  1 1 1  0 1 ; ]\n",
+                                       "s 0.2 0.2 0.2  0 0 0  0 0 0  1 1  0  1 0.5 0.4 0.3  8 0.6 ;", "2 s 1  0 0 0  1 ;"));
+    expect(centre(im), 0.2 + 0.5 * 0.6, 0.2 + 0.4 * 0.6, 0.2 + 0.3 * 0.6);
+  }
+  SECTION("Cook-Torrance (model 4) at h = n: F = rgb, Beckmann D = spread^2 / pi, G = 1, / 4") {
+    const auto im = render(probe_scene(std::string(kBase) + "env 0 0 0 ;\ne_light [ 0 0 1  1 1 1  0 1 ; ]\n",
+                                       "s 0.2 0.2 0.2  0 0 0  0 0 0  1 1  0  4 0.5 0.3 0.2  0.5 1 2 ;", "2 s 1  0 0 0  1 ;"));
+    const double k = (0.5 * 1 + 0.5 * 4) / kPi / 4;
+    expect(centre(im), 0.2 + 0.5 * k, 0.2 + 0.3 * k, 0.2 + 0.2 * k);
+  }
   SECTION("constant shading (model 5): color1 at the centre whatever the light") {
     const auto im = render(probe_scene(std::string(kBase) + "env 0 0 0 ;\n",
                                        "c 0 0 0  0 0 0  0 0 0  1 1  0  5 0.9 0.5 0.1  0.1 0.2 0.3  2 ;", "2 c 1  0 0 0  1 ;"));
@@ -340,4 +351,51 @@ TEST_CASE("eastray probe: the e_light's disc seen in the sky (back_mode 0)", "[e
     INFO("column " << col << " angle " << a);
     expect(px(im, col, 15), 0.1 + 0.5 * k, 0.1 + 0.4 * k, 0.1 + 0.3 * k);
   }
+}
+
+TEST_CASE("eastray probe: every pixel of a lit sphere by hand (camera, normals, Lambert, Blinn)", "[eastray][eprobe]") {
+  // The camera of docs/eastray.md: pixel (x, y) looks along
+  // forward + sx right + sy up, sx = (2(x+1/2)/W - 1) tan f,
+  // sy = (1 - 2(y+1/2)/H) tan f H/W; a sphere of radius 2 at the origin,
+  // an e_light from the upper right front, Blinn n = 12.
+  const int w = 41, h = 31;
+  const double f = 20 * kPi / 180, tv = std::tan(f) * h / w;
+  const Vec3 eye{0, 0, 10}, L0{1, 2, 2};
+  const double ln = std::sqrt(L0[0] * L0[0] + L0[1] * L0[1] + L0[2] * L0[2]);
+  const Vec3 L{L0[0] / ln, L0[1] / ln, L0[2] / ln};
+  const double d[3] = {0.6, 0.7, 0.3}, env = 0.1, spec = 0.3, shin = 12;
+  const auto im = render(probe_scene(std::string(kBase) + "env 0.1 0.1 0.1 ;\ne_light [ 1 2 2  1 1 1  0 1 ; ]\n",
+                                     "m 0.6 0.7 0.3  0 0 0  0 0 0  1 1  0  0 0.3 12 ;", "2 m 1  0 0 0  2 ;"));
+  int hits = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      Vec3 dir{(2 * (x + 0.5) / w - 1) * std::tan(f), (1 - 2 * (y + 0.5) / h) * tv, -1};
+      const double dl = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      for (double& c : dir) c /= dl;
+      // |eye + t dir|^2 = 4
+      const double b = eye[2] * dir[2], cc = 100 - 4, disc = b * b - cc;
+      const Rgb got = px(im, x, y);
+      INFO("pixel " << x << " " << y << " got " << got.r << " " << got.g << " " << got.b);
+      if (disc < 0.05) {  // clear misses only; the rim is left to rounding
+        if (disc < -0.05) CHECK(got.r + got.g + got.b == 0);
+        continue;
+      }
+      const double t = -b - std::sqrt(disc);
+      const Vec3 p{eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]};
+      const Vec3 n{p[0] / 2, p[1] / 2, p[2] / 2};
+      const double ndl = n[0] * L[0] + n[1] * L[1] + n[2] * L[2];
+      Vec3 hv{L[0] - dir[0], L[1] - dir[1], L[2] - dir[2]};
+      const double hl = std::sqrt(hv[0] * hv[0] + hv[1] * hv[1] + hv[2] * hv[2]);
+      const double ndh = (n[0] * hv[0] + n[1] * hv[1] + n[2] * hv[2]) / hl;
+      const double lit = ndl > 0 ? 1 : 0;
+      const double s = lit * spec * std::pow(std::max(0.0, ndh), shin);
+      const int want[3] = {int(std::min(255.0, (d[0] * (env + lit * ndl) + s) * 255)),
+                           int(std::min(255.0, (d[1] * (env + lit * ndl) + s) * 255)),
+                           int(std::min(255.0, (d[2] * (env + lit * ndl) + s) * 255))};
+      CHECK(std::abs(got.r - want[0]) <= 1);
+      CHECK(std::abs(got.g - want[1]) <= 1);
+      CHECK(std::abs(got.b - want[2]) <= 1);
+      ++hits;
+    }
+  CHECK(hits > 300);
 }
