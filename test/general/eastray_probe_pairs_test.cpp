@@ -384,6 +384,16 @@ TEST_CASE("eastray probe: lights at their limits; object lights; the n flag", "[
     same_image(scene("p_light [ -1 4 2  1 1 1  6 r 0.01 ; ]\n", objs), scene("shadow 0 ;\np_light [ -1 4 2  1 1 1  6 ; ]\n", objs), 0);
     same_image(scene("p_light [ -1 4 2  1 1 1  6 r -1 ; ]\n", objs), scene("p_light [ -1 4 2  1 1 1  6 ; ]\n", objs), 0);
   }
+  SECTION("r dist is measured to the shaded point (C3): nearer points get shadows, farther ones none") {
+    // Light 4 above the ball's centre: the ball's top is 3 from it, the
+    // box at least 4.3, the floor at least 5.5.
+    const std::string far_off = "shadow 0 ;\np_light [ 0 4.3 0  1 1 1  0 ; ]\n";
+    same_image(scene("p_light [ 0 4.3 0  1 1 1  0 r 4 ; ]\n", objs), scene(far_off, objs), 0);
+    same_image(scene("s_light [ 0 4.3 0  0 0 0  1 1 1  1 0 r 4 ; ]\n", objs),
+               scene("shadow 0 ;\ns_light [ 0 4.3 0  0 0 0  1 1 1  1 0 ; ]\n", objs), 0);
+    const EastrayImage near = render(scene("p_light [ 0 4.3 0  1 1 1  0 r 6 ; ]\n", objs));
+    CHECK(differing(near, render(scene(far_off, objs))) > 20);  // the floor's shadows
+  }
   SECTION("objects that all carry n = shadow 0") {
     same_image(scene("e_light [ -1 2 1  1 1 1  0 1 ; ]\n", "2 red 1  0 0.3 0  0.7 n ;  16 blue 1  1.2 -0.9 0.6  0.3 0.6 0.3 n ;"),
                scene("shadow 0 ;\ne_light [ -1 2 1  1 1 1  0 1 ; ]\n", objs), 0);
