@@ -148,6 +148,13 @@ std::vector<Case> cases() {
        }() + "zz ; ]\n",
        "long-line.ray:7:2100007:", "undefined part 'zz'"},
   };
+  // Parts calling the next part twice, 30 deep: 2^30 placements.
+  std::string tree = h + "obj [ p0 ; ]\n";
+  for (int i = 0; i < 30; ++i)
+    tree += "obj p" + std::to_string(i) + " [ p" + std::to_string(i + 1) + " ; :mx 0.001 p" + std::to_string(i + 1) + " ; ]\n";
+  c.push_back({"part-tree-of-spheres", tree + "obj p30 [ 2 grey 1  0 0 0  0.1 ; ]\n", "part-tree-of-spheres.ray:38:",
+               "too many objects for the memory"});
+  c.push_back({"part-tree-of-nothing", tree + "obj p30 [ ]\n", "part-tree-of-nothing.ray:", "too many part calls placed"});
   // Bytes 0x80-0xff and controls, deterministic.
   std::string garbage;
   uint32_t x = 12345;
