@@ -228,6 +228,37 @@ TEST_CASE("eastray probe: host-send refuses invalid inputs before sending, over 
   }
 }
 
+// The files this helper added to test/general/eastray_bad (which the
+// firmware tests also send to the board as they are): each names its
+// expected message in its header comment.
+TEST_CASE("eastray probe: the added invalid scene files, through minrt and host-send", "[eastray][eprobe]") {
+  const std::string dir = EASTRAY_BAD_DIR;
+  const std::string out_dir = temp_dir();
+  for (const char* n : {"sign-not-one", "ior-zero-glass", "range-kind-polygon", "number-too-long"}) {
+    INFO(n);
+    const std::string file = std::string(n) + ".ray";
+    const std::string text = minrt::test::read_file(dir + "/" + file);
+    const std::size_t e = text.find("expect: ");
+    REQUIRE(e != std::string::npos);
+    const std::string expect = file + ":" + text.substr(e + 8, text.find(" */", e) - e - 8);
+    const std::string out = out_dir + "/" + n + ".png";
+    const Run r = run(std::string(MINRT_BIN) + " -o " + out + " " + file, dir);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind(expect, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(exists(out));
+    for (const char* protocol : {"raw", "course", "framed"}) {
+      INFO(protocol);
+      const Run s = run(std::string(MINRT_SEND_BIN) + " --sim --protocol " + protocol + " " + file + " -o " + out, dir);
+      INFO(s.err);
+      CHECK(s.status != 0);
+      CHECK(s.err.find("scene rejected before sending: " + expect) != std::string::npos);
+      CHECK_FALSE(exists(out));
+    }
+  }
+}
+
 TEST_CASE("eastray probe: macros that double at every level stop with an error", "[eastray][eprobe]") {
   // M0 -> M1 M1 -> ... : 2^30 copies of "1" if nothing stopped it.
   std::string text = kHead;
