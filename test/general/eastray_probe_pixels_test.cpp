@@ -218,6 +218,18 @@ TEST_CASE("eastray probe: the camera's FOV is the horizontal half angle", "[east
       expect(px(im, 40, 30), 0, 0, 1);
     }
   }
+  SECTION("dot aspect 2: dots twice as tall, so the vertical field is twice the tangent") {
+    const double tv = std::tan(25 * kPi / 180) * 31 / 41 * 2;
+    const double y_edge = 10 * (1 - 2 * 1.0 / 31) * tv;  // the border of rows 0 and 1
+    const std::string colors =
+        "b 0 0 0  0 0 0  0 0 0  1 1  0  5 0 0 1  0 0 1  0 ;  g 0 0 0  0 0 0  0 0 0  1 1  0  5 0 1 0  0 1 0  0 ;";
+    const auto im = render("display 41 31 0 0 40 30 1 1 2 ;\ncamera 0 0 10  0 0 0  0 10 0  25 0 ;\n" + std::string(kBase) +
+                           "env 0 0 0 ;\ncolor [ " + colors + " ]\nobj [ { 1 g 1  0 0 0  0 0 1 ;  1 g 1  0 " + num(y_edge) +
+                           " 0  0 -1 0 ; }  { 1 b 1  0 0 0  0 0 1 ;  1 b 1  0 " + num(y_edge) + " 0  0 1 0 ; } ]\n");
+    expect(px(im, 20, 0), 0, 1, 0);
+    expect(px(im, 20, 1), 0, 0, 1);
+    expect(px(im, 20, 30), 0, 0, 1);
+  }
   SECTION("symmetric: the right edge with the wall mirrored") {
     const double t = std::tan(25 * kPi / 180);
     const double x_edge = 10 * (1 - 2 * 1.0 / 41) * t;  // between columns 39 and 40
