@@ -313,13 +313,11 @@ TEST_CASE("eastray probe: display, condition, anti and shadow statements", "[eas
           REQUIRE(c.r + c.g + c.b == 0);
           continue;
         }
-        // block origin, traced at the block's centre pixel... equal to its block's first pixel
+        // the block's first pixel is traced (at its centre) and fills the block
         const int bx = 2 + (x - 2) / 3 * 3, by = 1 + (y - 1) / 4 * 4;
-        const Rgb o = px(im, bx, by);
+        const Rgb o = px(full, bx, by);
         REQUIRE((c.r == o.r && c.g == o.g && c.b == o.b));
       }
-    // a block differs from the full picture's pixel at its corner only near edges
-    CHECK(differing(im, full) < 41 * 31 / 2);
   }
   SECTION("anti on a picture with no edges changes nothing; on edges only near them") {
     const std::string flat_colors = "c 0 0 0  0 0 0  0 0 0  1 1  0  5 0.3 0.6 0.9  0.3 0.6 0.9  0 ;";
