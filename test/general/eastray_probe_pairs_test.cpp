@@ -343,7 +343,7 @@ TEST_CASE("eastray probe: polygon meshes written two ways", "[eastray][eprobe]")
   }
 }
 
-TEST_CASE("eastray probe: lights at their limits; object lights; the n flag", "[eastray][eprobe]") {
+TEST_CASE("eastray probe: lights at their limits, object lights and the n flag", "[eastray][eprobe]") {
   const std::string objs = "2 red 1  0 0.3 0  0.7 ;  16 blue 1  1.2 -0.9 0.6  0.3 0.6 0.3 ;";
   auto scene = [&](const std::string& lights, const std::string& objects) {
     return std::string("display 81 61 0 0 80 60 1 1 1 ;\ncondition 4 0.01 0.00001 0 ;\n"

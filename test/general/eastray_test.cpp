@@ -396,7 +396,7 @@ TEST_CASE("eastray: equivalent geometry gives the same image", "[eastray]") {
   }
 }
 
-TEST_CASE("eastray: #include = the inlined text; <file> from EASTRAY", "[eastray]") {
+TEST_CASE("eastray: #include = the inlined text, <file> from EASTRAY", "[eastray]") {
   const std::string dir = temp_dir();
   write(dir + "/sub.h", "#define R 0.8\n2 red 1  0 1 0  R ;\n");
   mkdir((dir + "/sys").c_str(), 0755);

@@ -169,7 +169,7 @@ TEST_CASE("raw P6 with the trailer: a flipped, dropped or doubled byte is caught
   CHECK(o.image == image);
 }
 
-TEST_CASE("raw: --check refuses an image without the trailer; the default takes it unchecked", "[raw][crc]") {
+TEST_CASE("raw: --check refuses an image without the trailer, the default takes it unchecked", "[raw][crc]") {
   const std::string image = p3_with_94_and_16();
   const Outcome required = receive_p3(image, RawCheck::kRequire);
   CHECK(required.failed);

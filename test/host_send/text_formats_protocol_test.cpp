@@ -268,7 +268,7 @@ TEST_CASE("framed mode delivers CS418 and Jaworski images exactly over a damaged
   }
 }
 
-TEST_CASE("RowFramer with 4 bytes a pixel: RGBA rows, a store attached late, re-sent rows; the host's PNG from them",
+TEST_CASE("RowFramer with 4 bytes a pixel: RGBA rows, a store attached late, re-sent rows, the host's PNG from them",
           "[framed]") {
   std::string wire;
   auto append = [](void* ctx, const uint8_t* d, size_t n) {
