@@ -580,3 +580,37 @@ TEST_CASE("eastray probe: finite kinds under non-uniform moves = AND of moved ki
                                   plane({0, 0, -0.3}, {0, 0, -1})})));
   }
 }
+
+TEST_CASE("eastray probe: the board draws pair scenes as the host's float model does", "[eastray][eprobe]") {
+  // A sample of the scenes above, sent with host-send to the simulated
+  // board: its PNG is the bytes minrt writes in float with the portable shims.
+  const Chain ch{{{":my", 0.5}, {":rx", -60}, {":sx", 1.4}, {":ry", 35}, {":sz", 0.6}, {":rz", 20}}};
+  const std::string glass = "color [ glass 0.05 0.05 0.05  1 1 1  0.9 0.95 1  1.5 3  0  0 0.5 30 ; ]\ncondition 6 0 0.00001 1 ;\n";
+  const std::vector<std::string> scenes = {
+      with_floor("0 red 1  " + axial({0.3, 0.9, -0.2}, {1, 2, 0.5}, 1, -1.36, 0.36 * 0.1225).kind0() + " ;"),
+      with_floor("[ " + ch.map().mtx() + " 3 red 1  0.4 0.2 0.1  0.9 0.5 0.35 ; ]"),
+      with_floor("[ " + ch.text() + " 13 red 1  0 0 0  0 0 1  0.6 0.3 0.8 ; ]"),
+      with_floor("{ 2 red 1  0 0.3 0  2 ; [ ( 7  0 0.3 0  1 0 0  0.2 0.7 ; ( 2  -0.5 0.3 0  0.45 ; 2 red 1  -0.5 0.3 0  0.4 ; )"
+                 " 16 blue 1  0.5 0.3 0  0.3 0.3 0.3 ; ) ] }"),
+      with_floor("{ 16 glass 1  0 0.3 0.5  0.8 0.8 0.5 ;  2 glass -1  0.2 0.5 0.6  0.5 ; }  2 blue 1  1 0 -2  0.6 ;", glass),
+      with_floor("[ :my -1 :ry 25 t ; ] [ :mx 1.3 :rz 90 -2  0 1 1  0.6 0.5 0.4  4 ; t ; ]") +
+          "obj t [ 16 red 1  0 0.55 0  0.6 0.05 0.4 ; [ :mx 0.5 l ; ] [ :mx -0.5 l ; ] ]\n"
+          "obj l [ 15 blue 1  0 0 0  0 1 0  0.08 0.5 ; ]\n",
+      with_floor("20 :mx 0.3 :ry 35 :sy 0.8 red 1 < p 1 -0.7 -0.2 -0.7  p 2 0.7 -0.2 -0.7  p 3 0.7 -0.2 0.7  p 4 -0.7 -0.2 0.7"
+                 "  p 9 0 1.2 0  P 4 3 9 ; s  P 3 2 9 ; s c blue  P 2 1 9 ;  P 1 4 9 ;  P 1 2 3 4 ; > ;"),
+  };
+  const std::string dir = temp_dir();
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    INFO("scene " << i << ":\n" << scenes[i]);
+    const std::string name = "s" + std::to_string(i);
+    write(dir + "/" + name + ".ray", scenes[i]);
+    const Run host = run(std::string(MINRT_BIN) + " -q --precision float --shims portable -o " + name + "-host.png " + name + ".ray", dir);
+    const Run board = run(std::string(MINRT_SEND_BIN) + " --sim " + name + ".ray -o " + name + "-board.png", dir);
+    INFO(host.err << board.err);
+    REQUIRE(host.status == 0);
+    REQUIRE(board.status == 0);
+    const std::string a = minrt::test::read_file(dir + "/" + name + "-host.png");
+    CHECK(a.size() > 300);  // a whole PNG
+    CHECK(a == minrt::test::read_file(dir + "/" + name + "-board.png"));
+  }
+}
