@@ -112,24 +112,34 @@ inline auto Tracer<M>::setup_forward_culling() -> void {
     }
     row.fwd_all = all;
   }
-  // A row left without networks is dropped with its range test, whose only
-  // effect would be on solver_dist_, which nothing reads afterwards.
-  for (int o = 0; o < 8; ++o) {
-    const uint32_t code = ((o & 1) != 0 ? 2u : 1u) | ((o & 2) != 0 ? 8u : 4u) | ((o & 4) != 0 ? 32u : 16u);
-    LiveRow* lr = live_rows_ + o * (n_or_rows_ + 1);
-    ObjectList* ln = live_nets_ + o * live_nets_stride_;
-    for (int r = 0; r < n_or_rows_; ++r) {
-      const OrRow& row = or_rows_[r];
-      if ((row.fwd_all & code) != 0) continue;
-      ObjectList* first = ln;
-      for (int k = 0; row.nets[k] != nullptr; ++k)
-        if ((row.fwd[k] & code) == 0) *ln++ = row.nets[k];
-      if (ln == first) continue;
-      *ln++ = nullptr;
-      *lr++ = LiveRow{row.range, first};
+  live_built_ = 0;
+}
+
+// A network whose only solved member would be a box behind the start is
+// dropped (that member records nothing), and a row left without networks
+// with its range test, whose only effect would be on solver_dist_, which
+// nothing reads afterwards.
+template <MathPolicy M>
+inline auto Tracer<M>::build_octant(int o) -> void {
+  const uint32_t code = ((o & 1) != 0 ? 2u : 1u) | ((o & 2) != 0 ? 8u : 4u) | ((o & 4) != 0 ? 32u : 16u);
+  LiveRow* lr = live_rows_ + o * (n_or_rows_ + 1);
+  LiveNet* ln = live_nets_ + o * live_nets_stride_;
+  for (int r = 0; r < n_or_rows_; ++r) {
+    const OrRow& row = or_rows_[r];
+    if ((row.fwd_all & code) != 0) continue;
+    LiveNet* first = ln;
+    for (int k = 0; row.nets[k] != nullptr; ++k) {
+      if ((row.fwd[k] & code) != 0) continue;
+      int solved = row.lengths[k];
+      if (solved > 0 && (row.nets[k][solved - 1]->ahead & code) == 0) --solved;
+      if (solved > 0) *ln++ = LiveNet{row.nets[k], solved};
     }
-    *lr = LiveRow{nullptr, nullptr};
+    if (ln == first) continue;
+    *ln++ = LiveNet{nullptr, 0};
+    *lr++ = LiveRow{row.range, first};
   }
+  *lr = LiveRow{nullptr, nullptr};
+  live_built_ |= 1u << o;
 }
 
 template <MathPolicy M>

@@ -33,7 +33,12 @@ inline auto Tracer<M>::build_networks(const Scene<R>& scene) -> void {
     OrRow& row = or_rows_[r];
     row.range = in[0] == limits::kNoRangePrimitive ? nullptr : &objects_[in[0]];
     int k = 1;
-    for (; in[k] != -1; ++k) row.nets[k - 1] = net_objects_[in[k]];
+    for (; in[k] != -1; ++k) {
+      row.nets[k - 1] = net_objects_[in[k]];
+      int n = 0;
+      while (row.nets[k - 1][n] != nullptr) ++n;
+      row.lengths[k - 1] = n;
+    }
     row.nets[k - 1] = nullptr;
   }
 }
@@ -114,12 +119,47 @@ inline auto Tracer<M>::setup_shadow_culling() -> void {
           if (!(lim.limit[k] <= x)) lim.limit[k] = x;  // the lowest, NaN replaced
         }
       }
+      if (row.nets[n][0]->form == kFormPlane && row.nets[n][1] == nullptr) plane_shadow_limit(*row.nets[n][0], lim);
       for (int k = 0; k < 3; ++k)
         if (all.limit[k] < lim.limit[k] || lim.limit[k] != lim.limit[k]) all.limit[k] = lim.limit[k];
       *out++ = ShadowNet{lim, row.nets[n]};
     }
     srow.nets_end = out;
     srow.all = all;
+  }
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::plane_shadow_limit(const Object& m, ShadowLimits& lim) -> void {
+  const R* c = consts_of(light_dirvec_, m);
+  if (!(c[0] < R(0))) {
+    // solver_fast never meets the plane along the light: no shadow at all.
+    lim.limit[0] = -R(__builtin_inf());
+    return;
+  }
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (m.abc[k] == R(0)) continue;
+    if (axis >= 0) return;  // not axis-aligned
+    axis = k;
+  }
+  if (axis < 0) return;
+  // The other terms of c[1] b0 + c[2] b1 + c[3] b2 are signed zeros (or NaN,
+  // which casts no shadow either), so the distance is fl(ck fl(p_k - center_k)),
+  // monotonic in p_k: along the flipped axis it must not decrease.
+  const R ck = c[1 + axis];
+  const bool flipped = toward_light_flip_[axis];
+  if (!(flipped ? ck < R(0) : ck > R(0))) return;
+  const R center = m.center[axis];
+  const R edge = center + R(-0.2) / ck;
+  R x = flipped ? -edge : edge;
+  for (int tries = 0; tries < 64; ++tries) {
+    const R dist = ck * ((flipped ? -x : x) - center);
+    if (!(dist < R(-0.2))) {
+      if (!(lim.limit[axis] <= x)) lim.limit[axis] = x;
+      return;
+    }
+    x = x + (fabs(x) + fabs(center) + R(1)) * R(1.0e-9);
   }
 }
 
@@ -192,14 +232,28 @@ MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> 
 }
 
 template <MathPolicy M>
+MINRT_INLINE auto Tracer<M>::trace_live_network(const LiveNet& live, const DirVec& dv) -> void {
+  const ObjectList net = live.net;
+  for (int i = 0; i < live.solved; ++i) {
+    const Object& m = *net[i];
+    const int t0 = solver_fast2<true>(m, dv);
+    if (t0 != 0)
+      record_hit(net, m, t0, dv.v, startp_fast_);
+    else if (!m.inverted)
+      break;
+  }
+}
+
+template <MathPolicy M>
 template <bool kCull>
 MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
   tmin_ = R(1000000000.0);
   if (kCull && dv.octant >= 0) {
     // The rows and networks the masks leave for this octant, in order.
+    if ((live_built_ & (1u << dv.octant)) == 0) build_octant(dv.octant);
     for (const LiveRow* lr = live_rows_ + dv.octant * (n_or_rows_ + 1); lr->nets != nullptr; ++lr) {
       if (lr->range != nullptr && !(solver_fast2(*lr->range, dv) != 0 && solver_dist_ < tmin_)) continue;
-      for (const ObjectList* a = lr->nets; *a != nullptr; ++a) trace_network<true>(*a, dv);
+      for (const LiveNet* a = lr->nets; a->net != nullptr; ++a) trace_live_network(*a, dv);
     }
     return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
   }

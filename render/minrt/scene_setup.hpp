@@ -25,7 +25,7 @@ inline auto Tracer<M>::init(const Scene<R>& scene, int width, int height, Arena&
   const int or_entries = or_entries_total(scene);
   live_nets_stride_ = or_entries + n_or_rows_;
   live_rows_ = arena.alloc_zeroed<LiveRow>(8 * static_cast<size_t>(n_or_rows_ + 1));
-  live_nets_ = arena.alloc_zeroed<ObjectList>(8 * static_cast<size_t>(live_nets_stride_));
+  live_nets_ = arena.alloc_zeroed<LiveNet>(8 * static_cast<size_t>(live_nets_stride_));
   if (live_rows_ == nullptr || live_nets_ == nullptr) return false;
   shadow_rows_ = arena.alloc_zeroed<ShadowRow>(static_cast<size_t>(n_or_rows_));
   shadow_nets_ = arena.alloc_zeroed<ShadowNet>(static_cast<size_t>(or_entries));

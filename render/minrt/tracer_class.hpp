@@ -82,7 +82,7 @@ class Tracer : private TracerState<M> {
   // The per-octant lists of live rows and networks (setup_forward_culling).
   static constexpr size_t live_list_bytes(int rows, int nets) {
     return Arena::footprint<typename S::LiveRow>(8 * static_cast<size_t>(rows + 1)) +
-           Arena::footprint<typename S::ObjectList>(8 * static_cast<size_t>(nets + rows));
+           Arena::footprint<typename S::LiveNet>(8 * static_cast<size_t>(nets + rows));
   }
 
   // The shadow test's rows and networks (setup_shadow_culling).
@@ -146,6 +146,8 @@ class Tracer : private TracerState<M> {
   using typename S::ShadowRow;
   using typename S::ShadowNet;
   using typename S::LiveRow;
+  using typename S::LiveNet;
+  using S::live_built_;
   using S::dirvecs_;
   using S::light_dirvec_;
   using S::reflections_;
@@ -292,10 +294,14 @@ class Tracer : private TracerState<M> {
 
   // Masks for forward culling from the point given to setup_startp: per
   // network in each OR row, and for each row the bits all its networks
-  // share (any of them culls the whole row). Then, for each octant of
-  // directions, the rows and networks those masks leave: a ray with no zero
-  // component walks that list instead of testing every mask.
+  // share (any of them culls the whole row). The octants' lists are built
+  // when a ray first needs them (build_octant).
   void setup_forward_culling();
+
+  // For octant o of directions, the rows and networks those masks leave: a
+  // ray with no zero component walks that list instead of testing every
+  // mask.
+  void build_octant(int o);
 
   // Forward culling. A ray from the start point along v reaches points q
   // with fl(q_k - center_k) >= start[k] when v_k >= 0 (rounding is
@@ -332,6 +338,12 @@ class Tracer : private TracerState<M> {
   // itself covers everything above it. NaN when none is found.
   static R shadow_limit(R center, R slab, bool flipped);
 
+  // A network of one axis-aligned plane casts a shadow only when the
+  // plane's distance along the light is below -0.2, which is monotonic in
+  // one coordinate of the start: that coordinate's limit goes into `lim`
+  // (every axis culls when the plane never meets the light direction).
+  void plane_shadow_limit(const Object& m, ShadowLimits& lim);
+
   // --- nearest intersection -----------------------------------------------
 
   MINRT_INLINE void record_hit(ObjectList and_net, const Object& m, int t0, const R* v,
@@ -342,6 +354,7 @@ class Tracer : private TracerState<M> {
   // box masks of setup_startp<true> are valid).
   template <bool kCull>
   MINRT_INLINE void trace_network(ObjectList net, const DirVec& dv);
+  MINRT_INLINE void trace_live_network(const LiveNet& live, const DirVec& dv);
 
   // kCull: skip the networks forward culling rules out (the masks must be
   // set up for the current start point).

@@ -91,6 +91,7 @@ struct TracerState {
   struct OrRow {
     const Object* range;
     ObjectList nets[limits::kMaxOrNetworkLength + 1];
+    int32_t lengths[limits::kMaxOrNetworkLength];  // members of each network
     uint32_t fwd[limits::kMaxOrNetworkLength];  // see setup_forward_culling
     uint32_t fwd_all;
   };
@@ -127,13 +128,21 @@ struct TracerState {
   // For the current diffuse start point and each octant of directions, the
   // OR rows with the AND networks forward culling leaves, in order (see
   // setup_forward_culling); arena tables, live_stride_ entries an octant.
+  // A network and how many of its members a ray of the octant solves: all
+  // of them, or all but a last box the octant's rays meet only behind the
+  // start (see Object::ahead).
+  struct LiveNet {
+    ObjectList net;
+    int32_t solved;
+  };
   struct LiveRow {
     const Object* range;
-    const ObjectList* nets;  // null-terminated; null for the end of the list
+    const LiveNet* nets;  // ends with a null net; null for the end of the list
   };
   LiveRow* live_rows_ = nullptr;
-  ObjectList* live_nets_ = nullptr;
+  LiveNet* live_nets_ = nullptr;
   int live_nets_stride_ = 0;
+  uint32_t live_built_ = 0;  // bit o: octant o's list is built for this start
 
   // Arena tables of setup_shadow_culling.
   ShadowRow* shadow_rows_ = nullptr;
