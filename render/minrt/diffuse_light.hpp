@@ -52,13 +52,15 @@ MINRT_INLINE auto Tracer<M>::trace_diffuse_ray(const DirVec& dv, R energy) -> vo
   if (!judge_intersection_fast<true>(dv)) return;
   const Object& obj = objects_[intersected_object_id_];
   get_nvector(obj, dv.v);
-  utexture(obj, intersection_point_);
   const R br = -dot(nvector_, light_);
   const R bright = br > R(0) ? br : R(0.0);
   const R scale = energy * bright * obj.diffuse;
   // Facing away from the light the scale is +-0, and adding +-0 * colour
   // changes nothing (diffuse_ray_ is a sum started at +0, so never -0)
   // unless the colour is not finite; only then does the shadow test matter.
+  // Nothing reads the texture colour before the next utexture otherwise.
+  if (scale == R(0) && obj.finite_texture) return;
+  utexture(obj, intersection_point_);
   if (scale == R(0) && finite(texture_color_[0]) && finite(texture_color_[1]) &&
       finite(texture_color_[2]))
     return;

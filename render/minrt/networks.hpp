@@ -96,6 +96,15 @@ template <MathPolicy M>
 inline auto Tracer<M>::setup_shadow_culling() -> void {
   const R nan = R(__builtin_nan(""));
   for (int k = 0; k < 3; ++k) toward_light_flip_[k] = light_[k] > R(0);
+  // A shadow point is fl(fl(light_k t) + p_k) with t <= fl(-0.2 + 0.01), so
+  // along a flipped axis it lies at least at fl(reach_k + x_k).
+  const R t_max = R(-0.2) + R(0.01);
+  R reach[3];
+  for (int k = 0; k < 3; ++k) {
+    const R r = light_[k] * t_max;
+    reach[k] = toward_light_flip_[k] ? -r : r;
+    if (!(reach[k] >= R(0)) || !finite(reach[k])) reach[k] = R(0);
+  }
   ShadowNet* out = shadow_nets_;
   n_shadow_rows_ = 0;
   for (int r = 0; r < n_or_rows_; ++r) {
@@ -115,7 +124,7 @@ inline auto Tracer<M>::setup_shadow_culling() -> void {
         const Object& m = **e;
         if (!m.slab_bounded) continue;
         for (int k = 0; k < 3; ++k) {
-          const R x = shadow_limit(m.center[k], m.slab[k], toward_light_flip_[k]);
+          const R x = reached_limit(shadow_limit(m.center[k], m.slab[k], toward_light_flip_[k]), reach[k]);
           if (!(lim.limit[k] <= x)) lim.limit[k] = x;  // the lowest, NaN replaced
         }
       }
@@ -161,6 +170,17 @@ inline auto Tracer<M>::plane_shadow_limit(const Object& m, ShadowLimits& lim) ->
     }
     x = x + (fabs(x) + fabs(center) + R(1)) * R(1.0e-9);
   }
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::reached_limit(R limit, R reach) -> R {
+  if (reach == R(0) || !finite(limit)) return limit;
+  R x = limit - reach;
+  for (int tries = 0; tries < 64; ++tries) {
+    if (reach + x >= limit) return x;
+    x = x + (fabs(x) + fabs(limit) + reach) * R(1.0e-6);
+  }
+  return limit;
 }
 
 template <MathPolicy M>

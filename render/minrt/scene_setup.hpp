@@ -109,6 +109,9 @@ inline auto Tracer<M>::load_objects(const Scene<R>& s) -> void {
     // original: the rotation is applied to every form, boxes and planes too.
     if (o.rotated != 0) rotate_quadratic_form(o.abc, o.rot);
     setup_slab(o);
+    o.finite_texture = o.texture != kTextureStripes && o.texture != kTextureRings &&
+                       o.texture != kTextureSpots && finite(o.color[0]) && finite(o.color[1]) &&
+                       finite(o.color[2]);
     o.ahead = ~0u;
     o.consts_offset = offset * static_cast<int>(sizeof(R));
     o.index = i;

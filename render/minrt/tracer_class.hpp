@@ -338,6 +338,11 @@ class Tracer : private TracerState<M> {
   // itself covers everything above it. NaN when none is found.
   static R shadow_limit(R center, R slab, bool flipped);
 
+  // The least x, as far as a coarse search finds, with fl(reach + x) >=
+  // limit: a start at x or above has every shadow point at `limit` or
+  // above (rounding is monotonic). `limit` itself when none is found.
+  static R reached_limit(R limit, R reach);
+
   // A network of one axis-aligned plane casts a shadow only when the
   // plane's distance along the light is below -0.2, which is monotonic in
   // one coordinate of the start: that coordinate's limit goes into `lim`

@@ -53,6 +53,9 @@ struct TracerState {
     // the fast solver can return may lie ahead of the current start point;
     // all bits for other forms (see setup_startp).
     uint32_t ahead;
+    // utexture gives a finite colour at any point: no texture, or the
+    // checker (0 or 255), over finite base colours.
+    bool finite_texture;
   };
   struct Reflection {
     int surface_id;
