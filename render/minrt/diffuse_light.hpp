@@ -70,8 +70,13 @@ MINRT_INLINE auto Tracer<M>::trace_diffuse_ray(const DirVec& dv, R energy) -> vo
 
 template <MathPolicy M>
 inline auto Tracer<M>::trace_diffuse_rays(const DirVec* group, const R* normal, const R* org) -> void {
-  setup_startp<true>(org);
-  setup_forward_culling();
+  // A point sampling all 300 directions comes here once for each group:
+  // its tables and octant lists stay valid from the first time.
+  if (!culled_start_valid_ || !same_bits(startp_fast_, org)) {
+    setup_startp<true>(org);
+    setup_forward_culling();
+    culled_start_valid_ = true;
+  }
   // Entries 2n and 2n+1 point in opposite directions.
   for (int i = kDirvecsPerGroup - 2; i >= 0; i -= 2) {
     const R p = dot(group[i].v, normal);

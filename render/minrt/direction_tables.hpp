@@ -64,6 +64,7 @@ template <MathPolicy M>
 template <bool kCull>
 inline auto Tracer<M>::setup_startp(const R* p) -> void {
   copy3(startp_fast_, p);
+  if (!kCull) culled_start_valid_ = false;
   for (int i = n_objects_ - 1; i >= 0; --i) {
     Object& m = objects_[i];
     R* s = m.start;

@@ -166,6 +166,7 @@ class Tracer : private TracerState<M> {
   using S::rgb_;
   using S::startp_;
   using S::startp_fast_;
+  using S::culled_start_valid_;
   using S::toward_light_flip_;
 
 
@@ -212,6 +213,19 @@ class Tracer : private TracerState<M> {
     d[2] = s[2];
   }
   static void zero3(R* d) { d[0] = d[1] = d[2] = R(0); }
+  // The same three numbers bit for bit (signed zeros and NaNs included).
+  static bool same_bits(const R* a, const R* b) {
+    using U = __UINT64_TYPE__;
+    using V = __UINT32_TYPE__;
+    for (int k = 0; k < 3; ++k) {
+      if constexpr (sizeof(R) == sizeof(U)) {
+        if (__builtin_bit_cast(U, a[k]) != __builtin_bit_cast(U, b[k])) return false;
+      } else {
+        if (__builtin_bit_cast(V, a[k]) != __builtin_bit_cast(V, b[k])) return false;
+      }
+    }
+    return true;
+  }
   static R dot(const R* v, const R* w) { return v[0] * w[0] + v[1] * w[1] + v[2] * w[2]; }
   static R dot(const R* v, R w0, R w1, R w2) { return v[0] * w0 + v[1] * w1 + v[2] * w2; }
   static void accum(R* d, R scale, const R* v) {

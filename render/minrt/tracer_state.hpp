@@ -171,6 +171,9 @@ struct TracerState {
   R rgb_[3] = {};
   R startp_[3] = {};
   R startp_fast_[3] = {};
+  // The culling tables of setup_startp<true> and the octant lists are those
+  // of startp_fast_ (setup_startp<false> leaves the masks stale).
+  bool culled_start_valid_ = false;
 
   bool toward_light_flip_[3] = {};
 };
