@@ -1070,7 +1070,7 @@ class Reader {
       advance();
     }
     if (no_shadow)
-      for (int32_t i = first_triangle; i < scene_.triangle_count; ++i) scene_.triangles[i].no_shadow = true;
+      for (int32_t i = first_triangle; i < scene_.triangle_count; ++i) scene_.faces[i].no_shadow = true;
     return end_statement("the polygon object");
   }
 
@@ -1134,15 +1134,17 @@ class Reader {
       if (scene_.triangle_count >= scene_.triangle_capacity) return fail_at(at, "too many polygons for the memory");
       Triangle<R>& t = scene_.triangles[scene_.triangle_count];
       t.p0 = scene_.vertices[idx[0]];
-      t.e1 = scene_.vertices[idx[i]] - t.p0;
-      t.e2 = scene_.vertices[idx[i + 1]] - t.p0;
-      const V n = cross(t.e1, t.e2);
+      t.p1 = scene_.vertices[idx[i]];
+      t.p2 = scene_.vertices[idx[i + 1]];
+      const V n = cross(t.p1 - t.p0, t.p2 - t.p0);
       if (dot(n, n) == R(0)) continue;  // a degenerate sliver hides nothing
-      t.n = mirrored ? -normalize<M>(n) : normalize<M>(n);
-      t.v[0] = idx[0], t.v[1] = idx[i], t.v[2] = idx[i + 1];
-      t.material = fmat;
-      t.smooth = smooth;
-      t.no_shadow = no_shadow;
+      t.normal = mirrored ? -normalize<M>(n) : normalize<M>(n);
+      t.material = static_cast<uint32_t>(fmat);
+      t.order = static_cast<uint32_t>(scene_.triangle_count);
+      MeshFace& f = scene_.faces[scene_.triangle_count];
+      f.vertex[0] = idx[0], f.vertex[1] = idx[i], f.vertex[2] = idx[i + 1];
+      f.smooth = smooth;
+      f.no_shadow = no_shadow;
       ++scene_.triangle_count;
     }
     return true;

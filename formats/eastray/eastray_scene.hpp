@@ -14,6 +14,7 @@
 #include "core/math/vec3.hpp"
 #include "formats/model/csg.hpp"
 #include "formats/model/quadric.hpp"
+#include "formats/model/scene.hpp"
 
 namespace minrt::eastray {
 
@@ -64,14 +65,11 @@ template <class R>
 using Primitive = model::Quadric<R>;
 using Node = model::CsgNode;
 
+// Polygon meshes are the general model's triangles (formats/model/scene.hpp),
+// with their mesh faces alongside.
 template <class R>
-struct Triangle {
-  Vec3<R> p0, e1, e2;  // p1 = p0 + e1, p2 = p0 + e2
-  Vec3<R> n;           // unit geometric normal (counter-clockwise = outward)
-  int32_t v[3];        // vertex indices (smooth normals)
-  int32_t material;
-  bool smooth, no_shadow;
-};
+using Triangle = model::Triangle<R>;
+using MeshFace = model::MeshFace;
 
 template <class R>
 struct Scene {
@@ -105,6 +103,7 @@ struct Scene {
   Node* nodes = nullptr;
   int32_t node_count = 0, node_capacity = 0;
   Triangle<R>* triangles = nullptr;
+  MeshFace* faces = nullptr;           // parallel to triangles
   int32_t triangle_count = 0, triangle_capacity = 0;
   Vec3<R>* vertices = nullptr;         // world positions of mesh vertices
   Vec3<R>* vertex_normals = nullptr;   // weighted sums of smooth faces' normals
@@ -148,7 +147,7 @@ struct Scene {
   static constexpr size_t bytes_for(const Capacities& c) {
     return Arena::footprint<Light<R>>(c.lights) + Arena::footprint<Material<R>>(c.materials) +
            Arena::footprint<Primitive<R>>(c.primitives) + Arena::footprint<Node>(c.nodes) +
-           Arena::footprint<Triangle<R>>(c.triangles) + 2 * Arena::footprint<Vec3<R>>(c.vertices) +
+           Arena::footprint<Triangle<R>>(c.triangles) + Arena::footprint<MeshFace>(c.triangles) + 2 * Arena::footprint<Vec3<R>>(c.vertices) +
            Arena::footprint<int32_t>(c.vertices);
   }
 
@@ -158,6 +157,7 @@ struct Scene {
     primitives = arena.alloc_zeroed<Primitive<R>>(static_cast<size_t>(c.primitives));
     nodes = arena.alloc_zeroed<Node>(static_cast<size_t>(c.nodes));
     triangles = arena.alloc_zeroed<Triangle<R>>(static_cast<size_t>(c.triangles));
+    faces = arena.alloc_zeroed<MeshFace>(static_cast<size_t>(c.triangles));
     vertices = arena.alloc_zeroed<Vec3<R>>(static_cast<size_t>(c.vertices));
     vertex_normals = arena.alloc_zeroed<Vec3<R>>(static_cast<size_t>(c.vertices));
     vertex_ids = arena.alloc_zeroed<int32_t>(static_cast<size_t>(c.vertices));
@@ -168,7 +168,7 @@ struct Scene {
     triangle_capacity = c.triangles;
     vertex_capacity = c.vertices;
     return lights != nullptr && materials != nullptr && primitives != nullptr && nodes != nullptr &&
-           triangles != nullptr && vertices != nullptr && vertex_normals != nullptr && vertex_ids != nullptr;
+           triangles != nullptr && faces != nullptr && vertices != nullptr && vertex_normals != nullptr && vertex_ids != nullptr;
   }
 };
 

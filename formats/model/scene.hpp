@@ -53,12 +53,24 @@ struct Vertex {
 
 // Precomputed for the barycentric test: n = (p1-p0)x(p2-p0), e1 and e2 such
 // that b1 = e1.(p-p0), b2 = e2.(p-p0). p1 and p2 are kept for bounding.
+// EASTRAY's meshes (Finish::kEastray) are tested by Moller-Trumbore on the
+// edges p1-p0 and p2-p0; their `normal` is the unit face normal, facing
+// out, and e1, e2, u and v are not used.
 template <class R>
 struct Triangle {
   Vec3<R> p0, normal, e1, e2, p1, p2;
   R u[3], v[3];
   uint32_t material;
   uint32_t order;
+};
+
+// A triangle's place in a mesh, parallel to the triangles (EASTRAY kind
+// 20): its corners' indices into the scene's vertex normals (used when
+// `smooth`), and whether it casts shadows.
+struct MeshFace {
+  int32_t vertex[3];
+  bool smooth;
+  bool no_shadow;
 };
 
 // kPoint: a bulb without falloff (miniRT).

@@ -32,8 +32,8 @@ bool build_triangle_bvh(Scene<typename M::real>& s, Arena& arena) {
                                                   const Triangle<R>& t = s.triangles[i];
                                                   box = general::Bounds<R>::empty();
                                                   box.grow(t.p0);
-                                                  box.grow(t.p0 + t.e1);
-                                                  box.grow(t.p0 + t.e2);
+                                                  box.grow(t.p1);
+                                                  box.grow(t.p2);
                                                   box = general::bvh_detail::padded(box);
                                                   ref = i;
                                                 });

@@ -180,31 +180,33 @@ class Tracer {
 
   void triangle(int32_t i, const V& o, const V& d, R t_min, R& t_max, Hit& hit, bool shadow) const {
     const Triangle<R>& tr = s_.triangles[i];
-    if (shadow && tr.no_shadow) return;
-    const V pv = cross(d, tr.e2);
-    const R det = dot(tr.e1, pv);
+    const MeshFace& face = s_.faces[i];
+    if (shadow && face.no_shadow) return;
+    const V e1 = tr.p1 - tr.p0, e2 = tr.p2 - tr.p0;
+    const V pv = cross(d, e2);
+    const R det = dot(e1, pv);
     if (det == R(0)) return;
     const R inv = R(1) / det;
     const V tv = o - tr.p0;
     const R u = dot(tv, pv) * inv;
     if (u < R(0) || u > R(1)) return;
-    const V qv = cross(tv, tr.e1);
+    const V qv = cross(tv, e1);
     const R v = dot(d, qv) * inv;
     if (v < R(0) || u + v > R(1)) return;
-    const R t = dot(tr.e2, qv) * inv;
+    const R t = dot(e2, qv) * inv;
     if (!(t > t_min && t < t_max)) return;
     t_max = t;
     hit.t = t;
     hit.found = true;
-    hit.material = tr.material;
-    V nrm = tr.n;
-    hit.geo = tr.n;
-    if (tr.smooth) {
-      const V sn = s_.vertex_normals[tr.v[0]] * (R(1) - u - v) + s_.vertex_normals[tr.v[1]] * u +
-                   s_.vertex_normals[tr.v[2]] * v;
+    hit.material = static_cast<int32_t>(tr.material);
+    V nrm = tr.normal;
+    hit.geo = tr.normal;
+    if (face.smooth) {
+      const V sn = s_.vertex_normals[face.vertex[0]] * (R(1) - u - v) + s_.vertex_normals[face.vertex[1]] * u +
+                   s_.vertex_normals[face.vertex[2]] * v;
       if (dot(sn, sn) > R(0)) {
         nrm = normalize<M>(sn);
-        if (dot(nrm, tr.n) < R(0)) nrm = -nrm;
+        if (dot(nrm, tr.normal) < R(0)) nrm = -nrm;
       }
     }
     hit.normal = nrm;
