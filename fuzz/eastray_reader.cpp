@@ -10,9 +10,8 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "formats/eastray/eastray_reader.hpp"
-#include "render/general/eastray_bvh.hpp"
-#include "render/general/eastray_object_bvh.hpp"
-#include "render/general/eastray_tracer.hpp"
+#include "formats/eastray/eastray_model.hpp"
+#include "render/general/render.hpp"
 
 namespace {
 
@@ -22,8 +21,8 @@ void read_one(const uint8_t* data, size_t size) {
   using Scene = minrt::eastray::Scene<R>;
   constexpr typename Scene::Capacities kItems = Scene::Capacities::all(512);
   static std::vector<unsigned char> storage(Scene::bytes_for(kItems) + minrt::eastray::Reader<M>::scratch_bytes() +
-                                            minrt::eastray::object_bvh_bytes<R>(512) +
-                                            minrt::eastray::triangle_bvh_bytes<R>(512) + 4096 * 4 + 4096);
+                                            minrt::general::object_bvh_bytes<R>(512) +
+                                            minrt::general::bvh_footprint<R>(512) + 4096 * 4 + 4096);
   minrt::Arena arena(storage.data(), storage.size());
   minrt::eastray::Scene<R> scene;
   if (!scene.allocate(arena, kItems)) std::abort();
@@ -36,18 +35,19 @@ void read_one(const uint8_t* data, size_t size) {
   // The hierarchies over any accepted scene's objects and triangles (their
   // bounds meet every coefficient and move the reader lets through); the
   // render below walks them.
-  minrt::eastray::build_triangle_bvh<M>(scene, arena);
-  minrt::eastray::build_object_bvh<M>(scene, arena);
+  minrt::model::EastrayShading<R> shading;
+  minrt::model::Scene<R> model;
+  minrt::eastray::to_model(scene, shading, model);
+  minrt::general::Renderer<M> renderer;
+  if (!renderer.setup(model, arena, 1)) std::abort();
   if (static_cast<int64_t>(scene.width) * scene.height > 64 || scene.max_depth > 4 || scene.anti > 2) return;
-  std::vector<R> linear(static_cast<size_t>(scene.width) * 3);
   std::vector<uint8_t> rgba(static_cast<size_t>(scene.width) * 4);
   struct Check {
     void begin(int, int) {}
     void row(int, const uint8_t*) {}
     void end() {}
   } check;
-  const minrt::eastray::Tracer<M> tracer(scene);
-  tracer.render(minrt::rgba_row_sink_of(check), linear.data(), rgba.data());
+  renderer.render(minrt::rgba_row_sink_of(check), rgba.data());
   for (int x = 0; x < scene.width; ++x)
     if (rgba[4 * x + 3] != 255) std::abort();
 }

@@ -15,9 +15,8 @@
 #include "formats/eastray/eastray_reader.hpp"
 #include "posix/output_file.hpp"
 #include "png_io.hpp"
-#include "render/general/eastray_bvh.hpp"
-#include "render/general/eastray_object_bvh.hpp"
-#include "render/general/eastray_tracer.hpp"
+#include "formats/eastray/eastray_model.hpp"
+#include "render/general/render.hpp"
 #include "thread_count.hpp"
 #include "tiff_io.hpp"
 
@@ -63,11 +62,12 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   using R = typename M::real;
   using Scene = eastray::Scene<R>;
   const typename Scene::Capacities caps = Scene::Capacities::for_text(x.text.size());
-  // The reader's scratch (part table, a mesh's vertex index) and the BVH
-  // over the triangles come after the scene's arrays.
+  // The reader's scratch (part table, a mesh's vertex index) and the
+  // hierarchies over the triangles and the objects come after the scene's
+  // arrays.
   const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
-                            eastray::triangle_bvh_bytes<R>(caps.triangles) +
-                            eastray::object_bvh_bytes<R>(caps.nodes) + 4096;
+                            general::bvh_footprint<R>(static_cast<uint32_t>(caps.triangles)) +
+                            general::object_bvh_bytes<R>(static_cast<uint32_t>(caps.nodes)) + 4096;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
   Scene scene;
@@ -86,10 +86,16 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   output_statement = scene.output;
   width = scene.width;
   height = scene.height;
-  eastray::build_triangle_bvh<M>(scene, arena);  // room was reserved; without it the image is the same, slower
-  eastray::build_object_bvh<M>(scene, arena);
+  // Drawn by the general tracer with EASTRAY's finish.
+  model::EastrayShading<R> shading;
+  model::Scene<R> model;
+  eastray::to_model(scene, shading, model);
+  general::Renderer<M> renderer;
+  if (!renderer.setup(model, arena, 1)) {
+    error = "error: scene does not fit in memory";
+    return false;
+  }
   // Rows are independent: every core takes the next one.
-  const eastray::Tracer<M> tracer(scene);
   const std::size_t stride = static_cast<std::size_t>(width) * 3;
   rgb.assign(stride * static_cast<std::size_t>(height), 0);
   const int threads = minrt_thread_count(0, height);  // every core
@@ -97,10 +103,12 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   if (window != nullptr && !window->is_open()) window = nullptr;
   if (window != nullptr) window->begin(width, height);
   auto work = [&] {
-    std::vector<R> row(stride);
+    std::vector<uint8_t> row(static_cast<std::size_t>(width) * 4);
     for (int y; (y = next.fetch_add(1)) < height;) {
-      tracer.render_row(y, row.data());
-      for (std::size_t i = 0; i < stride; ++i) rgb[stride * static_cast<std::size_t>(y) + i] = eastray::Tracer<M>::to_byte(row[i]);
+      renderer.render_row(y, row.data());
+      uint8_t* out = rgb.data() + stride * static_cast<std::size_t>(y);
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 3; ++c) out[3 * x + c] = row[4 * static_cast<std::size_t>(x) + c];
       if (window != nullptr) window->row_rgb(y, rgb.data() + stride * static_cast<std::size_t>(y));
     }
   };

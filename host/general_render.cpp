@@ -68,6 +68,7 @@ const char* general_path_name(uint32_t path) {
     case general::kPathDirect: return "direct (planes, triangles, bulbs, lenses, exposure)";
     case general::kPathPhong: return "phong (miniRT: spheres, planes)";
     case general::kPathPhongFull: return "phong-full (miniRT: every element)";
+    case general::kPathEastray: return "eastray (CSG of quadrics, meshes, EASTRAY's shading)";
     default: return "full (every feature)";
   }
 }

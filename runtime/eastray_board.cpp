@@ -3,9 +3,8 @@
 #include "board_math.hpp"
 #include "core/image/png_writer.hpp"
 #include "formats/eastray/eastray_reader.hpp"
-#include "render/general/eastray_bvh.hpp"
-#include "render/general/eastray_object_bvh.hpp"
-#include "render/general/eastray_tracer.hpp"
+#include "formats/eastray/eastray_model.hpp"
+#include "render/general/render.hpp"
 
 namespace minrt::fw {
 
@@ -28,15 +27,24 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
   }
   eastray::Reader<Math> reader(text, size, scene, arena);
   if (!reader.read(error)) return SceneResult::kSceneError;
-  eastray::build_triangle_bvh<Math>(scene, arena);  // without room, the same image, slower
-  eastray::build_object_bvh<Math>(scene, arena);
-  R* linear = arena.alloc_zeroed<R>(3 * static_cast<size_t>(scene.width));
+  // Drawn by the general tracer with EASTRAY's finish; the rows' buffer
+  // first, so the hierarchies (without room: the same image, slower) do not
+  // leave it none.
   uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
-  if (linear == nullptr || row == nullptr) {
+  if (row == nullptr) {
     error.text("image row does not fit in the board's memory");
     return SceneResult::kOutOfMemory;
   }
-  eastray::Tracer<Math>(scene).render(rows, linear, row);
+  model::EastrayShading<R> shading;
+  model::Scene<R> model;
+  eastray::to_model(scene, shading, model);
+  general::Renderer<Math> renderer;
+  if (!renderer.setup(model, arena, 1)) {
+    error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
+        " bytes)");
+    return SceneResult::kOutOfMemory;
+  }
+  renderer.render(rows, row);
   return SceneResult::kOk;
 }
 

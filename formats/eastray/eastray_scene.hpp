@@ -13,43 +13,23 @@
 #include "core/base/arena.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/model/csg.hpp"
+#include "formats/model/eastray_shading.hpp"
 #include "formats/model/quadric.hpp"
 #include "formats/model/scene.hpp"
 
 namespace minrt::eastray {
 
 inline constexpr int32_t kNone = model::kNoNode;  // no node, material or item
-inline constexpr int kNameBytes = 32;
+inline constexpr int kNameBytes = model::kColorNameBytes;
 inline constexpr int kOutputNameBytes = 256;
 
-enum class LightKind : uint8_t { kInfinite, kPoint, kSpot };
-
+// Lights and colours are the general model's (formats/model/eastray_shading.hpp).
+using LightKind = model::EastrayLightKind;
 template <class R>
-struct Light {
-  LightKind kind;
-  bool no_shadow;
-  Vec3<R> position;   // point, spot
-  Vec3<R> direction;  // infinite: toward the light; spot: where it shines (both unit)
-  Vec3<R> color;
-  R size_deg, concentration;  // infinite: the visible disc
-  R spread, half_distance;    // spot spread; point and spot fall-off (<= 0: none)
-  R shadow_range;             // < 0: shadows at any distance
-};
-
-// Specular algorithms of the manual (lines 402-531).
-enum class Specular : uint8_t { kBlinn = 0, kBlinnGauss = 1, kAniso1 = 2, kAniso2 = 3, kCookTorrance = 4, kConstant = 5 };
-
+using Light = model::EastrayLight<R>;
+using model::Specular;
 template <class R>
-struct Material {
-  char name[kNameBytes];
-  Vec3<R> diffuse, reflect, transmit;
-  R ior, half_distance, bump;
-  Specular specular;
-  // kBlinn: p[0] intensity, p[1] exponent. kBlinnGauss: rgb, p[3] spread,
-  // p[4] Fresnel constant. kCookTorrance: rgb, p[3] ratio, p[4] spread 1,
-  // p[5] spread 2. kConstant: color1 p[0..2], color2 p[3..5], p[6] k.
-  R p[8];
-};
+using Material = model::EastrayMaterial<R>;
 
 // The shapes and the CSG tree are the general model's (formats/model).
 using model::Affine;
@@ -71,27 +51,10 @@ template <class R>
 using Triangle = model::Triangle<R>;
 using MeshFace = model::MeshFace;
 
+// The scene-wide settings (display ... voxel) are the general model's
+// EastraySettings, with the manual's defaults.
 template <class R>
-struct Scene {
-  // display (lines 63-80)
-  int32_t width = 256, height = 240, x0 = 0, y0 = 0, x1 = 255, y1 = 239, step_x = 1, step_y = 1;
-  R aspect = R(1);
-  // condition (84-92)
-  int32_t max_depth = 4;
-  R min_weight = R(0.01), eps = R(0.00001);
-  bool inner = false;
-  // anti (94-103)
-  int32_t anti = 0;
-  R anti_level = R(0);
-  // camera (105-117)
-  Vec3<R> eye{R(0), R(0), R(10)}, look{}, up_point{R(0), R(10), R(0)};
-  R fov = R(30), parallax = R(0);
-  // mist, sky, env, shadow, voxel
-  R mist_half = R(0);
-  bool mist_to_sky = false;
-  Vec3<R> sky{}, env{};
-  bool shadows = true;
-  int32_t voxel = 0;
+struct Scene : model::EastraySettings<R> {
   char output[kOutputNameBytes] = {};
 
   Light<R>* lights = nullptr;
@@ -110,20 +73,6 @@ struct Scene {
   int32_t* vertex_ids = nullptr;       // the ids as written
   int32_t vertex_count = 0, vertex_capacity = 0;
   int32_t root = kNone;                // the main obj's kTop node
-  // A bounding-volume hierarchy over the triangles, when one was built
-  // (render/general/eastray_bvh.hpp); without it every ray tests them all.
-  const void* triangle_bvh_nodes = nullptr;
-  const uint32_t* triangle_bvh_refs = nullptr;
-  int32_t triangle_bvh_node_count = 0;
-  // A hierarchy over the main obj's objects by their world bounds, and the
-  // objects unbounded on some side, tested by every ray
-  // (render/general/eastray_object_bvh.hpp); without it every ray walks
-  // the whole tree. Both hold node ids.
-  const void* object_bvh_nodes = nullptr;
-  const uint32_t* object_bvh_refs = nullptr;
-  int32_t object_bvh_node_count = 0;
-  const int32_t* unbounded_objects = nullptr;
-  int32_t unbounded_count = 0;
 
   // How many items of each kind the arrays hold.
   struct Capacities {

@@ -8,6 +8,9 @@
 #include <stdint.h>
 
 #include "core/math/vec3.hpp"
+#include "formats/model/csg.hpp"
+#include "formats/model/eastray_shading.hpp"
+#include "formats/model/quadric.hpp"
 #include "formats/model/solid.hpp"
 
 namespace minrt::model {
@@ -107,7 +110,9 @@ struct Texture {
 // How the tracer turns linear light into bytes and what it does at the depth
 // limit: per format (SPEC.md 5.1). kMinirt: ambient, Lambert and Phong
 // terms, clamp and floor to bytes (render/general/phong_shading.hpp).
-enum class Finish : uint8_t { kCs418, kMinirt };
+// kEastray: EASTRAY's lights and colours (`eastray`), linear bytes, its own
+// camera, display window and antialiasing (render/general/eastray_shading.hpp).
+enum class Finish : uint8_t { kCs418, kMinirt, kEastray };
 
 template <class R>
 struct Scene {
@@ -136,6 +141,19 @@ struct Scene {
   uint32_t light_count = 0;
   const Texture* textures = nullptr;
   uint32_t texture_count = 0;
+  // Quadric solids and the CSG tree over them (quadric.hpp, csg.hpp); the
+  // children of the top node `csg_root` are independent objects.
+  const Quadric<R>* quadrics = nullptr;
+  uint32_t quadric_count = 0;
+  const CsgNode* csg_nodes = nullptr;
+  uint32_t csg_node_count = 0;
+  int32_t csg_root = kNoNode;
+  // Beside the triangles when they form meshes: one face per triangle and
+  // the unit vertex normals smooth faces index (null when none).
+  const MeshFace* mesh_faces = nullptr;
+  const Vec3<R>* vertex_normals = nullptr;
+  // Finish::kEastray: the settings, colours and lights it shades with.
+  const EastrayShading<R>* eastray = nullptr;
 };
 
 }  // namespace minrt::model

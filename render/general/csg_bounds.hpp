@@ -1,7 +1,6 @@
 // Conservative world-space bounds of the general model's quadric solids and
 // CSG blocks (formats/model/quadric.hpp, csg.hpp), for the hierarchy over a
-// tree's objects (csg_intersect.hpp; built for EASTRAY scenes by
-// eastray_object_bvh.hpp). A
+// tree's objects (csg_intersect.hpp; built by csg_object_bvh.hpp). A
 // side may be infinite (an unclipped cylinder, a plane); a block that is
 // infinite on any side is tested by every ray. Every point a ray can hit
 // on a primitive lies in the closure of its inside, so an AND block's hits

@@ -23,6 +23,10 @@ enum Feature : uint32_t {
   kExposure = 1u << 9,
   kSolids = 1u << 10,  // cylinders and cones (miniRT)
   kPhong = 1u << 11,   // miniRT's finish: ambient, Lambert, Phong, clamp
+  // EASTRAY's, outside kAllFeatures: a path of their own, so that no other
+  // path carries their code.
+  kQuadrics = 1u << 12,  // quadric solids in a CSG tree
+  kEastray = 1u << 13,   // EASTRAY's finish (eastray_shading.hpp, eastray_view.hpp)
 };
 inline constexpr uint32_t kAllFeatures = (1u << 12) - 1;
 
@@ -33,6 +37,8 @@ uint32_t features_of(const model::Scene<R>& s) {
   if (s.triangle_count > 0) f |= kTriangles;
   if (s.solid_count > 0) f |= kSolids;
   if (s.finish == model::Finish::kMinirt) f |= kPhong;
+  if (s.csg_root != model::kNoNode) f |= kQuadrics;
+  if (s.finish == model::Finish::kEastray) f |= kEastray;
   for (uint32_t i = 0; i < s.material_count; ++i) {
     const model::Material<R>& m = s.materials[i];
     if (m.texture != model::kNoTexture || m.bump != model::kNoTexture) f |= kTextures;

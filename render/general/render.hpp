@@ -13,6 +13,8 @@
 #include "formats/model/scene.hpp"
 #include "render/general/bvh.hpp"
 #include "render/general/camera.hpp"
+#include "render/general/csg_object_bvh.hpp"
+#include "render/general/eastray_view.hpp"
 #include "render/general/features.hpp"
 #include "render/general/tracer.hpp"
 
@@ -26,6 +28,8 @@ inline constexpr uint32_t kPathFull = kAllFeatures;
 // miniRT's: spheres and planes, then everything the format has.
 inline constexpr uint32_t kPathPhong = kPlanes | kPhong;
 inline constexpr uint32_t kPathPhongFull = kPlanes | kPhong | kSolids | kTextures;
+// EASTRAY's: CSG over quadric solids, meshes, its finish and view.
+inline constexpr uint32_t kPathEastray = kEastray | kQuadrics | kTriangles;
 
 // Reflected, refracted and GI rays whose weight (the product of the
 // shininess, transparency and colour factors on the way to the pixel) is
@@ -41,20 +45,25 @@ class Renderer {
 
  public:
   // Builds the BVH in the arena and picks the path. False when the arena is
-  // too small.
+  // too small (EASTRAY's scenes render without the hierarchies that do not
+  // fit: the same image, slower).
   bool setup(const model::Scene<R>& scene, Arena& arena, uint32_t seed, bool force_full = false,
              bool full_tree = false) {
     scene_ = &scene;
     seed_ = seed;
     min_weight_ = full_tree ? R(0) : R(kDefaultMinWeight);
-    if (!build_bvh<M>(scene, arena, bvh_)) return false;
+    // EASTRAY's meshes may go without their hierarchy (every ray then tests
+    // every triangle: the same image, slower), as on a board short of room.
+    if (!build_bvh<M>(scene, arena, bvh_) && scene.finish != model::Finish::kEastray) return false;
     auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
     if (dirs == nullptr) return false;
     for (uint32_t i = 0; i < scene.light_count; ++i)
       if (scene.lights[i].kind == model::LightKind::kSun) dirs[i] = normalize<M>(scene.lights[i].vector);
     light_dirs_ = dirs;
     features_ = features_of(scene);
-    if (force_full) path_ = kPathFull;
+    if ((features_ & kQuadrics) != 0) build_object_bvh<M>(scene, arena, objects_);
+    if ((features_ & kEastray) != 0) path_ = kPathEastray;
+    else if (force_full) path_ = kPathFull;
     else if ((features_ & ~kPathPhong) == 0 && (features_ & kPhong) != 0) path_ = kPathPhong;
     else if ((features_ & ~kPathPhongFull) == 0 && (features_ & kPhong) != 0) path_ = kPathPhongFull;
     else if ((features_ & ~kPathBasic) == 0) path_ = kPathBasic;
@@ -66,6 +75,10 @@ class Renderer {
   uint32_t features() const { return features_; }
   uint32_t path() const { return path_; }
   const Bvh<R>& bvh() const { return bvh_; }
+  // The plain walk over the CSG tree instead of its objects' hierarchy: the
+  // same image (tests).
+  const CsgObjects<R>& objects() const { return objects_; }
+  void drop_object_bvh() { objects_ = CsgObjects<R>{nullptr, nullptr, nullptr, 0}; }
 
   // One row of RGBA bytes (4 * width). Safe to call from several threads.
   void render_row(int y, uint8_t* rgba) const {
@@ -74,6 +87,7 @@ class Renderer {
       case kPathDirect: row<kPathDirect>(y, rgba); break;
       case kPathPhong: row<kPathPhong>(y, rgba); break;
       case kPathPhongFull: row<kPathPhongFull>(y, rgba); break;
+      case kPathEastray: eastray_row(y, rgba); break;
       default: row<kPathFull>(y, rgba); break;
     }
   }
@@ -89,6 +103,11 @@ class Renderer {
   }
 
  private:
+  void eastray_row(int y, uint8_t* out) const {
+    const Tracer<M, kPathEastray> tracer(*scene_, bvh_, light_dirs_, min_weight_, &objects_);
+    EastrayView<M, kPathEastray>(*scene_->eastray, tracer).render_row(y, out);
+  }
+
   template <uint32_t F>
   void row(int y, uint8_t* out) const {
     const model::Scene<R>& s = *scene_;
@@ -154,6 +173,7 @@ class Renderer {
   uint32_t path_ = kPathFull;
   R min_weight_ = static_cast<R>(kDefaultMinWeight);
   const Vec3<R>* light_dirs_ = nullptr;
+  CsgObjects<R> objects_{nullptr, nullptr, nullptr, 0};
 };
 
 }  // namespace minrt::general

@@ -3,6 +3,8 @@
 // illumination, as SPEC.md 1.3 gives them for CS418. Templated on the math
 // policy (like the min-rt tracer) and on the features the scene uses
 // (features.hpp): code for an unused feature is not compiled into the path.
+// EASTRAY's finish (quadric solids in CSG trees, meshes, its shading) is a
+// path of its own: eastray_shading.hpp.
 #pragma once
 
 #include <stdint.h>
@@ -11,6 +13,7 @@
 #include "core/image/srgb.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/bvh.hpp"
+#include "render/general/csg_intersect.hpp"
 #include "render/general/features.hpp"
 #include "render/general/intersect.hpp"
 #include "render/general/sampling.hpp"
@@ -41,8 +44,10 @@ class Tracer {
 
  public:
   // `light_dirs`: each sun's normalised direction, computed once at set-up.
-  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh, const Vec3<R>* light_dirs, R min_weight)
-      : s_(scene), bvh_(bvh), light_dirs_(light_dirs), min_weight_(min_weight) {}
+  // `objects`: the hierarchy over the CSG tree's objects (kQuadrics).
+  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh, const Vec3<R>* light_dirs, R min_weight,
+         const CsgObjects<R>* objects = nullptr)
+      : s_(scene), bvh_(bvh), light_dirs_(light_dirs), min_weight_(min_weight), objects_(objects) {}
 
   // Colour along a ray; `hit` false when it meets nothing.
   // `weight` bounds how much this ray can still change the pixel: children
@@ -53,6 +58,11 @@ class Tracer {
     if (h.kind == HitKind::kNone) return {{}, false};
     return {shade(ray, h, depth, gi_level, weight, rng), true};
   }
+
+  // Finish::kEastray (eastray_shading.hpp): the colour a ray from `o` along
+  // unit `d` brings back; `medium_half` is the absorption half distance of
+  // the body it travels in (0: air, where the mist is).
+  Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half) const;
 
  private:
   // ------------------------------------------------------------ visibility
@@ -317,6 +327,24 @@ class Tracer {
   // miniRT's shading (phong_shading.hpp).
   Vec3<R> shade_phong(const Ray<R>& ray, const Hit<R>& h) const;
 
+  // EASTRAY's visibility and shading (eastray_shading.hpp).
+  struct EastrayHit {
+    R t = R(-1);
+    Vec3<R> normal{};  // unit outward normal at the hit (smoothed on meshes)
+    Vec3<R> geo{};     // the geometric one: which side a new ray starts on
+    int32_t material = model::kNoNode;
+    bool found = false;
+  };
+  EastrayHit eastray_nearest(const Vec3<R>& o, const Vec3<R>& d, R t_min, R t_max, bool shadow) const;
+  void eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min, R& t_max, EastrayHit& hit,
+                        bool shadow) const;
+  Vec3<R> eastray_shadow(const Vec3<R>& p, const Vec3<R>& l, R dist) const;
+  Vec3<R> eastray_sky(const Vec3<R>& d) const;
+  Vec3<R> eastray_direct(const Vec3<R>& p, const Vec3<R>& start, const Vec3<R>& n, const Vec3<R>& v,
+                         const model::EastrayMaterial<R>& m) const;
+  Vec3<R> eastray_specular(const model::EastrayMaterial<R>& m, const Vec3<R>& n, const Vec3<R>& v,
+                           const Vec3<R>& l, R ndl, R ndv) const;
+
   // Nearest texel, rounding to the closest one (SPEC.md 1.3), decoded from
   // sRGB by table.
   Vec3<R> texel(const Hit<R>& h, const Vec3<R>& p, int32_t id) const {
@@ -358,6 +386,7 @@ class Tracer {
   const Bvh<R>& bvh_;
   const Vec3<R>* light_dirs_;
   R min_weight_;
+  const CsgObjects<R>* objects_;
   // One tracer per row (per thread): the cache is never shared.
   mutable uint32_t shadow_cache_[kShadowCache] = {kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
                                                   kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
@@ -367,4 +396,5 @@ class Tracer {
 
 }  // namespace minrt::general
 
+#include "render/general/eastray_shading.hpp"
 #include "render/general/phong_shading.hpp"

@@ -1,4 +1,4 @@
-// The hierarchy over EASTRAY objects (render/general/eastray_object_bvh.hpp)
+// The hierarchy over EASTRAY objects (render/general/csg_object_bvh.hpp)
 // and the bounds it is built from (csg_bounds.hpp): every crossing of
 // every primitive kind under random moves lies in the primitive's bound;
 // a scene of assorted objects and CSG blocks renders the same bytes with
@@ -17,8 +17,8 @@
 #include "core/math/math_portable.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "render/general/csg_bounds.hpp"
-#include "render/general/eastray_object_bvh.hpp"
-#include "render/general/eastray_tracer.hpp"
+#include "formats/eastray/eastray_model.hpp"
+#include "render/general/render.hpp"
 
 namespace {
 
@@ -116,7 +116,7 @@ struct Loaded {
   explicit Loaded(const std::string& text) {
     const auto caps = eastray::Scene<R>::Capacities::for_text(text.size());
     const size_t bytes = eastray::Scene<R>::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
-                         eastray::object_bvh_bytes<R>(caps.nodes) + 4096;
+                         4 * general::object_bvh_bytes<R>(static_cast<uint32_t>(caps.nodes)) + 4096;
     storage.resize(bytes);
     arena = std::make_unique<Arena>(storage.data(), bytes);
     REQUIRE(scene.allocate(*arena, caps));
@@ -126,13 +126,25 @@ struct Loaded {
     REQUIRE(reader->read(d));
   }
 
-  std::vector<uint8_t> image() const {
-    const eastray::Tracer<M> tracer(scene);
-    std::vector<R> row(3 * static_cast<size_t>(scene.width));
+  // RGB bytes through the general renderer, with the hierarchy over the
+  // objects or with the plain walk over the tree.
+  std::vector<uint8_t> image(bool hierarchy = true) {
+    model::EastrayShading<R> shading;
+    model::Scene<R> model;
+    eastray::to_model(scene, shading, model);
+    general::Renderer<M> renderer;
+    REQUIRE(renderer.setup(model, *arena, 1));
+    REQUIRE(renderer.path() == general::kPathEastray);
+    if (hierarchy) {
+      REQUIRE(renderer.objects().unbounded != nullptr);
+    } else {
+      renderer.drop_object_bvh();
+    }
+    std::vector<uint8_t> row(4 * static_cast<size_t>(scene.width));
     std::vector<uint8_t> out;
     for (int y = 0; y < scene.height; ++y) {
-      tracer.render_row(y, row.data());
-      for (R v : row) out.push_back(eastray::Tracer<M>::to_byte(v));
+      renderer.render_row(y, row.data());
+      for (int x = 0; x < scene.width; ++x) out.insert(out.end(), row.begin() + 4 * x, row.begin() + 4 * x + 3);
     }
     return out;
   }
@@ -141,11 +153,8 @@ struct Loaded {
 template <class M>
 void check_same_image(const std::string& text) {
   Loaded<M> plain(text);
-  const std::vector<uint8_t> before = plain.image();
-  REQUIRE(eastray::build_object_bvh<M>(plain.scene, *plain.arena));
-  REQUIRE(plain.scene.unbounded_objects != nullptr);
-  REQUIRE(plain.scene.object_bvh_nodes != nullptr);
-  const std::vector<uint8_t> after = plain.image();
+  const std::vector<uint8_t> before = plain.image(false);
+  const std::vector<uint8_t> after = plain.image(true);
   REQUIRE(before.size() == after.size());
   size_t differing = 0;
   for (size_t i = 0; i < before.size(); ++i) differing += before[i] != after[i];
@@ -236,8 +245,7 @@ TEST_CASE("eastray object hierarchy: equally near hits keep the first object", "
   }
   text += "]\n";
   Loaded<LibmDouble> l(text);
-  REQUIRE(eastray::build_object_bvh<LibmDouble>(l.scene, *l.arena));
-  const std::vector<uint8_t> img = l.image();
+  const std::vector<uint8_t> img = l.image(true);
   int red = 0, blue = 0;
   for (size_t i = 0; i + 2 < img.size(); i += 3) {
     if (img[i] > 2 * img[i + 2] && img[i] > 40) ++red;
