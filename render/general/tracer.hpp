@@ -336,7 +336,7 @@ class Tracer {
     bool found = false;
   };
   EastrayHit eastray_nearest(const Vec3<R>& o, const Vec3<R>& d, R t_min, R t_max, bool shadow) const;
-  void eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min, R& t_max, EastrayHit& hit,
+  [[gnu::always_inline]] inline void eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min, R& t_max, EastrayHit& hit,
                         bool shadow) const;
   Vec3<R> eastray_shadow(const Vec3<R>& p, const Vec3<R>& l, R dist) const;
   Vec3<R> eastray_sky(const Vec3<R>& d) const;
