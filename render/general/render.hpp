@@ -30,6 +30,7 @@ inline constexpr uint32_t kPathPhong = kPlanes | kPhong;
 inline constexpr uint32_t kPathPhongFull = kPlanes | kPhong | kSolids | kTextures;
 // EASTRAY's: CSG over quadric solids, meshes, its finish and view.
 inline constexpr uint32_t kPathEastray = kEastray | kQuadrics | kTriangles;
+static_assert((kPathFull & (kEastray | kQuadrics)) == 0, "no CS418 or miniRT path carries EASTRAY's code");
 
 // Reflected, refracted and GI rays whose weight (the product of the
 // shininess, transparency and colour factors on the way to the pixel) is

@@ -6,6 +6,7 @@
 // near hits keep the first object in the list.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -127,16 +128,18 @@ struct Loaded {
   }
 
   // RGB bytes through the general renderer, with the hierarchy over the
-  // objects or with the plain walk over the tree.
-  std::vector<uint8_t> image(bool hierarchy = true) {
+  // objects or with the plain walk over the tree; its set-up takes from
+  // `room` (the scene's own arena when null).
+  std::vector<uint8_t> image(bool hierarchy = true, Arena* room = nullptr, uint32_t* bvh_nodes = nullptr) {
     model::EastrayShading<R> shading;
     model::Scene<R> model;
     eastray::to_model(scene, shading, model);
     general::Renderer<M> renderer;
-    REQUIRE(renderer.setup(model, *arena, 1));
+    REQUIRE(renderer.setup(model, room != nullptr ? *room : *arena, 1));
+    if (bvh_nodes != nullptr) *bvh_nodes = renderer.bvh().node_count;
     REQUIRE(renderer.path() == general::kPathEastray);
     if (hierarchy) {
-      REQUIRE(renderer.objects().unbounded != nullptr);
+      if (room == nullptr) REQUIRE(renderer.objects().unbounded != nullptr);
     } else {
       renderer.drop_object_bvh();
     }
@@ -255,4 +258,55 @@ TEST_CASE("eastray object hierarchy: equally near hits keep the first object", "
   CHECK(blue == 0);
   check_same_image<LibmDouble>(text);
   check_same_image<PortableFloat>(text);
+}
+
+TEST_CASE("eastray meshes: the general BVH gives the image of every triangle in order, ties to the first face",
+          "[eastray][bvh]") {
+  // A smooth sphere of 960 faces over a flat square whose two faces are
+  // listed twice, red first, then blue at the same place: equally near
+  // faces keep the first, so no blue shows, with the hierarchy (the
+  // renderer's own arena) or without it (an arena with no room for it, as
+  // on a board short of memory: every triangle in order).
+  std::string text = kHeader;
+  text += "obj [\n  20 red 1 <\n";
+  const int rings = 16, segs = 32;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segs; ++j) {
+      const double th = 3.14159265358979 * i / rings, ph = 2 * 3.14159265358979 * j / segs;
+      text += "    p " + std::to_string(i * segs + j) + " " + num(1.5 * std::sin(th) * std::cos(ph)) + " " +
+              num(1.5 * std::cos(th)) + " " + num(1.5 * std::sin(th) * std::sin(ph)) + "\n";
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segs; ++j) {
+      const int a = i * segs + j, b = i * segs + (j + 1) % segs, c = (i + 1) * segs + (j + 1) % segs,
+                d = (i + 1) * segs + j;
+      text += "    P " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + " ; s\n";
+      text += "    P " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) + " ; s\n";
+    }
+  text += "  > ;\n  20 red 1 <\n    p 1 -5 -1.6 5  p 2 5 -1.6 5  p 3 5 -1.6 -5  p 4 -5 -1.6 -5\n"
+          "    P 1 2 3 4 ;\n    P 1 2 3 4 ;  c blue\n  > ;\n]\n";
+  auto check = [&](auto math) {
+    using M = decltype(math);
+    Loaded<M> l(text);
+    REQUIRE(l.scene.triangle_count > 900);  // the poles' slivers are dropped
+    std::vector<unsigned char> big(1 << 22), small(256);
+    Arena with_room(big.data(), big.size()), without_room(small.data(), small.size());
+    uint32_t nodes_with = 0, nodes_without = 0;
+    const std::vector<uint8_t> a = l.image(true, &with_room, &nodes_with);
+    const std::vector<uint8_t> b = l.image(true, &without_room, &nodes_without);
+    CHECK(nodes_with > 1);
+    CHECK(nodes_without == 0);
+    REQUIRE(a.size() == b.size());
+    size_t differing = 0, blue = 0, red = 0;
+    for (size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i];
+    for (size_t i = 0; i + 2 < a.size(); i += 3) {
+      if (a[i + 2] > 2 * a[i] && a[i + 2] > 40 && !(a[i] == 51 && a[i + 1] == 102)) ++blue;
+      if (a[i] > 2 * a[i + 2] && a[i] > 40) ++red;
+    }
+    CHECK(differing == 0);
+    CHECK(blue == 0);
+    CHECK(red > 500);
+  };
+  check(LibmDouble{});
+  check(PortableFloat{});
 }
