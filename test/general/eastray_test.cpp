@@ -18,6 +18,7 @@
 
 #include "eastray_cli.hpp"
 #include "eastray_preprocess.hpp"
+#include "eastray_probe_support.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -76,18 +77,7 @@ bool any_in(const EastrayImage& im, int x0, int y0, int x1, int y1, F f) {
   return false;
 }
 
-// Pixels whose channels differ by more than `tol`.
-int differing(const EastrayImage& a, const EastrayImage& b, int tol = 2) {
-  REQUIRE(a.width == b.width);
-  REQUIRE(a.height == b.height);
-  int n = 0;
-  for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
-    bool off = false;
-    for (int c = 0; c < 3; ++c) off = off || std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > tol;
-    n += off ? 1 : 0;
-  }
-  return n;
-}
+using eprobe::differing;
 
 const char* kHeader =
     "display 96 72 0 0 95 71 1 1 1 ;\n"
