@@ -357,8 +357,9 @@ int main(int argc, char** argv) {
     }
   } tee{file_sink.sink(), &decoder};
   const minrt::ByteSink sink = window.is_open() ? minrt::ByteSink{&Tee::write_fn, &tee} : file_sink.sink();
-  // Several threads hand the PPM writer every row at the end: the window
-  // takes them as they finish instead (a row given twice keeps its first).
+  // Several threads hand the PPM writer each row once the rows above it are
+  // done: the window takes them as they finish instead (a row given twice
+  // keeps its first).
   struct WindowRows {
     minrt::host::LiveWindow* window;
     void begin(int, int) {}

@@ -1,10 +1,13 @@
-// The min-rt tracer's rows on several threads. Each worker takes bands of
-// rows in order from a shared counter and renders them with a tracer of its
-// own, initialised from the scene (the tracer's tables point into its own
-// object array, which the ray loops write), and its own pixel lines (Tracer::render_rows
-// replays the rows above a band, so every band comes out as the one-thread
-// render makes it). The rows are kept and handed to the sink in order at the
-// end.
+// The min-rt tracer's rows on several threads. The workers take bands of
+// rows in order from a shared counter (minrt_band_rows: smaller towards the
+// end, so that they finish together) and render them with a tracer of their
+// own (its tables point into its own object array, which the ray loops
+// write) through Tracer::render_rows, which gives every band the bytes of
+// the one-thread render (render/minrt/band_rows.hpp). The calling thread's
+// worker uses the tracer prepare_sld set up; the others set theirs up in
+// their own threads. The rows where two bands meet are traced once and
+// handed over (RowExchange), and finished rows go to the sink in order as
+// soon as the rows above them are done (RowsInOrder).
 #pragma once
 
 #include <stddef.h>
@@ -14,6 +17,7 @@
 #include <atomic>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <system_error>
 #include <thread>
@@ -26,104 +30,187 @@
 
 namespace minrt::host {
 
-// Rows a worker takes at a time: every worker replays the geometry of the
-// rows above its band, and a band's two boundary rows are traced twice when
-// the neighbouring worker has not handed them over yet, so bands are not
-// tiny, yet short enough that the last one leaves no core idle for long.
-inline int minrt_band_rows(int height, int threads) {
-  return std::clamp(height / (threads * 16), 4, 16);
+// Rows in the band that starts at row y0: 16 while much of the image is
+// left, fewer towards the end (a quarter of each worker's share of what is
+// left) so that no worker waits long for the last band; at least 2, as
+// render_rows's row sharing needs.
+inline int minrt_band_rows(int height, int threads, int y0) {
+  return std::clamp((height - y0) / (4 * threads), 2, 16);
 }
 
-// Rows the workers hand over (SharedRows): one slot per row, filled once by
-// the worker whose band starts there and emptied by the one whose band
-// ends there.
+// Rows traced in full that two workers need (SharedRows): one slot per row.
+// The first worker to ask traces the row and gives a copy of its state; the
+// second copies it out, waiting (blocked, not spinning) while it is traced.
 class RowExchange {
  public:
-  explicit RowExchange(int height) : slots_(static_cast<size_t>(height)) {}
+  explicit RowExchange(int height) : states_(static_cast<size_t>(height)), copies_(static_cast<size_t>(height)) {}
   ~RowExchange() {
-    for (auto& s : slots_) delete[] s.exchange(nullptr);
+    for (unsigned char* c : copies_) delete[] c;
+    for (unsigned char* c : spare_) delete[] c;
   }
+  RowExchange(const RowExchange&) = delete;
+  RowExchange& operator=(const RowExchange&) = delete;
+
   SharedRows shared() {
     SharedRows r;
     r.ctx = this;
-    r.give = [](void* c, int row, const void* pixels, size_t bytes) {
-      auto* copy = new (std::nothrow) unsigned char[bytes];
-      if (copy == nullptr) return;  // the taker traces the row itself
-      std::memcpy(copy, pixels, bytes);
-      delete[] static_cast<RowExchange*>(c)->slots_[static_cast<size_t>(row)].exchange(copy, std::memory_order_acq_rel);
+    r.take = [](void* c, int row, void* pixels, size_t pixel_bytes, void* slots, size_t slot_bytes) {
+      return static_cast<RowExchange*>(c)->take(static_cast<size_t>(row), pixels, pixel_bytes, slots, slot_bytes);
     };
-    r.take = [](void* c, int row, void* pixels, size_t bytes) {
-      unsigned char* copy = static_cast<RowExchange*>(c)->slots_[static_cast<size_t>(row)].exchange(nullptr, std::memory_order_acq_rel);
-      if (copy == nullptr) return false;
-      std::memcpy(pixels, copy, bytes);
-      delete[] copy;
-      return true;
+    r.give = [](void* c, int row, const void* pixels, size_t pixel_bytes, const void* slots, size_t slot_bytes) {
+      static_cast<RowExchange*>(c)->give(static_cast<size_t>(row), pixels, pixel_bytes, slots, slot_bytes);
     };
     return r;
   }
 
  private:
-  std::vector<std::atomic<unsigned char*>> slots_;
+  // kFree -> kTracing (the first taker) -> kReady (given) -> kTaken; or
+  // kTracing -> kTaken when no memory was left for the copy.
+  enum : int { kFree, kTracing, kReady, kTaken };
+
+  bool take(size_t row, void* pixels, size_t pixel_bytes, void* slots, size_t slot_bytes) {
+    std::atomic<int>& state = states_[row];
+    int s = kFree;
+    if (state.compare_exchange_strong(s, kTracing, std::memory_order_acq_rel)) return false;
+    while (s == kTracing) {
+      state.wait(kTracing, std::memory_order_acquire);
+      s = state.load(std::memory_order_acquire);
+    }
+    // A third taker (a one-row band) or a failed copy: trace it again.
+    if (s != kReady || !state.compare_exchange_strong(s, kTaken, std::memory_order_acq_rel)) return false;
+    unsigned char* copy = copies_[row];
+    copies_[row] = nullptr;
+    std::memcpy(pixels, copy, pixel_bytes);
+    std::memcpy(slots, copy + pixel_bytes, slot_bytes);
+    std::lock_guard<std::mutex> lock(spare_mutex_);
+    spare_.push_back(copy);  // no allocation: reserved in give
+    return true;
+  }
+
+  void give(size_t row, const void* pixels, size_t pixel_bytes, const void* slots, size_t slot_bytes) {
+    std::atomic<int>& state = states_[row];
+    if (state.load(std::memory_order_acquire) != kTracing) return;  // traced again by a later taker
+    unsigned char* copy = nullptr;
+    {
+      std::lock_guard<std::mutex> lock(spare_mutex_);
+      if (!spare_.empty()) {
+        copy = spare_.back();
+        spare_.pop_back();
+      } else {
+        try {
+          spare_.reserve(++buffers_);  // take() can always put it back
+          copy = new unsigned char[pixel_bytes + slot_bytes];
+        } catch (const std::bad_alloc&) {
+          copy = nullptr;
+        }
+      }
+    }
+    if (copy != nullptr) {
+      std::memcpy(copy, pixels, pixel_bytes);
+      std::memcpy(copy + pixel_bytes, slots, slot_bytes);
+      copies_[row] = copy;
+    }
+    state.store(copy != nullptr ? kReady : kTaken, std::memory_order_release);
+    state.notify_all();
+  }
+
+  std::vector<std::atomic<int>> states_;
+  std::vector<unsigned char*> copies_;  // written before kReady, read after
+  std::mutex spare_mutex_;
+  std::vector<unsigned char*> spare_;  // copies taken, to be reused
+  size_t buffers_ = 0;
 };
 
-// Renders with `threads` workers (>= 2) into `out`. Returns false when memory
-// for the copies runs out (nothing is written then).
-template <MathPolicy M>
-bool render_minrt_parallel(const Scene<typename M::real>& scene, int width, int height, int threads,
-                           const RowSink& out, const RowSink* finished = nullptr) {
-  const size_t row_bytes = static_cast<size_t>(width) * 3;
-  std::vector<uint8_t> image;
-  struct Worker {
-    std::unique_ptr<Tracer<M>> tracer;
-    std::unique_ptr<unsigned char[]> memory;
-  };
-  std::vector<Worker> workers(static_cast<size_t>(threads));
-  const size_t bytes = Tracer<M>::arena_bytes(scene, width);
-  try {
-    image.resize(row_bytes * static_cast<size_t>(height));
-  } catch (const std::bad_alloc&) {
-    return false;
-  }
-  for (Worker& w : workers) {
-    w.tracer.reset(new (std::nothrow) Tracer<M>());
-    w.memory.reset(new (std::nothrow) unsigned char[bytes]);
-    if (w.tracer == nullptr || w.memory == nullptr) return false;
-    Arena arena(w.memory.get(), bytes);
-    if (!w.tracer->init(scene, width, height, arena)) return false;
+// Finished rows kept in one image buffer and handed to the sink in order:
+// whichever worker finds the next rows done writes them, unless another is
+// writing already; flush after the workers stop writes whatever is left.
+class RowsInOrder {
+ public:
+  RowsInOrder(const RowSink& out, size_t row_bytes, int height, const RowSink* finished)
+      : out_(out), row_bytes_(row_bytes), height_(height), finished_(finished) {}
+
+  // Allocates the buffer; false when there is no memory for it.
+  bool reserve() {
+    try {
+      image_.resize(row_bytes_ * static_cast<size_t>(height_));
+      done_ = std::vector<std::atomic<bool>>(static_cast<size_t>(height_));
+    } catch (const std::bad_alloc&) {
+      return false;
+    }
+    return true;
   }
 
-  struct Rows {
-    uint8_t* image;
-    size_t row_bytes;
-    const RowSink* finished;
-    void begin(int, int) {}
-    void row(int y, const uint8_t* rgb) {
-      std::memcpy(image + static_cast<size_t>(y) * row_bytes, rgb, row_bytes);
-      if (finished != nullptr) finished->row(y, rgb);  // --show: as soon as it is done
-    }
-    void end() {}
-  } rows{image.data(), row_bytes, finished};
-  const RowSink into_image = row_sink_of(rows);
-  const int band = minrt_band_rows(height, threads);
+  void begin(int, int) {}  // the sink's begin and end are the renderer's
+  void end() {}
+  void row(int y, const uint8_t* rgb) {
+    std::memcpy(image_.data() + static_cast<size_t>(y) * row_bytes_, rgb, row_bytes_);
+    if (finished_ != nullptr) finished_->row(y, rgb);  // --show: as soon as it is done
+    done_[static_cast<size_t>(y)].store(true, std::memory_order_release);
+    flush();
+  }
+
+  void flush() {
+    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
+    if (!lock.owns_lock()) return;
+    for (; next_ < height_ && done_[static_cast<size_t>(next_)].load(std::memory_order_acquire); ++next_)
+      out_.row(next_, image_.data() + static_cast<size_t>(next_) * row_bytes_);
+  }
+
+ private:
+  const RowSink& out_;
+  size_t row_bytes_;
+  int height_;
+  const RowSink* finished_;
+  std::vector<uint8_t> image_;
+  std::vector<std::atomic<bool>> done_;
+  std::mutex mutex_;
+  int next_ = 0;  // the first row not written yet
+};
+
+// Renders with `threads` workers (>= 2) into `out`; `first` is initialised
+// for `scene` and prepared for bands (Tracer::prepare_bands) and renders on
+// the calling thread. Returns false when memory for the image runs out
+// (nothing is written then). A worker that cannot get memory for its tracer
+// or a thread leaves its bands to the others.
+template <MathPolicy M>
+bool render_minrt_parallel(Tracer<M>& first, const Scene<typename M::real>& scene, int width, int height,
+                           int threads, const RowSink& out, const RowSink* finished = nullptr) {
+  RowsInOrder rows(out, static_cast<size_t>(width) * 3, height, finished);
+  if (!rows.reserve()) return false;
+  const RowSink into_rows = row_sink_of(rows);
   RowExchange exchange(height);
   const SharedRows shared = exchange.shared();
   std::atomic<int> next{0};
   auto work = [&](Tracer<M>& t) {
-    // fetch_add hands each worker increasing bands, as render_rows needs.
-    for (int y0; (y0 = next.fetch_add(band)) < height;)
-      t.render_rows(y0, std::min(y0 + band, height), into_image, shared);
+    // Each worker's bands go down the image, as render_rows needs.
+    for (int y0 = next.load(std::memory_order_relaxed);;) {
+      if (y0 >= height) return;
+      const int y1 = std::min(height, y0 + minrt_band_rows(height, threads, y0));
+      if (next.compare_exchange_weak(y0, y1, std::memory_order_relaxed)) {
+        t.render_rows(y0, y1, into_rows, shared);
+        y0 = next.load(std::memory_order_relaxed);
+      }
+    }
   };
-  std::vector<std::thread> pool;
-  try {
-    for (int i = 1; i < threads; ++i) pool.emplace_back(work, std::ref(*workers[static_cast<size_t>(i)].tracer));
-  } catch (const std::system_error&) {
-    // Fewer threads than asked: the bands go to those that started.
-  }
-  work(*workers[0].tracer);
-  for (std::thread& t : pool) t.join();
+  const size_t bytes = Tracer<M>::arena_bytes(scene, width) + Tracer<M>::band_bytes(width);
+  auto helper = [&] {
+    std::unique_ptr<Tracer<M>> tracer(new (std::nothrow) Tracer<M>());
+    std::unique_ptr<unsigned char[]> memory(new (std::nothrow) unsigned char[bytes]);
+    if (tracer == nullptr || memory == nullptr) return;
+    Arena arena(memory.get(), bytes);
+    if (tracer->init(scene, width, height, arena) && tracer->prepare_bands(arena)) work(*tracer);
+  };
 
   out.begin(width, height);
-  for (int y = 0; y < height; ++y) out.row(y, image.data() + static_cast<size_t>(y) * row_bytes);
+  std::vector<std::thread> pool;
+  try {
+    for (int i = 1; i < threads; ++i) pool.emplace_back(helper);
+  } catch (const std::exception&) {
+    // Fewer threads than asked (system_error, or no memory for the list).
+  }
+  work(first);
+  for (std::thread& t : pool) t.join();
+  rows.flush();
   out.end();
   return true;
 }

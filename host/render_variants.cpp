@@ -16,9 +16,10 @@ namespace {
 template <MathPolicy M, class MakeValues>
 RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions& options, Diagnostic& error,
                  const WarningSink& warnings, int threads, const RowSink* finished) {
-  // The one allocation: sized from the limits and the width, before reading.
+  // The one allocation: sized from the limits and the width, before reading
+  // (with the slot rows of rendering in bands, render_minrt_parallel).
   const int width = valid_size(options.width, options.height) ? options.width : 1;
-  const size_t bytes = arena_bytes_for_width<M>(width);
+  const size_t bytes = arena_bytes_for_width<M>(width) + Tracer<M>::band_bytes(width);
   std::unique_ptr<unsigned char[]> buffer(new (std::nothrow) unsigned char[bytes]);
   auto state = std::unique_ptr<RenderState<M>>(new (std::nothrow) RenderState<M>());
   if (buffer == nullptr || state == nullptr) {
@@ -32,7 +33,9 @@ RenderStatus run(const MakeValues& make, const RowSink& out, const RenderOptions
   threads = minrt_thread_count(threads, options.height);
   if (threads == 1) {
     state->tracer.render(out);
-  } else if (!render_minrt_parallel<M>(state->scene, options.width, options.height, threads, out, finished)) {
+  } else if (!state->tracer.prepare_bands(arena) ||
+             !render_minrt_parallel<M>(state->tracer, state->scene, options.width, options.height, threads, out,
+                                       finished)) {
     error.text("cannot allocate memory for ").number(threads).text(" threads");
     return RenderStatus::kOutOfMemory;
   }

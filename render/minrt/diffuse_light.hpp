@@ -14,39 +14,6 @@ inline auto Tracer<M>::render(const RowSink& out) -> void {
   out.end();
 }
 
-// Row r lives in line (r + 1) % 3 and samples from group 2r mod 5 onwards,
-// as in the original's loop. A line keeps what earlier rows left in the
-// slots the latest trace did not reach (see trace_ray), so the rows before
-// y0 are replayed, geometry only, in order into this tracer's own lines.
-// Rows y0 - 1 and y0 are traced in full: row y0 reads its neighbours' 60-ray
-// sums. They are offered to `shared`, and rows below the band are taken
-// from it when another worker has traced them already.
-template <MathPolicy M>
-inline auto Tracer<M>::render_rows(int y0, int y1, const RowSink& out, const SharedRows& shared) -> void {
-  auto line = [&](int r) { return lines_[(r + 1) % 3]; };
-  auto group = [](int r) { return 2 * r % 5; };
-  const size_t line_bytes = sizeof(Pixel) * static_cast<size_t>(width_);
-  for (int r = lines_through_ + 1; r <= y0; ++r) {
-    if (r < y0 - 1) {
-      pretrace_line<false>(line(r), r, group(r));
-    } else {
-      pretrace_line<true>(line(r), r, group(r));
-      if (shared.give != nullptr && y0 > 0) shared.give(shared.ctx, r, line(r), line_bytes);
-    }
-  }
-  if (y0 > lines_through_) lines_through_ = y0;
-  for (int y = y0; y < y1; ++y) {
-    const int r = y + 1;
-    if (r < height_ && r > lines_through_) {
-      if (shared.take == nullptr || !shared.take(shared.ctx, r, line(r), line_bytes))
-        pretrace_line<true>(line(r), r, group(r));
-      lines_through_ = r;
-    }
-    scan_pixels(y, line(y - 1), line(y), line(y + 1));
-    out.row(y, row_);
-  }
-}
-
 template <MathPolicy M>
 MINRT_INLINE auto Tracer<M>::trace_diffuse_ray(const DirVec& dv, R energy) -> void {
   if (!judge_intersection_fast<true>(dv)) return;
@@ -137,21 +104,27 @@ inline auto Tracer<M>::try_exploit_neighbors(int x, Pixel* prev, Pixel* cur, Pix
 }
 
 template <MathPolicy M>
+inline auto Tracer<M>::eye_ray(int x, int y, R* dir) const -> void {
+  const R ydisp = scan_pitch_ * M::from_int(y - center_[1]);
+  const R xdisp = scan_pitch_ * M::from_int(x - center_[0]);
+  dir[0] = xdisp * screenx_[0] + (ydisp * screeny_[0] + screenz_[0]);
+  dir[1] = xdisp * screenx_[1] + (ydisp * screeny_[1] + screenz_[1]);
+  dir[2] = xdisp * screenx_[2] + (ydisp * screeny_[2] + screenz_[2]);
+  normalize(dir, false);
+}
+
+template <MathPolicy M>
 template <bool kFull>
 inline auto Tracer<M>::pretrace_line(Pixel* line, int y, int group_id) -> void {
-  const R ydisp = scan_pitch_ * M::from_int(y - center_[1]);
-  const R lc0 = ydisp * screeny_[0] + screenz_[0];
-  const R lc1 = ydisp * screeny_[1] + screenz_[1];
-  const R lc2 = ydisp * screeny_[2] + screenz_[2];
   for (int x = width_ - 1; x >= 0; --x) {
-    const R xdisp = scan_pitch_ * M::from_int(x - center_[0]);
-    R dir[3] = {xdisp * screenx_[0] + lc0, xdisp * screenx_[1] + lc1, xdisp * screenx_[2] + lc2};
-    normalize(dir, false);
+    R dir[3];
+    eye_ray(x, y, dir);
     zero3(rgb_);
     copy3(startp_, viewpoint_);
-    trace_ray<kFull>(0, R(1.0), dir, line[x]);
+    [[maybe_unused]] const int written = trace_ray<kFull>(0, R(1.0), dir, line[x]);
     if constexpr (kFull) {
       copy3(line[x].rgb, rgb_);
+      if (slot_rows_ != nullptr) track_slots(line[x], x, y, written);
       line[x].group_id = group_id;
       pretrace_diffuse_rays(line[x]);
       group_id = add_mod5(group_id, 1);

@@ -36,7 +36,7 @@ inline auto Tracer<M>::trace_reflections(R diffuse, R hilight_scale, const R* di
 
 template <MathPolicy M>
 template <bool kLight>
-inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> void {
+inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> int {
   for (; nref < kMaxDepth; ++nref) {
     if (!judge_intersection(dir)) {
       pixel.surface_ids[nref] = -1;
@@ -49,7 +49,7 @@ inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> vo
           rgb_[2] = rgb_[2] + ihl;
         }
       }
-      return;
+      return nref + 1;
     }
     const int obj_id = intersected_object_id_;
     const Object& obj = objects_[obj_id];
@@ -69,7 +69,7 @@ inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> vo
     }
     const R w = R(-2.0) * dot(dir, nvector_);
     accum(dir, w, nvector_);
-    // Only the geometry the pixel keeps when replaying earlier rows (render_rows).
+    // Only the geometry the pixel keeps when tracing skipped rows again (band_rows.hpp).
     if constexpr (kLight) {
       const R hilight_scale = energy * obj.hilight;
       const R bright = -dot(nvector_, light_) * diffuse;
@@ -80,11 +80,12 @@ inline auto Tracer<M>::trace_ray(int nref, R energy, R* dir, Pixel& pixel) -> vo
     }
     // original: below this energy the next slot's surface id is not reset
     // and keeps whatever an earlier row left there.
-    if (!(R(0.1) < energy)) return;
+    if (!(R(0.1) < energy)) return nref + 1;
     if (nref < kMaxDepth - 1) pixel.surface_ids[nref + 1] = -1;
-    if (obj.reflection != kReflectMirror) return;
+    if (obj.reflection != kReflectMirror) return nref < kMaxDepth - 1 ? nref + 2 : kMaxDepth;
     energy = energy * (R(1.0) - obj.diffuse);
   }
+  return kMaxDepth;
 }
 
 }  // namespace minrt

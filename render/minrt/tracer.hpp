@@ -11,4 +11,5 @@
 #include "render/minrt/normals_textures.hpp"
 #include "render/minrt/direct_light.hpp"
 #include "render/minrt/diffuse_light.hpp"
+#include "render/minrt/band_rows.hpp"
 #include "render/minrt/mirrors.hpp"

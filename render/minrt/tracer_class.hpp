@@ -41,14 +41,18 @@ int pixel_channel(typename M::real x) {
   return M::to_int(x);
 }
 
-// Rows traced in full that workers rendering bands of one image hand to
-// each other (Tracer::render_rows): give offers a row's pixel state, take
-// copies it into `pixels` if some worker gave it. The bytes are what any
-// worker computes for that row, so taking only saves the work.
+// Rows that the workers rendering neighbouring bands of one image both
+// need traced in full (Tracer::render_rows): the first to ask traces the
+// row and gives its state; the other copies that state, waiting while the
+// row is being traced. The bytes are what any worker computes for that
+// row, so taking a row only saves the work.
 struct SharedRows {
   void* ctx = nullptr;
-  void (*give)(void* ctx, int row, const void* pixels, size_t bytes) = nullptr;
-  bool (*take)(void* ctx, int row, void* pixels, size_t bytes) = nullptr;
+  // True: the row's pixel line and slot rows were copied into `pixels` and
+  // `slots`. False: the caller traces the row itself, then calls give.
+  bool (*take)(void* ctx, int row, void* pixels, size_t pixel_bytes, void* slots, size_t slot_bytes) = nullptr;
+  void (*give)(void* ctx, int row, const void* pixels, size_t pixel_bytes, const void* slots,
+               size_t slot_bytes) = nullptr;
 };
 
 template <MathPolicy M>
@@ -108,9 +112,19 @@ class Tracer : private TracerState<M> {
 
   // Rows y0..y1-1 to `out` (no begin/end), the same bytes as render gives
   // them. Calls on one tracer must go down the image (y0 above the previous
-  // y1 - 1): a tracer replays what it has not traced of the rows above.
-  // Workers rendering in parallel each initialise a tracer of their own.
+  // y1 - 1). Workers rendering in parallel each initialise a tracer of their
+  // own and call prepare_bands; without it a tracer replays the rows it
+  // skips (band_rows.hpp). `shared` needs prepare_bands, and bands of at
+  // least two rows except the last.
   void render_rows(int y0, int y1, const RowSink& out, const SharedRows& shared = {});
+
+  // Lets render_rows skip the rows other workers render, keeping track of
+  // the pixel slots they could have written; after init, before any row.
+  // False when the arena lacks band_bytes(width).
+  bool prepare_bands(Arena& arena);
+  static constexpr size_t band_bytes(int width) {
+    return Arena::footprint<int16_t>(3 * static_cast<size_t>(width) * kMaxDepth);
+  }
 
   int reflection_count() const { return n_reflections_; }
 
@@ -154,6 +168,7 @@ class Tracer : private TracerState<M> {
   using S::n_reflections_;
   using S::lines_;
   using S::lines_through_;
+  using S::slot_rows_;
   using S::row_;
   using S::solver_dist_;
   using S::intsec_rectside_;
@@ -396,9 +411,11 @@ class Tracer : private TracerState<M> {
 
   // Follows the eye ray and its mirror reflections, filling `pixel`.
   // kLight false: only what the pixel keeps (surfaces, points, normals,
-  // energies), no light; for replaying rows (render_rows).
+  // energies), no light; for the rows a band skipped (band_rows.hpp).
+  // Returns the slot after the last it wrote (a surface, or the -1 that
+  // ends the list); the later slots keep what earlier rows left there.
   template <bool kLight = true>
-  void trace_ray(int nref, R energy, R* dir, Pixel& pixel);
+  int trace_ray(int nref, R energy, R* dir, Pixel& pixel);
 
   // --- diffuse light ------------------------------------------------------
 
@@ -421,7 +438,19 @@ class Tracer : private TracerState<M> {
   // kFull false: the pixels' geometry only (trace_ray<false>).
   template <bool kFull>
   void pretrace_line(Pixel* line, int y, int group_id);
+  // Row y's eye ray through pixel x, as pretrace_line computes it.
+  void eye_ray(int x, int y, R* dir) const;
   void scan_pixels(int y, Pixel* prev, Pixel* cur, Pixel* next);
+
+  // --- rows in bands (band_rows.hpp) --------------------------------------
+
+  Pixel* line_of(int y) const { return lines_[(y + 1) % 3]; }
+  int16_t* slot_rows_of(int y, int x) const { return slot_rows_ + ((y + 1) % 3 * width_ + x) * kMaxDepth; }
+  // After the full trace of row y wrote slots 0..written-1 of `pixel`
+  // (column x): the slot rows, and the slots that trace lets the diffuse
+  // pass read brought up to date (resolve_slots).
+  void track_slots(Pixel& pixel, int x, int y, int written);
+  void resolve_slots(Pixel& pixel, int16_t* rows, int x, int y, int n);
 
   // --- diffuse direction tables -------------------------------------------
 

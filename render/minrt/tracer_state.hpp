@@ -158,6 +158,10 @@ struct TracerState {
   int n_reflections_ = 0;
   Pixel* lines_[3] = {};
   int lines_through_ = -1;  // the last row traced into lines_
+  // Rows in bands (band_rows.hpp): for each slot of each pixel of lines_,
+  // the row as of which it holds what the one-thread render has there;
+  // null unless prepare_bands gave it memory.
+  int16_t* slot_rows_ = nullptr;
   uint8_t* row_ = nullptr;  // the finished row, 3 bytes a pixel
 
   R solver_dist_ = 0;

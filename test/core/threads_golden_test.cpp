@@ -1,8 +1,8 @@
 // Rows rendered on several threads (minrt --threads) give the bytes of one
 // thread: every reference scene at 128x128 against the original's sha256,
 // odd sizes and the generated scenes against the one-thread render. The
-// workers replay the rows above their bands (the original reads stale pixel
-// slots), which ss20 and tsu3 depend on.
+// workers look up the slots that rows above their bands left (the original
+// reads stale pixel slots), which ss20 and tsu3 depend on.
 #include <catch2/catch.hpp>
 
 #include "sha256.hpp"
