@@ -30,12 +30,13 @@
 
 namespace minrt::host {
 
-// Rows in the band that starts at row y0: 16 while much of the image is
-// left, fewer towards the end (a quarter of each worker's share of what is
-// left) so that no worker waits long for the last band; at least 2, as
-// render_rows's row sharing needs.
+// Rows in the band that starts at row y0: half of each worker's share of
+// what is left, so that the bands shrink towards the end and the workers
+// finish together, at most 24 and at least 8: where two bands meet, the
+// later one traces the shared rows first thing and the earlier one needs
+// them last, and shorter bands would make it wait for them.
 inline int minrt_band_rows(int height, int threads, int y0) {
-  return std::clamp((height - y0) / (4 * threads), 2, 16);
+  return std::clamp((height - y0) / (2 * threads), 8, 24);
 }
 
 // Rows traced in full that two workers need (SharedRows): one slot per row.
