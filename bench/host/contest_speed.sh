@@ -68,9 +68,13 @@ for i in "${!names[@]}"; do
 done
 
 seconds() {  # input-file command... ; prints "wall cpu" seconds (cpu: user + system)
-  local input=$1; shift
-  /usr/bin/time -f '%e %U %S' -o "$tmp/time" "$@" <"$input" >/dev/null
-  awk '{printf "%.3f %.3f\n", $1, $2 + $3}' "$tmp/time"
+  # Wall time from bash's microsecond clock: time's %e has 10 ms steps, 2.5%
+  # of a 0.4 s run.
+  local input=$1 start end; shift
+  start=$EPOCHREALTIME
+  /usr/bin/time -f '%U %S' -o "$tmp/time" "$@" <"$input" >/dev/null
+  end=$EPOCHREALTIME
+  awk -v s="$start" -v e="$end" '{printf "%.3f %.3f\n", e - s, $1 + $2}' "$tmp/time"
 }
 median() { sort -g | awk '{a[NR]=$1} END{print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 

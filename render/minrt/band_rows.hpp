@@ -89,8 +89,9 @@ inline auto Tracer<M>::resolve_slots(Pixel& pixel, int16_t* rows, int x, int y, 
   while (n < kMaxDepth) {
     if (q > rows[n]) {  // rows q and above may have written slot n since
       if (traced != q) {
-        R dir[3];
-        eye_ray(x, q, dir);
+        R row[3], dir[3];
+        eye_row(q, row);
+        eye_ray(row, x, dir);
         copy3(startp_, viewpoint_);
         written = trace_ray<false>(0, R(1.0), dir, older);
         traced = q;

@@ -104,21 +104,30 @@ inline auto Tracer<M>::try_exploit_neighbors(int x, Pixel* prev, Pixel* cur, Pix
 }
 
 template <MathPolicy M>
-inline auto Tracer<M>::eye_ray(int x, int y, R* dir) const -> void {
+inline auto Tracer<M>::eye_row(int y, R* row) const -> void {
   const R ydisp = scan_pitch_ * M::from_int(y - center_[1]);
+  row[0] = ydisp * screeny_[0] + screenz_[0];
+  row[1] = ydisp * screeny_[1] + screenz_[1];
+  row[2] = ydisp * screeny_[2] + screenz_[2];
+}
+
+template <MathPolicy M>
+inline auto Tracer<M>::eye_ray(const R* row, int x, R* dir) const -> void {
   const R xdisp = scan_pitch_ * M::from_int(x - center_[0]);
-  dir[0] = xdisp * screenx_[0] + (ydisp * screeny_[0] + screenz_[0]);
-  dir[1] = xdisp * screenx_[1] + (ydisp * screeny_[1] + screenz_[1]);
-  dir[2] = xdisp * screenx_[2] + (ydisp * screeny_[2] + screenz_[2]);
+  dir[0] = xdisp * screenx_[0] + row[0];
+  dir[1] = xdisp * screenx_[1] + row[1];
+  dir[2] = xdisp * screenx_[2] + row[2];
   normalize(dir, false);
 }
 
 template <MathPolicy M>
 template <bool kFull>
 inline auto Tracer<M>::pretrace_line(Pixel* line, int y, int group_id) -> void {
+  R row[3];
+  eye_row(y, row);
   for (int x = width_ - 1; x >= 0; --x) {
     R dir[3];
-    eye_ray(x, y, dir);
+    eye_ray(row, x, dir);
     zero3(rgb_);
     copy3(startp_, viewpoint_);
     [[maybe_unused]] const int written = trace_ray<kFull>(0, R(1.0), dir, line[x]);

@@ -438,8 +438,9 @@ class Tracer : private TracerState<M> {
   // kFull false: the pixels' geometry only (trace_ray<false>).
   template <bool kFull>
   void pretrace_line(Pixel* line, int y, int group_id);
-  // Row y's eye ray through pixel x, as pretrace_line computes it.
-  void eye_ray(int x, int y, R* dir) const;
+  // The eye ray through pixel x of a row: eye_row gives the row's part.
+  void eye_row(int y, R* row) const;
+  void eye_ray(const R* row, int x, R* dir) const;
   void scan_pixels(int y, Pixel* prev, Pixel* cur, Pixel* next);
 
   // --- rows in bands (band_rows.hpp) --------------------------------------
