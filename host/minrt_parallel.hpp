@@ -6,7 +6,7 @@
 // the one-thread render (render/minrt/band_rows.hpp). The calling thread's
 // worker uses the tracer prepare_sld set up; the others set theirs up in
 // their own threads. The rows where two bands meet are traced once and
-// handed over (RowExchange), and finished rows go to the sink in order as
+// handed over when they are ready (RowExchange), and finished rows go to the sink in order as
 // soon as the rows above them are done (RowsInOrder).
 #pragma once
 
@@ -34,14 +34,16 @@ namespace minrt::host {
 // what is left, so that the bands shrink towards the end and the workers
 // finish together, at most 24 and at least 8: where two bands meet, the
 // later one traces the shared rows first thing and the earlier one needs
-// them last, and shorter bands would make it wait for them.
+// them last, and with shorter bands it would often find them still being
+// traced and trace them too.
 inline int minrt_band_rows(int height, int threads, int y0) {
   return std::clamp((height - y0) / (2 * threads), 8, 24);
 }
 
 // Rows traced in full that two workers need (SharedRows): one slot per row.
 // The first worker to ask traces the row and gives a copy of its state; the
-// second copies it out, waiting (blocked, not spinning) while it is traced.
+// second copies it out, or traces the row too if it is still being traced:
+// no worker ever waits for another, which may have lost its core.
 class RowExchange {
  public:
   explicit RowExchange(int height) : states_(static_cast<size_t>(height)), copies_(static_cast<size_t>(height)) {}
@@ -66,18 +68,16 @@ class RowExchange {
 
  private:
   // kFree -> kTracing (the first taker) -> kReady (given) -> kTaken; or
-  // kTracing -> kTaken when no memory was left for the copy.
+  // kTracing -> kTaken when the second taker traces it too, or no memory was
+  // left for the copy.
   enum : int { kFree, kTracing, kReady, kTaken };
 
   bool take(size_t row, void* pixels, size_t pixel_bytes, void* slots, size_t slot_bytes) {
     std::atomic<int>& state = states_[row];
     int s = kFree;
     if (state.compare_exchange_strong(s, kTracing, std::memory_order_acq_rel)) return false;
-    while (s == kTracing) {
-      state.wait(kTracing, std::memory_order_acquire);
-      s = state.load(std::memory_order_acquire);
-    }
-    // A third taker (a one-row band) or a failed copy: trace it again.
+    if (s == kTracing && state.compare_exchange_strong(s, kTaken, std::memory_order_acq_rel)) return false;
+    // A third taker (a one-row band) or no copy: trace it again.
     if (s != kReady || !state.compare_exchange_strong(s, kTaken, std::memory_order_acq_rel)) return false;
     unsigned char* copy = copies_[row];
     copies_[row] = nullptr;
@@ -90,7 +90,7 @@ class RowExchange {
 
   void give(size_t row, const void* pixels, size_t pixel_bytes, const void* slots, size_t slot_bytes) {
     std::atomic<int>& state = states_[row];
-    if (state.load(std::memory_order_acquire) != kTracing) return;  // traced again by a later taker
+    if (state.load(std::memory_order_acquire) != kTracing) return;  // the other traces it too
     unsigned char* copy = nullptr;
     {
       std::lock_guard<std::mutex> lock(spare_mutex_);
@@ -106,13 +106,18 @@ class RowExchange {
         }
       }
     }
-    if (copy != nullptr) {
-      std::memcpy(copy, pixels, pixel_bytes);
-      std::memcpy(copy + pixel_bytes, slots, slot_bytes);
-      copies_[row] = copy;
+    if (copy == nullptr) {
+      state.store(kTaken, std::memory_order_release);
+      return;
     }
-    state.store(copy != nullptr ? kReady : kTaken, std::memory_order_release);
-    state.notify_all();
+    std::memcpy(copy, pixels, pixel_bytes);
+    std::memcpy(copy + pixel_bytes, slots, slot_bytes);
+    copies_[row] = copy;
+    int s = kTracing;
+    if (state.compare_exchange_strong(s, kReady, std::memory_order_acq_rel)) return;
+    copies_[row] = nullptr;  // the other took to tracing it meanwhile
+    std::lock_guard<std::mutex> lock(spare_mutex_);
+    spare_.push_back(copy);
   }
 
   std::vector<std::atomic<int>> states_;

@@ -43,9 +43,9 @@ int pixel_channel(typename M::real x) {
 
 // Rows that the workers rendering neighbouring bands of one image both
 // need traced in full (Tracer::render_rows): the first to ask traces the
-// row and gives its state; the other copies that state, waiting while the
-// row is being traced. The bytes are what any worker computes for that
-// row, so taking a row only saves the work.
+// row and gives its state; the other copies that state if it is ready. The
+// bytes are what any worker computes for that row, so taking a row only
+// saves the work.
 struct SharedRows {
   void* ctx = nullptr;
   // True: the row's pixel line and slot rows were copied into `pixels` and
