@@ -95,30 +95,13 @@ inline void dump_pair(const std::string& a, const std::string& b) {
 
 // ---------------------------------------------------------------- processes
 
-struct Run {
-  int status = -1;
-  std::string err;
-};
+using Run = minrt::test::CommandRun;
 
 inline Run run(const std::string& cmd_line, const std::string& cwd) {
-  char errf[] = "/tmp/eprobe-err-XXXXXX";
-  const int fd = mkstemp(errf);
-  REQUIRE(fd >= 0);
-  close(fd);
-  const std::string cmd = "cd '" + cwd + "' && " + cmd_line + " 2>" + errf + " >/dev/null </dev/null";
-  const int rc = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.err = minrt::test::read_file(errf);
-  std::remove(errf);
-  return r;
+  return minrt::test::run_in_dir(cwd, cmd_line);
 }
 
-inline std::string temp_dir() {
-  char d[] = "/tmp/eprobe-XXXXXX";
-  REQUIRE(mkdtemp(d) != nullptr);
-  return d;
-}
+inline std::string temp_dir() { return minrt::test::temp_dir("eprobe"); }
 
 inline void write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

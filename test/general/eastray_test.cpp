@@ -101,31 +101,13 @@ void check_pair(const std::string& a, const std::string& b, int edge = 6) {
   CHECK(n <= edge);
 }
 
-struct Run {
-  int status = -1;
-  std::string err;
-};
+using Run = minrt::test::CommandRun;
 
-Run run_minrt(const std::string& args, const std::string& cwd = "") {
-  char errf[] = "/tmp/minrt-ea-err-XXXXXX";
-  const int fd = mkstemp(errf);
-  REQUIRE(fd >= 0);
-  close(fd);
-  std::string cmd = std::string(MINRT_BIN) + " " + args + " 2>" + errf + " >/dev/null </dev/null";
-  if (!cwd.empty()) cmd = "cd '" + cwd + "' && " + cmd;
-  const int rc = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.err = minrt::test::read_file(errf);
-  std::remove(errf);
-  return r;
+Run run_minrt(const std::string& args, const std::string& cwd) {
+  return minrt::test::run_in_dir(cwd, std::string(MINRT_BIN) + " " + args);
 }
 
-std::string temp_dir() {
-  char d[] = "/tmp/minrt-ea-XXXXXX";
-  REQUIRE(mkdtemp(d) != nullptr);
-  return d;
-}
+std::string temp_dir() { return minrt::test::temp_dir("ea"); }
 
 void write(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
