@@ -117,13 +117,35 @@ void csg_nearest(const CsgScene<typename M::real>& s, int32_t id, const Vec3<typ
     csg_nearest<M>(s, c, o, d, t_min, t_max, hit, shadow);
 }
 
+// Every item of a hierarchy's leaves, nearer child first, boxes that begin
+// beyond t_max skipped: `visit(ref)` may lower t_max as it finds hits.
+template <class R, class Visit>
+[[gnu::always_inline]] inline void visit_nearer_first(const BvhNode<R>* nodes, const uint32_t* refs,
+                                                      const Vec3<R>& o, const Vec3<R>& d, const R& t_max,
+                                                      Visit&& visit) {
+  const Vec3<R> inv = inverse_dir(d);
+  uint32_t stack[kBvhStack];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const BvhNode<R>& nd = nodes[stack[--top]];
+    if (box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
+    if (nd.count > 0) {
+      for (uint32_t k = 0; k < nd.count; ++k) visit(refs[nd.index + k]);
+      continue;
+    }
+    const bool flip = d[nd.axis] < R(0);
+    stack[top++] = nd.index + (flip ? 0u : 1u);  // the farther child waits
+    stack[top++] = nd.index + (flip ? 1u : 0u);
+  }
+}
+
 // The nearest hit among the top node's objects, nearer boxes first.
 template <class M>
 void csg_nearest_object(const CsgScene<typename M::real>& s, const CsgObjects<typename M::real>& objects,
                         const Vec3<typename M::real>& o, const Vec3<typename M::real>& d, typename M::real t_min,
                         typename M::real& t_max, SolidHit<typename M::real>& hit, bool shadow) {
   using R = typename M::real;
-  using V = Vec3<R>;
   constexpr int32_t kNoObject = 0x7fffffff;  // the caller's t_max stays exclusive
   int32_t best = kNoObject;
   auto test = [&](int32_t id) {
@@ -137,21 +159,8 @@ void csg_nearest_object(const CsgScene<typename M::real>& s, const CsgObjects<ty
   };
   for (int32_t i = 0; i < objects.unbounded_count; ++i) test(objects.unbounded[i]);
   if (objects.nodes == nullptr) return;
-  const V inv = inverse_dir(d);
-  uint32_t stack[kBvhStack];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const BvhNode<R>& nd = objects.nodes[stack[--top]];
-    if (box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
-    if (nd.count > 0) {
-      for (uint32_t k = 0; k < nd.count; ++k) test(static_cast<int32_t>(objects.refs[nd.index + k]));
-      continue;
-    }
-    const bool flip = d[nd.axis] < R(0);
-    stack[top++] = nd.index + (flip ? 0u : 1u);  // the farther child waits
-    stack[top++] = nd.index + (flip ? 1u : 0u);
-  }
+  visit_nearer_first(objects.nodes, objects.refs, o, d, t_max,
+                     [&](uint32_t ref) { test(static_cast<int32_t>(ref)); });
 }
 
 }  // namespace minrt::general

@@ -112,7 +112,6 @@ void Tracer<M, F>::eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>&
 template <class M, uint32_t F>
 typename Tracer<M, F>::EastrayHit Tracer<M, F>::eastray_nearest(const Vec3<R>& o, const Vec3<R>& d, R t_min,
                                                                 R t_max, bool shadow) const {
-  using V = Vec3<R>;
   EastrayHit hit;
   if constexpr ((F & kQuadrics) != 0) {
     if (s_.csg_root != model::kNoNode) {
@@ -138,29 +137,15 @@ typename Tracer<M, F>::EastrayHit Tracer<M, F>::eastray_nearest(const Vec3<R>& o
     }
     // Nearer child first, boxes beyond the nearest hit skipped; of equally
     // near triangles the first in the list wins, whatever the visit order.
-    const V inv = inverse_dir(d);
     constexpr uint32_t kNoTriangle = 0xffffffffu;  // the t_max so far stays exclusive
     uint32_t best = kNoTriangle;
-    uint32_t stack[kBvhStack];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const BvhNode<R>& nd = bvh_.nodes[stack[--top]];
-      if (box_entry(nd.box, o, inv, next_above(t_max)) < R(0)) continue;
-      if (nd.count > 0) {
-        for (uint32_t k = 0; k < nd.count; ++k) {
-          const uint32_t i = bvh_.refs[nd.index + k] & ~kTriangleBit;
-          const R limit = best != kNoTriangle && i < best ? next_above(t_max) : t_max;
-          R reached = limit;
-          eastray_triangle(i, o, d, t_min, reached, hit, shadow);
-          if (reached != limit) t_max = reached, best = i;
-        }
-        continue;
-      }
-      const bool flip = d[nd.axis] < R(0);
-      stack[top++] = nd.index + (flip ? 0u : 1u);  // the farther child waits
-      stack[top++] = nd.index + (flip ? 1u : 0u);
-    }
+    visit_nearer_first(bvh_.nodes, bvh_.refs, o, d, t_max, [&](uint32_t ref) {
+      const uint32_t i = ref & ~kTriangleBit;
+      const R limit = best != kNoTriangle && i < best ? next_above(t_max) : t_max;
+      R reached = limit;
+      eastray_triangle(i, o, d, t_min, reached, hit, shadow);
+      if (reached != limit) t_max = reached, best = i;
+    });
   }
   return hit;
 }
