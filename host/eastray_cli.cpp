@@ -53,7 +53,7 @@ struct WarningContext {
 void print_warning(void* ctx, const Diagnostic& d) {
   const auto* w = static_cast<const WarningContext*>(ctx);
   if (w->quiet) return;
-  std::fprintf(stderr, "%s:%d: %s\n", w->expanded->where(d.pos.line).c_str(), d.pos.col, d.message);
+  std::fprintf(stderr, "%s: %s\n", w->expanded->at(d.pos.line, d.pos.col).c_str(), d.message);
 }
 
 template <class M>
@@ -80,7 +80,7 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
                                                      WarningSink{&print_warning, &wc});
   Diagnostic d;
   if (!reader->read(d)) {
-    error = x.where(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
+    error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
     return false;
   }
   output_statement = scene.output;
@@ -172,7 +172,7 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene, arena);
   Diagnostic d;
   if (!reader->read(d)) {
-    error = x.where(d.pos.line) + ":" + std::to_string(d.pos.col) + ": error: " + d.message;
+    error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
     return false;
   }
   width = scene.width;

@@ -258,8 +258,13 @@ std::string ExpandedEastray::where(int line) const {
     const EastrayLineOrigin& o = lines[static_cast<std::size_t>(line - 1)];
     return files[static_cast<std::size_t>(o.file)] + ":" + std::to_string(o.line);
   }
-  const std::string last = files.empty() ? std::string("<scene>") : files[0];
-  return last + ":" + std::to_string(lines.empty() ? 1 : lines.back().line + 1);
+  const std::string scene = files.empty() ? std::string("<scene>") : files[0];
+  return scene + ":" + std::to_string(end_line);
+}
+
+std::string ExpandedEastray::at(int line, int col) const {
+  if (line >= 1 && line <= static_cast<int>(lines.size())) return where(line) + ":" + std::to_string(col);
+  return where(line) + ":" + std::to_string(end_col);
 }
 
 bool preprocess_eastray(const std::string& path, const std::string& shown, const std::string& text,
@@ -269,6 +274,20 @@ bool preprocess_eastray(const std::string& path, const std::string& shown, const
   if (!x.file(path == "-" ? std::string() : path, shown, text, 0)) {
     error = x.error();
     return false;
+  }
+  // The expanded text ends every line with a newline; the scene file may
+  // not (nor, after a Ctrl-Z, at it), and its end is where it really stops.
+  const std::size_t dos_eof = text.find('\x1a');
+  const std::size_t length = dos_eof == std::string::npos ? text.size() : dos_eof;
+  out.end_line = 1;
+  out.end_col = 1;
+  for (std::size_t i = 0; i < length; ++i) {
+    if (text[i] == '\n') {
+      ++out.end_line;
+      out.end_col = 1;
+    } else {
+      ++out.end_col;
+    }
   }
   return true;
 }

@@ -19,9 +19,17 @@ struct ExpandedEastray {
   std::string text;                       // comments removed, macros expanded, includes inlined
   std::vector<std::string> files;         // as named in messages
   std::vector<EastrayLineOrigin> lines;   // origin of each line of `text`
+  // Where the scene's own file ends, just after its last character: past a
+  // final newline that is the line after it, column 1; without one, the
+  // last line, one column past its end.
+  int end_line = 1;
+  int end_col = 1;
 
   // "FILE:LINE" of a line of `text` (1-based).
   std::string where(int line) const;
+  // "FILE:LINE:COL" of a position in `text`; a position past its last line
+  // (the end of the scene) is the scene file's end.
+  std::string at(int line, int col) const;
 };
 
 // Expands `text`, read from `path` (shown as `shown`). False with a located

@@ -138,6 +138,13 @@ std::vector<Case> cases() {
       // whole files
       {"empty", "", "empty.ray:1:1:", "no main object"},
       {"only-a-comment", "/* nothing */\n", "only-a-comment.ray:2:1:", "no main object"},
+      // the end of a file without a final newline is on its last line,
+      // just past its last character (also where a Ctrl-Z ends the text)
+      {"no-final-newline", "display 32 24 0 0 31 23 1 1 1 ", "no-final-newline.ray:1:31:",
+       "expected ';' to end 'display', found the end of the scene"},
+      {"no-final-newline-8", h + "obj [ 2 grey 1  0 1 0  1 ; ]\nshadow", "no-final-newline-8.ray:8:7:",
+       "expected a number (shadow switch), found the end of the scene"},
+      {"ctrl-z-mid-line", "display 32 24 0 0 31 23 1 1 1\x1a ;\n", "ctrl-z-mid-line.ray:1:30:", "expected ';' to end 'display'"},
       {"nul-byte", std::string("display 32 24 0 0 31 23 1 1 1 \0 ;\n", 34), "nul-byte.ray:1:31:", "expected ';'"},
       {"long-name", h + "obj [ 2 grey 1  0 1 0  1 ; ]\n" + std::string(3000000, 'a') + "\n", "long-name.ray:8:1:",
        "unknown statement 'aaaa"},
@@ -181,6 +188,13 @@ TEST_CASE("eastray probe: invalid inputs get one located error line, status 2, n
   all.push_back({"include-70-deep", std::string(kHead) + "obj [\n#include \"f0.h\"\n]\n", "f63.h:1:10:",
                  "#include nested deeper than 64"});
   all.push_back({"include-ring", std::string(kHead) + "#include \"ring1.h\"\nobj [ ]\n", "ring3.h:1:10:", "#include cycle"});
+  // The scene ends after an include: its end is the scene file's, not the
+  // line after the included file's last.
+  write(dir + "/tail3.h", "\n\n\n");
+  all.push_back({"include-at-end", std::string(kHead) + "obj [ 2 grey 1  0 1 0  1 ; ]\nshadow\n#include \"tail3.h\"\n",
+                 "include-at-end.ray:10:1:", "expected a number (shadow switch), found the end of the scene"});
+  all.push_back({"include-at-end-no-newline", std::string(kHead) + "obj [ 2 grey 1  0 1 0  1 ; ]\nshadow\n#include \"tail3.h\"",
+                 "include-at-end-no-newline.ray:9:19:", "expected a number (shadow switch), found the end of the scene"});
   all.push_back({"include-angle-missing", std::string(kHead) + "#include <nothere.h>\nobj [ ]\n", "include-angle-missing.ray:7:10:",
                  "nothere.h"});
   for (const Case& c : all) {
