@@ -187,6 +187,20 @@ class Reader {
     out = M::to_int(v);
     return true;
   }
+  // A switch: the manual's explanations (lines 92, 128, 249) give 1 for on
+  // and 0 for off, nothing else.
+  bool on_off(bool& out, const char* what) {
+    const Token at = tok_;
+    R v;
+    if (!number(v, what)) return false;
+    if (!(v == R(0) || v == R(1))) {
+      fail_at(at.pos, what);
+      error_->text(" must be 0 or 1, found ").quoted(at.s, at.length);
+      return false;
+    }
+    out = v == R(1);
+    return true;
+  }
   bool expect(char c, const char* what) {
     if (!tok_.is(c)) {
       char msg[128] = "expected '";
@@ -253,12 +267,10 @@ class Reader {
       return end_statement("display");
     }
     if (st.is("condition")) {
-      R inner;
       if (!integer(scene_.max_depth, "condition depth", 0, kMaxDepth) || !number(scene_.min_weight, "condition minimum weight") ||
-          !number(scene_.eps, "condition eps") || !number(inner, "condition inner"))
+          !number(scene_.eps, "condition eps") || !on_off(scene_.inner, "condition inner switch"))
         return false;
       if (scene_.eps < R(0)) scene_.eps = -scene_.eps;
-      scene_.inner = inner != R(0);
       return end_statement("condition");
     }
     if (st.is("anti")) {
@@ -280,17 +292,13 @@ class Reader {
       return end_statement("camera");
     }
     if (st.is("mist")) {
-      R sw;
-      if (!number(scene_.mist_half, "mist half distance") || !number(sw, "mist switch")) return false;
-      scene_.mist_to_sky = sw != R(0);
+      if (!number(scene_.mist_half, "mist half distance") || !on_off(scene_.mist_to_sky, "mist switch")) return false;
       return end_statement("mist");
     }
     if (st.is("sky")) return vec(scene_.sky, "sky colour") && end_statement("sky");
     if (st.is("env")) return vec(scene_.env, "env colour") && end_statement("env");
     if (st.is("shadow")) {
-      R v;
-      if (!number(v, "shadow switch")) return false;
-      scene_.shadows = v != R(0);
+      if (!on_off(scene_.shadows, "shadow switch")) return false;
       if (tok_.is(';')) advance();  // the manual's syntax line has none (line 246)
       return true;
     }

@@ -135,6 +135,20 @@ std::vector<Case> cases() {
       {"display-too-wide", "display 4096 24 0 0 31 23 1 1 1 ;\nobj [ ]\n", "display-too-wide.ray:1:9:", "display width"},
       {"display-step-zero", "display 32 24 0 0 31 23 0 1 1 ;\nobj [ ]\n", "display-step-zero.ray:1:25:", "display step"},
       {"condition-negative", "condition -1 0.01 0.00001 0 ;\nobj [ ]\n", "condition-negative.ray:1:11:", "condition depth"},
+      // switches: the manual's explanations know 1 and 0 only (lines 92, 128, 249)
+      {"shadow-two", h + "shadow 2 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "shadow-two.ray:7:8:",
+       "shadow switch must be 0 or 1, found '2'"},
+      {"shadow-minus-one", h + "shadow -1\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "shadow-minus-one.ray:7:8:",
+       "shadow switch must be 0 or 1, found '-1'"},
+      {"shadow-half", h + "shadow 0.5 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "shadow-half.ray:7:8:",
+       "shadow switch must be 0 or 1, found '0.5'"},
+      {"shadow-on", h + "shadow on ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "shadow-on.ray:7:8:", "expected a number (shadow switch)"},
+      {"mist-switch-two", h + "mist 20 2 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "mist-switch-two.ray:7:9:",
+       "mist switch must be 0 or 1, found '2'"},
+      {"condition-inner-two", "condition 4 0.01 0.00001 2 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "condition-inner-two.ray:1:26:",
+       "condition inner switch must be 0 or 1, found '2'"},
+      {"condition-inner-minus", "condition 4 0.01 0.00001 -1 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n",
+       "condition-inner-minus.ray:1:26:", "condition inner switch must be 0 or 1, found '-1'"},
       // whole files
       {"empty", "", "empty.ray:1:1:", "no main object"},
       {"only-a-comment", "/* nothing */\n", "only-a-comment.ray:2:1:", "no main object"},
@@ -248,7 +262,7 @@ TEST_CASE("eastray probe: host-send refuses invalid inputs before sending, over 
 TEST_CASE("eastray probe: the added invalid scene files, through minrt and host-send", "[eastray][eprobe]") {
   const std::string dir = EASTRAY_BAD_DIR;
   const std::string out_dir = temp_dir();
-  for (const char* n : {"sign-not-one", "ior-zero-glass", "range-kind-polygon", "number-too-long"}) {
+  for (const char* n : {"sign-not-one", "ior-zero-glass", "range-kind-polygon", "number-too-long", "switch-not-0-or-1"}) {
     INFO(n);
     const std::string file = std::string(n) + ".ray";
     const std::string text = minrt::test::read_file(dir + "/" + file);
