@@ -879,7 +879,19 @@ class Reader {
       case 0: {
         const R* a = n == 13 ? p + 3 : p;
         if (n == 13) placement.t = c;
-        for (int i = 0; i < 10; ++i) q.q[i] = a[i];
+        bool any = false;
+        for (int i = 0; i < 10; ++i) {
+          q.q[i] = a[i];
+          any = any || a[i] != R(0);
+        }
+        // All zero has no surface. Numbers below the precision's least read
+        // as 0, so tiny coefficients (the same surface at any scale) would
+        // vanish in float alone: say so rather than draw nothing.
+        if (!any)
+          return fail_at(at, sizeof(R) == 4 ? "the quadric's coefficients all read as 0 (in float, anything below about 1.4e-45 "
+                                              "is 0): it has no surface; scaling all ten up keeps its shape"
+                                            : "the quadric's coefficients all read as 0 (in double, anything below about 4.9e-324 "
+                                              "is 0): it has no surface; scaling all ten up keeps its shape");
         break;
       }
       case 1:

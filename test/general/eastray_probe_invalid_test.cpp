@@ -322,3 +322,45 @@ TEST_CASE("eastray probe: an invalid scene writes nothing under its output state
   CHECK(r.err.rfind("<stdin>:1:9: error: undefined colour 'gold'", 0) == 0);
   CHECK_FALSE(exists(dir + "/s.png"));
 }
+
+// A quadric is the same surface at any scale, so a scene may write one with
+// tiny coefficients; below float's least number (about 1.4e-45) all ten read
+// as 0 and the object would silently vanish on the board's precision. It is
+// an error naming the object, in every precision where it happens (written
+// zeros too), and host-send, reading as the board does, refuses it.
+TEST_CASE("eastray probe: a quadric whose coefficients all read as 0 is a located error", "[eastray][eprobe]") {
+  const std::string dir = temp_dir();
+  const std::string tiny = "0 grey 1  1e-50 1e-50 1e-50 0 0 0 0 -2e-50 0 -1e-50 ;";
+  write(dir + "/tiny.ray", std::string(kHead) + "obj [ " + tiny + " ]\n");
+  write(dir + "/tiny-range.ray", std::string(kHead) + "obj [ ( " + tiny.substr(0, 2) + tiny.substr(10) +
+                                     " 2 grey 1  0 1 0  1 ; ) ]\n");
+  write(dir + "/zeros.ray", std::string(kHead) + "obj [ 2 grey 1  0 1 0  1 ;\n  0 grey 1  0 0 0 0 0 0 0 0 0 0 ; ]\n");
+  write(dir + "/tiny-double.ray", std::string(kHead) + "obj [ 0 grey 1  1e-400 1e-400 1e-400 0 0 0 0 0 0 -1e-400 ; ]\n");
+  const std::string message = "the quadric's coefficients all read as 0";
+  // Double keeps 1e-50: the scene renders there.
+  Run r = run(std::string(MINRT_BIN) + " -o d.png tiny.ray", dir);
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK(exists(dir + "/d.png"));
+  struct Case {
+    const char* file;
+    const char* precision;
+    const char* where;
+  };
+  for (const Case& c : {Case{"tiny.ray", "float", "tiny.ray:7:7:"}, Case{"tiny-range.ray", "float", "tiny-range.ray:7:9:"},
+                        Case{"zeros.ray", "double", "zeros.ray:8:3:"}, Case{"zeros.ray", "float", "zeros.ray:8:3:"},
+                        Case{"tiny-double.ray", "double", "tiny-double.ray:7:7:"}}) {
+    INFO(c.file << " in " << c.precision);
+    r = run(std::string(MINRT_BIN) + " --precision " + c.precision + " -o out.png " + c.file, dir);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.rfind(std::string(c.where) + " error: " + message, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(exists(dir + "/out.png"));
+  }
+  r = run(std::string(MINRT_SEND_BIN) + " --sim tiny.ray -o board.png", dir);
+  INFO(r.err);
+  CHECK(r.status != 0);
+  CHECK(r.err.find("scene rejected before sending: tiny.ray:7:7: error: " + message) != std::string::npos);
+  CHECK_FALSE(exists(dir + "/board.png"));
+}
