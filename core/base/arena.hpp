@@ -15,14 +15,26 @@ class Arena {
   // Zero-filled storage for n objects of T, or nullptr when it does not fit.
   template <class T>
   T* alloc_zeroed(size_t n) {
+    T* p = alloc_uninit<T>(n);
+    if (p != nullptr) {
+      uint8_t* b = reinterpret_cast<uint8_t*>(p);
+      for (size_t i = 0; i < n * sizeof(T); ++i) b[i] = 0;
+    }
+    return p;
+  }
+
+  // Storage for n objects of T left as the buffer held it, or nullptr when
+  // it does not fit: for arrays sized for the worst case whose items are
+  // each written whole before anything reads them, so the unused rest is
+  // never touched (on the host, never even paged in).
+  template <class T>
+  T* alloc_uninit(size_t n) {
     const size_t align = alignof(T);
     size_t start = (used_ + align - 1) & ~(align - 1);
     const size_t bytes = n * sizeof(T);
     if (start > top_ || bytes > top_ - start) return nullptr;
-    uint8_t* p = base_ + start;
-    for (size_t i = 0; i < bytes; ++i) p[i] = 0;
     used_ = start + bytes;
-    return reinterpret_cast<T*>(p);
+    return reinterpret_cast<T*>(base_ + start);
   }
 
   // Scratch storage taken from the top end, for what a reader collects

@@ -1153,6 +1153,7 @@ class Reader {
     for (int i = 1; i + 1 < count; ++i) {
       if (scene_.triangle_count >= scene_.triangle_capacity) return fail_at(at, "too many polygons for the memory");
       Triangle<R>& t = scene_.triangles[scene_.triangle_count];
+      t = Triangle<R>{};  // whole: the array is not zeroed (Scene::allocate)
       t.p0 = scene_.vertices[idx[0]];
       t.p1 = scene_.vertices[idx[i]];
       t.p2 = scene_.vertices[idx[i + 1]];
@@ -1162,6 +1163,7 @@ class Reader {
       t.material = static_cast<uint32_t>(fmat);
       t.order = static_cast<uint32_t>(scene_.triangle_count);
       MeshFace& f = scene_.faces[scene_.triangle_count];
+      f = MeshFace{};
       f.vertex[0] = idx[0], f.vertex[1] = idx[i], f.vertex[2] = idx[i + 1];
       f.smooth = smooth;
       f.no_shadow = no_shadow;

@@ -100,16 +100,19 @@ struct Scene : model::EastraySettings<R> {
            Arena::footprint<int32_t>(c.vertices);
   }
 
+  // The arrays are sized for the worst case of the text and not zeroed:
+  // the reader writes each item whole as it counts it, and nothing reads
+  // past the counts, so set-up costs what the scene uses.
   bool allocate(Arena& arena, const Capacities& c) {
-    lights = arena.alloc_zeroed<Light<R>>(static_cast<size_t>(c.lights));
-    materials = arena.alloc_zeroed<Material<R>>(static_cast<size_t>(c.materials));
-    primitives = arena.alloc_zeroed<Primitive<R>>(static_cast<size_t>(c.primitives));
-    nodes = arena.alloc_zeroed<Node>(static_cast<size_t>(c.nodes));
-    triangles = arena.alloc_zeroed<Triangle<R>>(static_cast<size_t>(c.triangles));
-    faces = arena.alloc_zeroed<MeshFace>(static_cast<size_t>(c.triangles));
-    vertices = arena.alloc_zeroed<Vec3<R>>(static_cast<size_t>(c.vertices));
-    vertex_normals = arena.alloc_zeroed<Vec3<R>>(static_cast<size_t>(c.vertices));
-    vertex_ids = arena.alloc_zeroed<int32_t>(static_cast<size_t>(c.vertices));
+    lights = arena.alloc_uninit<Light<R>>(static_cast<size_t>(c.lights));
+    materials = arena.alloc_uninit<Material<R>>(static_cast<size_t>(c.materials));
+    primitives = arena.alloc_uninit<Primitive<R>>(static_cast<size_t>(c.primitives));
+    nodes = arena.alloc_uninit<Node>(static_cast<size_t>(c.nodes));
+    triangles = arena.alloc_uninit<Triangle<R>>(static_cast<size_t>(c.triangles));
+    faces = arena.alloc_uninit<MeshFace>(static_cast<size_t>(c.triangles));
+    vertices = arena.alloc_uninit<Vec3<R>>(static_cast<size_t>(c.vertices));
+    vertex_normals = arena.alloc_uninit<Vec3<R>>(static_cast<size_t>(c.vertices));
+    vertex_ids = arena.alloc_uninit<int32_t>(static_cast<size_t>(c.vertices));
     light_capacity = c.lights;
     material_capacity = c.materials;
     primitive_capacity = c.primitives;
