@@ -196,8 +196,8 @@ inline auto Tracer<M>::shadow_limit(R center, R slab, bool flipped) -> R {
 }
 
 template <MathPolicy M>
-MINRT_INLINE auto Tracer<M>::record_hit(ObjectList and_net, const Object& m, int t0, const R* v, const R* start) -> void {
-  const R t0p = solver_dist_;
+MINRT_INLINE auto Tracer<M>::record_hit(ObjectList and_net, const Object& m, int t0, R t0p, const R* v,
+                                        const R* start) -> void {
   if (R(0) < t0p && t0p < tmin_) {
     const R t = t0p + R(0.01);
     const R q0 = v[0] * t + start[0];
@@ -226,7 +226,7 @@ inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
         const Object& m = **e;
         const int t0 = solver(m, dir, startp_);
         if (t0 != 0)
-          record_hit(*a, m, t0, dir, startp_);
+          record_hit(*a, m, t0, solver_dist_, dir, startp_);
         else if (!m.inverted)
           break;
       }
@@ -243,9 +243,9 @@ MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> 
     // A box the ray can only meet behind its start records nothing; as
     // the network's last member nothing else depends on its result.
     if (kCull && (m.ahead & dv.code) == 0 && e[1] == nullptr) break;
-    const int t0 = solver_fast2<true>(m, dv);
-    if (t0 != 0)
-      record_hit(net, m, t0, dv.v, startp_fast_);
+    const Solved s = solver_fast2<true>(m, dv);
+    if (s.code != 0)
+      record_hit(net, m, s.code, s.dist, dv.v, startp_fast_);
     else if (!m.inverted)
       break;
   }
@@ -256,9 +256,9 @@ MINRT_INLINE auto Tracer<M>::trace_live_network(const LiveNet& live, const DirVe
   const ObjectList net = live.net;
   for (int i = 0; i < live.solved; ++i) {
     const Object& m = *net[i];
-    const int t0 = solver_fast2<true>(m, dv);
-    if (t0 != 0)
-      record_hit(net, m, t0, dv.v, startp_fast_);
+    const Solved s = solver_fast2<true>(m, dv);
+    if (s.code != 0)
+      record_hit(net, m, s.code, s.dist, dv.v, startp_fast_);
     else if (!m.inverted)
       break;
   }
@@ -272,7 +272,10 @@ MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
     // The rows and networks the masks leave for this octant, in order.
     if ((live_built_ & (1u << dv.octant)) == 0) build_octant(dv.octant);
     for (const LiveRow* lr = live_rows_ + dv.octant * (n_or_rows_ + 1); lr->nets != nullptr; ++lr) {
-      if (lr->range != nullptr && !(solver_fast2(*lr->range, dv) != 0 && solver_dist_ < tmin_)) continue;
+      if (lr->range != nullptr) {
+        const Solved s = solver_fast2(*lr->range, dv);
+        if (!(s.code != 0 && s.dist < tmin_)) continue;
+      }
       for (const LiveNet* a = lr->nets; a->net != nullptr; ++a) trace_live_network(*a, dv);
     }
     return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
@@ -281,8 +284,10 @@ MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
   for (int r = 0; r < n_or_rows_; ++r) {
     const OrRow& row = or_rows_[r];
     if (kCull && (row.fwd_all & code) != 0) continue;
-    if (row.range != nullptr && !(solver_fast2(*row.range, dv) != 0 && solver_dist_ < tmin_))
-      continue;
+    if (row.range != nullptr) {
+      const Solved s = solver_fast2(*row.range, dv);
+      if (!(s.code != 0 && s.dist < tmin_)) continue;
+    }
     for (int k = 0; row.nets[k] != nullptr; ++k) {
       if (kCull && (row.fwd[k] & code) != 0) continue;
       trace_network<kCull>(row.nets[k], dv);

@@ -74,40 +74,27 @@ inline auto Tracer<M>::solver(const Object& m, const R* dir, const R* org) -> in
 }
 
 template <MathPolicy M>
-MINRT_INLINE auto Tracer<M>::solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2) -> int {
+MINRT_INLINE auto Tracer<M>::solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2) -> Solved {
   const R d0 = (c[0] - b0) * c[1];
-  if (fabs(d0 * v[1] + b1) < m.abc[1] && fabs(d0 * v[2] + b2) < m.abc[2]) {
-    solver_dist_ = d0;
-    return 1;
-  }
+  if (fabs(d0 * v[1] + b1) < m.abc[1] && fabs(d0 * v[2] + b2) < m.abc[2]) return Solved{1, d0};
   const R d1 = (c[2] - b1) * c[3];
-  if (fabs(d1 * v[0] + b0) < m.abc[0] && fabs(d1 * v[2] + b2) < m.abc[2]) {
-    solver_dist_ = d1;
-    return 2;
-  }
+  if (fabs(d1 * v[0] + b0) < m.abc[0] && fabs(d1 * v[2] + b2) < m.abc[2]) return Solved{2, d1};
   const R d2 = (c[4] - b2) * c[5];
-  if (fabs(d2 * v[0] + b0) < m.abc[0] && fabs(d2 * v[1] + b1) < m.abc[1]) {
-    solver_dist_ = d2;
-    return 3;
-  }
-  return 0;
+  if (fabs(d2 * v[0] + b0) < m.abc[0] && fabs(d2 * v[1] + b1) < m.abc[1]) return Solved{3, d2};
+  return Solved{0, R(0)};
 }
 
 template <MathPolicy M>
 template <bool kAheadOnly>
-MINRT_INLINE auto Tracer<M>::solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc) -> int {
+MINRT_INLINE auto Tracer<M>::solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc) -> Solved {
   const R aa = c[0];
   const R neg_bb = c[1] * b0 + c[2] * b1 + c[3] * b2;
   const R d = sqr(neg_bb) - aa * cc;
   if (d > R(0)) {
-    if (kAheadOnly && neg_bb <= c[5]) {
-      solver_dist_ = R(0);
-      return 1;
-    }
-    solver_dist_ = m.inverted ? (neg_bb + M::sqrt(d)) * c[4] : (neg_bb - M::sqrt(d)) * c[4];
-    return 1;
+    if (kAheadOnly && neg_bb <= c[5]) return Solved{1, R(0)};
+    return Solved{1, m.inverted ? (neg_bb + M::sqrt(d)) * c[4] : (neg_bb - M::sqrt(d)) * c[4]};
   }
-  return 0;
+  return Solved{0, R(0)};
 }
 
 template <MathPolicy M>
@@ -121,29 +108,27 @@ inline auto Tracer<M>::solver_fast(const Object& m, const DirVec& dv, const R* o
   const R b1 = org[1] - m.center[1];
   const R b2 = org[2] - m.center[2];
   const R* c = consts_of(dv, m);
-  if (m.form == kFormBox) return solve_box_fast(m, dv.v, c, b0, b1, b2);
-  if (m.form == kFormPlane) {
-    if (c[0] < R(0)) {
-      solver_dist_ = c[1] * b0 + c[2] * b1 + c[3] * b2;
-      return 1;
-    }
-    return 0;
+  Solved s{0, R(0)};
+  if (m.form == kFormBox)
+    s = solve_box_fast(m, dv.v, c, b0, b1, b2);
+  else if (m.form == kFormPlane) {
+    if (c[0] < R(0)) s = Solved{1, c[1] * b0 + c[2] * b1 + c[3] * b2};
+  } else {
+    s = solve_second_fast(m, c, b0, b1, b2, quadric_constant(m, quadratic(m, b0, b1, b2)));
   }
-  return solve_second_fast(m, c, b0, b1, b2, quadric_constant(m, quadratic(m, b0, b1, b2)));
+  if (s.code != 0) solver_dist_ = s.dist;
+  return s.code;
 }
 
 template <MathPolicy M>
 template <bool kAheadOnly>
-MINRT_INLINE auto Tracer<M>::solver_fast2(const Object& m, const DirVec& dv) -> int {
+MINRT_INLINE auto Tracer<M>::solver_fast2(const Object& m, const DirVec& dv) -> Solved {
   const R* s = m.start;
   const R* c = consts_of(dv, m);
   if (m.form == kFormBox) return solve_box_fast(m, dv.v, c, s[0], s[1], s[2]);
   if (m.form == kFormPlane) {
-    if (c[0] < R(0)) {
-      solver_dist_ = c[0] * s[3];
-      return 1;
-    }
-    return 0;
+    if (c[0] < R(0)) return Solved{1, c[0] * s[3]};
+    return Solved{0, R(0)};
   }
   return solve_second_fast<kAheadOnly>(m, c, s[0], s[1], s[2], s[3]);
 }

@@ -290,10 +290,19 @@ class Tracer : private TracerState<M> {
 
   // --- table-driven solvers -----------------------------------------------
 
+  // A table-driven solver's result: the original's return code (0: no hit;
+  // boxes: the face's axis + 1) and, unless 0, the distance the original
+  // left in solver_dist_. Returned by value so the ray loops keep it in
+  // registers instead of storing it through `this`.
+  struct Solved {
+    int code;
+    R dist;
+  };
+
   // The original also requires the face's 1/v entry to be nonzero; the table
   // stores NaN as that face's coordinate instead (see setup_dirvec_constants),
   // which fails the same comparisons without the extra test.
-  MINRT_INLINE int solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2);
+  MINRT_INLINE Solved solve_box_fast(const Object& m, const R* v, const R* c, R b0, R b1, R b2);
 
   // The original returns 0 when a = 0; the table holds NaN in c[1] then,
   // which makes d NaN and fails d > 0 without the extra test.
@@ -302,7 +311,7 @@ class Tracer : private TracerState<M> {
   // square root is skipped and 0 is reported as the distance; c[5] is 0 for
   // such surfaces and NaN (never skip) for the others.
   template <bool kAheadOnly = false>
-  MINRT_INLINE int solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc);
+  MINRT_INLINE Solved solve_second_fast(const Object& m, const R* c, R b0, R b1, R b2, R cc);
   static const R* consts_of(const DirVec& dv, const Object& m);
 
   // Ray along dv from an arbitrary point.
@@ -310,7 +319,7 @@ class Tracer : private TracerState<M> {
 
   // Ray along dv from the point given to setup_startp.
   template <bool kAheadOnly = false>
-  MINRT_INLINE int solver_fast2(const Object& m, const DirVec& dv);
+  MINRT_INLINE Solved solver_fast2(const Object& m, const DirVec& dv);
 
   // --- direction and start tables -----------------------------------------
 
@@ -380,7 +389,7 @@ class Tracer : private TracerState<M> {
 
   // --- nearest intersection -----------------------------------------------
 
-  MINRT_INLINE void record_hit(ObjectList and_net, const Object& m, int t0, const R* v,
+  MINRT_INLINE void record_hit(ObjectList and_net, const Object& m, int t0, R t0p, const R* v,
                                const R* start);
   bool judge_intersection(const R* dir);
 
