@@ -118,8 +118,7 @@ inline auto Tracer<M>::setup_forward_culling() -> void {
 
 // A network whose only solved member would be a box behind the start is
 // dropped (that member records nothing), and a row left without networks
-// with its range test, whose only effect would be on solver_dist_, which
-// nothing reads afterwards.
+// with its range test, whose result nothing would read.
 template <MathPolicy M>
 inline auto Tracer<M>::build_octant(int o) -> void {
   const uint32_t code = ((o & 1) != 0 ? 2u : 1u) | ((o & 2) != 0 ? 8u : 4u) | ((o & 4) != 0 ? 32u : 16u);
