@@ -1,11 +1,10 @@
 # Build step of MINRT_PGO (host/pgo/CMakeLists.txt): renders the training
 # scenes with the instrumented minrt-pgo-train into a fresh PROFILE_DIR, then
 # writes STAMP. Run as
-#   cmake -DTRAINER=EXE -DPROFILE_DIR=DIR -DSTAMP=FILE -DSLD_SCENES=LIST -DOTHER_SCENES=LIST
-#         -DUNITS=LIST -P minrt_pgo_train.cmake
+#   cmake -DTRAINER=EXE -DPROFILE_DIR=DIR -DSTAMP=FILE -DSLD_SCENES=LIST -DUNITS=LIST -P minrt_pgo_train.cmake
 # The old profile is removed first: GCC adds counts to an existing .gcda,
 # and the profile must be the same on every build.
-foreach(var TRAINER PROFILE_DIR STAMP SLD_SCENES OTHER_SCENES UNITS)
+foreach(var TRAINER PROFILE_DIR STAMP SLD_SCENES UNITS)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "minrt_pgo_train.cmake: ${var} not given")
   endif()
@@ -28,15 +27,6 @@ endfunction()
 foreach(scene IN LISTS SLD_SCENES)
   train(--size 128x128 -o ${out}/sld.ppm ${scene})
   train(--size 64x64 --precision float --shims portable -o ${out}/sld.ppm ${scene})
-endforeach()
-# One scene of each other format, written where the format wants.
-foreach(scene IN LISTS OTHER_SCENES)
-  if(scene MATCHES "jaworski")
-    set(image ${out}/other.bmp)
-  else()
-    set(image ${out}/other.png)
-  endif()
-  train(--size 128x128 -o ${image} ${scene})
 endforeach()
 file(REMOVE_RECURSE ${out})
 # One profile per unit (GCC names it after the object, with '#' for '/'):
