@@ -1,6 +1,7 @@
 # Build step of MINRT_PGO (host/pgo/CMakeLists.txt): renders the training
 # scenes with the instrumented minrt-pgo-train into a fresh PROFILE_DIR, then
-# writes STAMP. Run as
+# writes STAMP. PROFILE_DIR must be the directory minrt-pgo-train was
+# compiled with (-fprofile-generate=DIR), which is where it writes. Run as
 #   cmake -DTRAINER=EXE -DPROFILE_DIR=DIR -DSTAMP=FILE -DSLD_SCENES=LIST -DUNITS=LIST -P minrt_pgo_train.cmake
 # The old profile is removed first: GCC adds counts to an existing .gcda,
 # and the profile must be the same on every build.
