@@ -236,6 +236,20 @@ inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
 }
 
 template <MathPolicy M>
+MINRT_INLINE auto Tracer<M>::trace_member(ObjectList net, const Object& m, const DirVec& dv) -> bool {
+  const Solved s = solver_fast2<true>(m, dv);
+  if (s.code == 0) return m.inverted;  // missed: only an inverted member lets the rest through
+  record_hit(net, m, s.code, s.dist, dv.v, startp_fast_);
+  return true;
+}
+
+template <MathPolicy M>
+MINRT_INLINE auto Tracer<M>::range_admits(const Object& range, const DirVec& dv) -> bool {
+  const Solved s = solver_fast2(range, dv);
+  return s.code != 0 && s.dist < tmin_;
+}
+
+template <MathPolicy M>
 template <bool kCull>
 MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> void {
   for (ObjectList e = net; *e != nullptr; ++e) {
@@ -243,25 +257,14 @@ MINRT_INLINE auto Tracer<M>::trace_network(ObjectList net, const DirVec& dv) -> 
     // A box the ray can only meet behind its start records nothing; as
     // the network's last member nothing else depends on its result.
     if (kCull && (m.ahead & dv.code) == 0 && e[1] == nullptr) break;
-    const Solved s = solver_fast2<true>(m, dv);
-    if (s.code != 0)
-      record_hit(net, m, s.code, s.dist, dv.v, startp_fast_);
-    else if (!m.inverted)
-      break;
+    if (!trace_member(net, m, dv)) break;
   }
 }
 
 template <MathPolicy M>
 MINRT_INLINE auto Tracer<M>::trace_live_network(const LiveNet& live, const DirVec& dv) -> void {
-  const ObjectList net = live.net;
-  for (int i = 0; i < live.solved; ++i) {
-    const Object& m = *net[i];
-    const Solved s = solver_fast2<true>(m, dv);
-    if (s.code != 0)
-      record_hit(net, m, s.code, s.dist, dv.v, startp_fast_);
-    else if (!m.inverted)
-      break;
-  }
+  for (int i = 0; i < live.solved; ++i)
+    if (!trace_member(live.net, *live.net[i], dv)) break;
 }
 
 template <MathPolicy M>
@@ -272,10 +275,7 @@ MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
     // The rows and networks the masks leave for this octant, in order.
     if ((live_built_ & (1u << dv.octant)) == 0) build_octant(dv.octant);
     for (const LiveRow* lr = live_rows_ + dv.octant * (n_or_rows_ + 1); lr->nets != nullptr; ++lr) {
-      if (lr->range != nullptr) {
-        const Solved s = solver_fast2(*lr->range, dv);
-        if (!(s.code != 0 && s.dist < tmin_)) continue;
-      }
+      if (lr->range != nullptr && !range_admits(*lr->range, dv)) continue;
       for (const LiveNet* a = lr->nets; a->net != nullptr; ++a) trace_live_network(*a, dv);
     }
     return R(-0.1) < tmin_ && tmin_ < R(100000000.0);
@@ -284,10 +284,7 @@ MINRT_INLINE auto Tracer<M>::judge_intersection_fast(const DirVec& dv) -> bool {
   for (int r = 0; r < n_or_rows_; ++r) {
     const OrRow& row = or_rows_[r];
     if (kCull && (row.fwd_all & code) != 0) continue;
-    if (row.range != nullptr) {
-      const Solved s = solver_fast2(*row.range, dv);
-      if (!(s.code != 0 && s.dist < tmin_)) continue;
-    }
+    if (row.range != nullptr && !range_admits(*row.range, dv)) continue;
     for (int k = 0; row.nets[k] != nullptr; ++k) {
       if (kCull && (row.fwd[k] & code) != 0) continue;
       trace_network<kCull>(row.nets[k], dv);

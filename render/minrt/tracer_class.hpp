@@ -393,6 +393,12 @@ class Tracer : private TracerState<M> {
                                const R* start);
   bool judge_intersection(const R* dir);
 
+  // One member of an AND network along dv from the start point: its hit,
+  // if any, recorded; false when the rest of the network cannot be hit.
+  MINRT_INLINE bool trace_member(ObjectList net, const Object& m, const DirVec& dv);
+  // A row's range primitive lets the row through: met along dv, nearer
+  // than the nearest hit so far.
+  MINRT_INLINE bool range_admits(const Object& range, const DirVec& dv);
   // One AND network's members along dv from the start point (kCull: the
   // box masks of setup_startp<true> are valid).
   template <bool kCull>
