@@ -25,6 +25,13 @@ std::string folder_of(const std::string& path) {
   return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
 
+// Text editors of the FM TOWNS's MS-DOS ended files with Ctrl-Z (0x1a): it
+// ends the file's text, as DOS's own text reading did.
+std::size_t text_length(const std::string& text) {
+  const std::size_t ctrl_z = text.find('\x1a');
+  return ctrl_z == std::string::npos ? text.size() : ctrl_z;
+}
+
 bool exists(const std::string& path) { return ::access(path.c_str(), R_OK) == 0; }
 
 std::string canonical(const std::string& path) {
@@ -43,12 +50,9 @@ class Expander {
     for (const std::string& open : stack_)
       if (open == canon) return false;  // caller reports the cycle
     stack_.push_back(canon);
-    // Text editors of the FM TOWNS's MS-DOS ended files with Ctrl-Z (0x1a):
-    // it ends the file's text, as DOS's own text reading did.
-    const std::size_t dos_eof = text.find('\x1a');
     std::string clean;
     int bad_line = 0, bad_col = 0;
-    if (!strip_comments(dos_eof == std::string::npos ? text : text.substr(0, dos_eof), clean, bad_line, bad_col)) {
+    if (!strip_comments(text.substr(0, text_length(text)), clean, bad_line, bad_col)) {
       error_ = shown + ":" + std::to_string(bad_line) + ":" + std::to_string(bad_col) +
                ": error: unterminated comment (no '*/' before the end of the file)";
       return false;
@@ -277,8 +281,7 @@ bool preprocess_eastray(const std::string& path, const std::string& shown, const
   }
   // The expanded text ends every line with a newline; the scene file may
   // not (nor, after a Ctrl-Z, at it), and its end is where it really stops.
-  const std::size_t dos_eof = text.find('\x1a');
-  const std::size_t length = dos_eof == std::string::npos ? text.size() : dos_eof;
+  const std::size_t length = text_length(text);
   out.end_line = 1;
   out.end_col = 1;
   for (std::size_t i = 0; i < length; ++i) {
