@@ -4,6 +4,7 @@
 # feature compiled in, one thread, all threads), and with --large the
 # 800x800, 10,000-sphere, aa 40, bounces 16 scene of make_cs418_large.py.
 # Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--shared DIR]
+. "$(dirname "$0")/../help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared
@@ -14,7 +15,6 @@ while [ $# -gt 0 ]; do
     --runs) runs=$2; shift 2 ;;
     --large) large=1; shift ;;
     --shared) shared=$2; shift 2 ;;
-    -h|--help) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "cs418_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done

@@ -7,6 +7,7 @@
 # other minrt build is run in the same rounds; speed-up: the ratio of the
 # median wall times.
 # Usage: bench/host/eastray_speed.sh [--runs N] [--baseline MINRT] [--shared DIR]
+. "$(dirname "$0")/../help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared
@@ -17,7 +18,6 @@ while [ $# -gt 0 ]; do
     --runs) runs=$2; shift 2 ;;
     --baseline) baseline=$2; shift 2 ;;
     --shared) shared=$2; shift 2 ;;
-    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "eastray_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done

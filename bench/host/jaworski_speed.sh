@@ -10,6 +10,7 @@
 # and prints the medians of the wall and CPU times (user + system, from
 # bash's time) and the ratios. On a loaded machine the CPU times are the
 # steadier measure: a short run's wall time is mostly waiting for a core.
+. "$(dirname "$0")/../help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=7
@@ -17,7 +18,6 @@ usage() { echo "usage: $0 [--runs N] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2;
 while (($#)); do
   case $1 in
     --runs) [[ $# -ge 2 ]] || usage; runs=$2; shift 2 ;;
-    -h | --help) usage ;;
     *) break ;;
   esac
 done

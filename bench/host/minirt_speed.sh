@@ -6,6 +6,7 @@
 # load does not inflate. The issue's target: the largest file
 # (room_test3.rt) under 0.5 s.
 # Usage: bench/host/minirt_speed.sh [--runs N] [--size WxH] [--shared DIR]
+. "$(dirname "$0")/../help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared
@@ -16,7 +17,6 @@ while [ $# -gt 0 ]; do
     --runs) runs=$2; shift 2 ;;
     --size) size=$2; shift 2 ;;
     --shared) shared=$2; shift 2 ;;
-    -h|--help) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "minirt_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done

@@ -1,0 +1,9 @@
+# Sourced first by every bench script with its arguments: -h or --help
+# prints the script's header comment (its usage) and exits 0, before
+# anything is built or run. POSIX sh, as some of the scripts are.
+case "${1:-}" in
+  -h | --help)
+    sed -n '2,/^[^#]/{/^#/s/^# \{0,1\}//p;}' "$0"
+    exit 0
+    ;;
+esac
