@@ -6,6 +6,7 @@
 #   docs/cs418/table.md     the figures, one row per test
 # Usage: scripts/cs418_report.sh [--shared DIR] [--out DIR]
 # Needs build/release (scripts/render.sh or scripts/test.sh builds it).
+. "$(dirname "$0")/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 shared=$root/../shared
@@ -14,7 +15,6 @@ while [ $# -gt 0 ]; do
   case $1 in
     --shared) shared=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
-    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "cs418_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done

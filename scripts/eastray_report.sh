@@ -8,6 +8,7 @@
 # probes it).
 # Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR]
 # Needs build/release (scripts/render.sh or scripts/test.sh builds it).
+. "$(dirname "$0")/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 shared=$root/../shared
@@ -16,7 +17,6 @@ while [ $# -gt 0 ]; do
   case $1 in
     --shared) shared=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
-    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "eastray_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done

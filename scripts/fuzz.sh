@@ -5,12 +5,9 @@
 # build makes them when clang has libFuzzer). New inputs the fuzzer finds
 # stay in the copy (printed at the end); crashes are written to the current
 # folder as crash-*; the seed corpus in fuzz/corpus is never modified.
+. "$(dirname "$0")/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-if [[ ${1:-} == -h || ${1:-} == --help ]]; then
-  sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
-  exit 0
-fi
 target=${1:-all}
 seconds=${2:-600}
 bin=${MINRT_FUZZ_BIN:-$root/build/release/fuzz}

@@ -3,12 +3,9 @@
 # embedded default (the RV32IMF firmware running in firmware-sim, over a
 # pseudo-terminal) with host-send. Extra arguments go to host-send.
 #   scripts/render.sh ../shared/scenes/contest.sld -o contest.ppm --size 128x128
+. "$(dirname "$0")/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-if [[ ${1:-} == -h || ${1:-} == --help ]]; then
-  sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'
-  exit 0
-fi
 if [[ $# -lt 1 ]]; then
   sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2

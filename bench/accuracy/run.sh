@@ -13,7 +13,7 @@
 # takes minutes, the FPU-model renders several).
 # Needs Debian's python3-numpy and python3-matplotlib (run with /usr/bin/python3).
 #   [ENV=VALUE ...] bench/accuracy/run.sh   (no arguments; several minutes)
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${BUILD:-$root/build/release}

@@ -3,7 +3,7 @@
 # one or more sizes, plus a per-function profile of the first size.
 #   bench/firmware/count.sh [SCENE [WxH ...]]   (default contest.sld 128x128 512x512)
 # Needs valgrind's callgrind_annotate for the profile table.
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 scene=$(scene_path "${1:-contest.sld}")

@@ -5,7 +5,7 @@
 #   bench/firmware/footprint.sh [SCENE [WxH]]     (default contest.sld 512x512)
 # The firmware's --footprint mode renders as usual, discards the image and
 # prints its own report instead (runtime/footprint.cpp).
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 scene=$(scene_path "${1:-contest.sld}")

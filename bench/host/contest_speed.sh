@@ -16,7 +16,7 @@
 # Runs alternate between the programs so machine noise hits all alike; the
 # ratios are of the medians. Every output is checked to be the same bytes as
 # minrt's. callgrind counts are for single runs (one thread).
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=5 size=512 minrt=$root/build/release/host/minrt original="" cport="" cconv="" callgrind=1

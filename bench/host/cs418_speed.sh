@@ -4,7 +4,7 @@
 # feature compiled in, one thread, all threads), and with --large the
 # 800x800, 10,000-sphere, aa 40, bounces 16 scene of make_cs418_large.py.
 # Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--shared DIR]
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared

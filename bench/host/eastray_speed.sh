@@ -7,7 +7,7 @@
 # other minrt build is run in the same rounds; speed-up: the ratio of the
 # median wall times.
 # Usage: bench/host/eastray_speed.sh [--runs N] [--baseline MINRT] [--shared DIR]
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared

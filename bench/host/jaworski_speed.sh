@@ -10,7 +10,7 @@
 # and prints the medians of the wall and CPU times (user + system, from
 # bash's time) and the ratios. On a loaded machine the CPU times are the
 # steadier measure: a short run's wall time is mostly waiting for a core.
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=7

@@ -6,7 +6,7 @@
 # load does not inflate. The issue's target: the largest file
 # (room_test3.rt) under 0.5 s.
 # Usage: bench/host/minirt_speed.sh [--runs N] [--size WxH] [--shared DIR]
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared

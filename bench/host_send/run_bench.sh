@@ -10,7 +10,7 @@
 # last pixel received), so it includes the upload and the render start.
 # With firmware-sim, --baud paces in simulated time instead, so the real-time
 # rate there measures the simulator's speed; that run is informational.
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 BUILD=${1:-build-hs}
 SCENE=${2:-../shared/scenes/ball.sld}

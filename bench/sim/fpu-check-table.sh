@@ -2,7 +2,7 @@
 # Error of FPU-model configurations as measured by `firmware-sim --fpu-check`,
 # as the markdown table in docs/firmware_sim.md ("Measured errors").
 #   bench/sim/fpu-check-table.sh [--sim PATH]
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 sim=$root/build/release/firmware_sim/firmware-sim

@@ -8,7 +8,7 @@
 # Defaults: seed 1, count 200, binaries from build-sim/. CI runs it through
 # ctest with --seed 1 --count 40. Exit 0 = all equal, 1 = a mismatch (the
 # program is kept in the work dir), 77 = skipped (qemu-riscv32 or clang absent).
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 seed=1

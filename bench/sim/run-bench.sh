@@ -4,7 +4,7 @@
 # per-function profiling (callgrind + folded output). Prints host MIPS for
 # each, best of N runs (default 3) to damp noise from other processes.
 #   bench/sim/run-bench.sh [--sim PATH] [--runs N]
-. "$(dirname "$0")/../help.sh"
+. "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 sim=$root/build/release/firmware_sim/firmware-sim

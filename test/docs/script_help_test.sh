@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Every benchmark command answers -h and --help with its usage (the header
+# Every command of bench/ and scripts/ answers -h and --help with its usage (the header
 # comment, which names the command as it is typed) and exit status 0, at
 # once: nothing built, nothing run. A script that ignored the flag would
 # start a long run and hit the timeout, or print something else.
 set -uo pipefail
-root=${1:?usage: bench_help_test.sh REPO_ROOT}
+root=${1:?usage: script_help_test.sh REPO_ROOT}
 cd "$root" || exit 2
 fail=0 n=0
-for script in bench/*/*.sh; do
-  [[ -x $script ]] || continue  # sourced helpers such as bench/firmware/common.sh
+for script in bench/*/*.sh scripts/*.sh; do
+  [[ -x $script ]] || continue  # sourced helpers: bench/firmware/common.sh, scripts/help.sh
   for flag in -h --help; do
     n=$((n + 1))
     out=$(timeout 20 "$script" "$flag" 2>&1)
@@ -20,6 +20,6 @@ for script in bench/*/*.sh; do
     fi
   done
 done
-((n > 0)) || { echo "FAIL: no bench scripts found under $root/bench"; exit 1; }
+((n > 0)) || { echo "FAIL: no scripts found under $root/bench or $root/scripts"; exit 1; }
 echo "$n help requests checked"
 exit $fail

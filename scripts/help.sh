@@ -1,4 +1,4 @@
-# Sourced first by every bench script with its arguments: -h or --help
+# Sourced first by the bench/ and scripts/ commands: -h or --help
 # prints the script's header comment (its usage) and exits 0, before
 # anything is built or run. POSIX sh, as some of the scripts are.
 case "${1:-}" in
