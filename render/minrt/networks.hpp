@@ -54,10 +54,9 @@ template <MathPolicy M>
 inline auto Tracer<M>::shadow_and_group(ObjectList and_net) -> bool {
   for (ObjectList e = and_net; *e != nullptr; ++e) {
     const Object& obj = **e;
-    const int t0 = solver_fast(obj, light_dirvec_, intersection_point_);
-    const R t0p = solver_dist_;
-    if (t0 != 0 && t0p < R(-0.2)) {
-      const R t = t0p + R(0.01);
+    const Solved s = solver_fast(obj, light_dirvec_, intersection_point_);
+    if (met_before(s, R(-0.2))) {
+      const R t = s.dist + R(0.01);
       const R q0 = light_[0] * t + intersection_point_[0];
       const R q1 = light_[1] * t + intersection_point_[1];
       const R q2 = light_[2] * t + intersection_point_[2];
@@ -83,8 +82,7 @@ inline auto Tracer<M>::in_shadow() -> bool {
   for (const ShadowRow* row = shadow_rows_; row != rows_end; ++row) {
     if (row->all.culls(x0, x1, x2)) continue;
     if (row->range != nullptr &&
-        !(solver_fast(*row->range, light_dirvec_, intersection_point_) != 0 &&
-          solver_dist_ < R(-0.1)))
+        !met_before(solver_fast(*row->range, light_dirvec_, intersection_point_), R(-0.1)))
       continue;
     for (const ShadowNet* n = row->nets; n != row->nets_end; ++n)
       if (!n->lim.culls(x0, x1, x2) && shadow_and_group(n->net)) return true;
@@ -219,14 +217,13 @@ inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
   tmin_ = R(1000000000.0);
   for (int r = 0; r < n_or_rows_; ++r) {
     const OrRow& row = or_rows_[r];
-    if (row.range != nullptr && !(solver(*row.range, dir, startp_) != 0 && solver_dist_ < tmin_))
-      continue;
+    if (row.range != nullptr && !met_before(solver(*row.range, dir, startp_), tmin_)) continue;
     for (const ObjectList* a = row.nets; *a != nullptr; ++a) {
       for (ObjectList e = *a; *e != nullptr; ++e) {
         const Object& m = **e;
-        const int t0 = solver(m, dir, startp_);
-        if (t0 != 0)
-          record_hit(*a, m, t0, solver_dist_, dir, startp_);
+        const Solved s = solver(m, dir, startp_);
+        if (s.code != 0)
+          record_hit(*a, m, s.code, s.dist, dir, startp_);
         else if (!m.inverted)
           break;
       }
@@ -245,8 +242,7 @@ MINRT_INLINE auto Tracer<M>::trace_member(ObjectList net, const Object& m, const
 
 template <MathPolicy M>
 MINRT_INLINE auto Tracer<M>::range_admits(const Object& range, const DirVec& dv) -> bool {
-  const Solved s = solver_fast2(range, dv);
-  return s.code != 0 && s.dist < tmin_;
+  return met_before(solver_fast2(range, dv), tmin_);
 }
 
 template <MathPolicy M>

@@ -29,48 +29,42 @@ inline auto Tracer<M>::quadric_constant(const Object& m, R cc0) -> R {
 }
 
 template <MathPolicy M>
-inline auto Tracer<M>::solve_box_face(const Object& m, const R* dir, R b0, R b1, R b2, int i0, int i1, int i2) -> bool {
-  if (dir[i0] == R(0)) return false;
+inline auto Tracer<M>::solve_box_face(const Object& m, const R* dir, R b0, R b1, R b2, int i0, int i1, int i2)
+    -> Solved {
+  if (dir[i0] == R(0)) return Solved{0, R(0)};
   const R d = fneg_cond(m.inverted != (dir[i0] < R(0)), m.abc[i0]);
   const R d2 = (d - b0) / dir[i0];
-  if (fabs(d2 * dir[i1] + b1) < m.abc[i1] && fabs(d2 * dir[i2] + b2) < m.abc[i2]) {
-    solver_dist_ = d2;
-    return true;
-  }
-  return false;
+  if (fabs(d2 * dir[i1] + b1) < m.abc[i1] && fabs(d2 * dir[i2] + b2) < m.abc[i2]) return Solved{i0 + 1, d2};
+  return Solved{0, R(0)};
 }
 
 template <MathPolicy M>
-inline auto Tracer<M>::solver(const Object& m, const R* dir, const R* org) -> int {
+inline auto Tracer<M>::solver(const Object& m, const R* dir, const R* org) -> Solved {
   const R b0 = org[0] - m.center[0];
   const R b1 = org[1] - m.center[1];
   const R b2 = org[2] - m.center[2];
   if (m.form == kFormBox) {
-    if (solve_box_face(m, dir, b0, b1, b2, 0, 1, 2)) return 1;
-    if (solve_box_face(m, dir, b1, b2, b0, 1, 2, 0)) return 2;
-    if (solve_box_face(m, dir, b2, b0, b1, 2, 0, 1)) return 3;
-    return 0;
+    Solved s = solve_box_face(m, dir, b0, b1, b2, 0, 1, 2);
+    if (s.code == 0) s = solve_box_face(m, dir, b1, b2, b0, 1, 2, 0);
+    if (s.code == 0) s = solve_box_face(m, dir, b2, b0, b1, 2, 0, 1);
+    return s;
   }
   if (m.form == kFormPlane) {
     const R d = dot(dir, m.abc);
-    if (d > R(0)) {
-      solver_dist_ = -dot(m.abc, b0, b1, b2) / d;
-      return 1;
-    }
-    return 0;
+    if (d > R(0)) return Solved{1, -dot(m.abc, b0, b1, b2) / d};
+    return Solved{0, R(0)};
   }
   const R aa = quadratic(m, dir[0], dir[1], dir[2]);
-  if (aa == R(0)) return 0;
+  if (aa == R(0)) return Solved{0, R(0)};
   const R bb = bilinear(m, dir[0], dir[1], dir[2], b0, b1, b2);
   const R cc = quadric_constant(m, quadratic(m, b0, b1, b2));
   const R d = sqr(bb) - aa * cc;
   if (d > R(0)) {
     const R sd = M::sqrt(d);
     const R t1 = m.inverted ? sd : -sd;
-    solver_dist_ = (t1 - bb) / aa;
-    return 1;
+    return Solved{1, (t1 - bb) / aa};
   }
-  return 0;
+  return Solved{0, R(0)};
 }
 
 template <MathPolicy M>
@@ -103,21 +97,17 @@ inline auto Tracer<M>::consts_of(const DirVec& dv, const Object& m) -> const R* 
 }
 
 template <MathPolicy M>
-inline auto Tracer<M>::solver_fast(const Object& m, const DirVec& dv, const R* org) -> int {
+inline auto Tracer<M>::solver_fast(const Object& m, const DirVec& dv, const R* org) -> Solved {
   const R b0 = org[0] - m.center[0];
   const R b1 = org[1] - m.center[1];
   const R b2 = org[2] - m.center[2];
   const R* c = consts_of(dv, m);
-  Solved s{0, R(0)};
-  if (m.form == kFormBox)
-    s = solve_box_fast(m, dv.v, c, b0, b1, b2);
-  else if (m.form == kFormPlane) {
-    if (c[0] < R(0)) s = Solved{1, c[1] * b0 + c[2] * b1 + c[3] * b2};
-  } else {
-    s = solve_second_fast(m, c, b0, b1, b2, quadric_constant(m, quadratic(m, b0, b1, b2)));
+  if (m.form == kFormBox) return solve_box_fast(m, dv.v, c, b0, b1, b2);
+  if (m.form == kFormPlane) {
+    if (c[0] < R(0)) return Solved{1, c[1] * b0 + c[2] * b1 + c[3] * b2};
+    return Solved{0, R(0)};
   }
-  if (s.code != 0) solver_dist_ = s.dist;
-  return s.code;
+  return solve_second_fast(m, c, b0, b1, b2, quadric_constant(m, quadratic(m, b0, b1, b2)));
 }
 
 template <MathPolicy M>

@@ -170,7 +170,6 @@ class Tracer : private TracerState<M> {
   using S::lines_through_;
   using S::slot_rows_;
   using S::row_;
-  using S::solver_dist_;
   using S::intsec_rectside_;
   using S::tmin_;
   using S::intersection_point_;
@@ -283,21 +282,24 @@ class Tracer : private TracerState<M> {
   // Quadrics are x'Ax = 1; cones and unknown forms x'Ax = 0.
   static R quadric_constant(const Object& m, R cc0);
 
-  // --- general solvers (ray start in startp_) -----------------------------
-
-  bool solve_box_face(const Object& m, const R* dir, R b0, R b1, R b2, int i0, int i1, int i2);
-  int solver(const Object& m, const R* dir, const R* org);
-
-  // --- table-driven solvers -----------------------------------------------
-
-  // A table-driven solver's result: the original's return code (0: no hit;
-  // boxes: the face's axis + 1) and, unless 0, the distance the original
-  // left in solver_dist_. Returned by value so the ray loops keep it in
+  // Every solver's result: the original's return code (0: no hit; boxes:
+  // the face's axis + 1) and, unless 0, the distance the original left in
+  // its global solver_dist. Returned by value so the ray loops keep it in
   // registers instead of storing it through `this`.
   struct Solved {
     int code;
     R dist;
   };
+  // Met at a distance below `limit` (the range and shadow tests).
+  static bool met_before(Solved s, R limit) { return s.code != 0 && s.dist < limit; }
+
+  // --- general solvers (any direction, ray start in org) -------------------
+
+  // Face i0 of a box (the two others' coordinates in b1, b2): code i0 + 1.
+  Solved solve_box_face(const Object& m, const R* dir, R b0, R b1, R b2, int i0, int i1, int i2);
+  Solved solver(const Object& m, const R* dir, const R* org);
+
+  // --- table-driven solvers -----------------------------------------------
 
   // The original also requires the face's 1/v entry to be nonzero; the table
   // stores NaN as that face's coordinate instead (see setup_dirvec_constants),
@@ -315,7 +317,7 @@ class Tracer : private TracerState<M> {
   static const R* consts_of(const DirVec& dv, const Object& m);
 
   // Ray along dv from an arbitrary point.
-  int solver_fast(const Object& m, const DirVec& dv, const R* org);
+  Solved solver_fast(const Object& m, const DirVec& dv, const R* org);
 
   // Ray along dv from the point given to setup_startp.
   template <bool kAheadOnly = false>

@@ -164,7 +164,6 @@ struct TracerState {
   int16_t* slot_rows_ = nullptr;
   uint8_t* row_ = nullptr;  // the finished row, 3 bytes a pixel
 
-  R solver_dist_ = 0;
   int intsec_rectside_ = 0;
   R tmin_ = 0;
   R intersection_point_[3] = {};
