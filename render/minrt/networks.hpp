@@ -194,10 +194,11 @@ inline auto Tracer<M>::shadow_limit(R center, R slab, bool flipped) -> R {
 }
 
 template <MathPolicy M>
-MINRT_INLINE auto Tracer<M>::record_hit(ObjectList and_net, const Object& m, int t0, R t0p, const R* v,
-                                        const R* start) -> void {
-  if (R(0) < t0p && t0p < tmin_) {
-    const R t = t0p + R(0.01);
+MINRT_INLINE auto Tracer<M>::record_hit(ObjectList and_net, const Object& m, Solved s, const R* v,
+                                        const R* start) -> bool {
+  if (s.code == 0) return m.inverted;  // missed: only an inverted member lets the rest through
+  if (R(0) < s.dist && s.dist < tmin_) {
+    const R t = s.dist + R(0.01);
     const R q0 = v[0] * t + start[0];
     const R q1 = v[1] * t + start[1];
     const R q2 = v[2] * t + start[2];
@@ -207,9 +208,10 @@ MINRT_INLINE auto Tracer<M>::record_hit(ObjectList and_net, const Object& m, int
       intersection_point_[1] = q1;
       intersection_point_[2] = q2;
       intersected_object_id_ = m.index;
-      intsec_rectside_ = t0;
+      intsec_rectside_ = s.code;
     }
   }
+  return true;
 }
 
 template <MathPolicy M>
@@ -221,11 +223,7 @@ inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
     for (const ObjectList* a = row.nets; *a != nullptr; ++a) {
       for (ObjectList e = *a; *e != nullptr; ++e) {
         const Object& m = **e;
-        const Solved s = solver(m, dir, startp_);
-        if (s.code != 0)
-          record_hit(*a, m, s.code, s.dist, dir, startp_);
-        else if (!m.inverted)
-          break;
+        if (!record_hit(*a, m, solver(m, dir, startp_), dir, startp_)) break;
       }
     }
   }
@@ -234,10 +232,7 @@ inline auto Tracer<M>::judge_intersection(const R* dir) -> bool {
 
 template <MathPolicy M>
 MINRT_INLINE auto Tracer<M>::trace_member(ObjectList net, const Object& m, const DirVec& dv) -> bool {
-  const Solved s = solver_fast2<true>(m, dv);
-  if (s.code == 0) return m.inverted;  // missed: only an inverted member lets the rest through
-  record_hit(net, m, s.code, s.dist, dv.v, startp_fast_);
-  return true;
+  return record_hit(net, m, solver_fast2<true>(m, dv), dv.v, startp_fast_);
 }
 
 template <MathPolicy M>

@@ -391,12 +391,12 @@ class Tracer : private TracerState<M> {
 
   // --- nearest intersection -----------------------------------------------
 
-  MINRT_INLINE void record_hit(ObjectList and_net, const Object& m, int t0, R t0p, const R* v,
-                               const R* start);
+  // A member of AND network and_net solved along v from start: its hit,
+  // if any, recorded; false when the rest of the network cannot be hit.
+  MINRT_INLINE bool record_hit(ObjectList and_net, const Object& m, Solved s, const R* v, const R* start);
   bool judge_intersection(const R* dir);
 
-  // One member of an AND network along dv from the start point: its hit,
-  // if any, recorded; false when the rest of the network cannot be hit.
+  // record_hit for a member along dv from the start point.
   MINRT_INLINE bool trace_member(ObjectList net, const Object& m, const DirVec& dv);
   // A row's range primitive lets the row through: met along dv, nearer
   // than the nearest hit so far.
