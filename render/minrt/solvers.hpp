@@ -44,10 +44,11 @@ inline auto Tracer<M>::solver(const Object& m, const R* dir, const R* org) -> So
   const R b1 = org[1] - m.center[1];
   const R b2 = org[2] - m.center[2];
   if (m.form == kFormBox) {
-    Solved s = solve_box_face(m, dir, b0, b1, b2, 0, 1, 2);
-    if (s.code == 0) s = solve_box_face(m, dir, b1, b2, b0, 1, 2, 0);
-    if (s.code == 0) s = solve_box_face(m, dir, b2, b0, b1, 2, 0, 1);
-    return s;
+    const Solved x = solve_box_face(m, dir, b0, b1, b2, 0, 1, 2);
+    if (x.code != 0) return x;
+    const Solved y = solve_box_face(m, dir, b1, b2, b0, 1, 2, 0);
+    if (y.code != 0) return y;
+    return solve_box_face(m, dir, b2, b0, b1, 2, 0, 1);
   }
   if (m.form == kFormPlane) {
     const R d = dot(dir, m.abc);
