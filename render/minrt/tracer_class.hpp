@@ -293,7 +293,7 @@ class Tracer : private TracerState<M> {
   // Met at a distance below `limit` (the range and shadow tests).
   static bool met_before(Solved s, R limit) { return s.code != 0 && s.dist < limit; }
 
-  // --- general solvers (any direction, ray start in org) -------------------
+  // --- general solvers (any direction, ray start in org) ------------------
 
   // Face i0 of a box (the two others' coordinates in b1, b2): code i0 + 1.
   Solved solve_box_face(const Object& m, const R* dir, R b0, R b1, R b2, int i0, int i1, int i2);
