@@ -4,6 +4,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include "sha256.hpp"
 #include "test_support.hpp"
@@ -15,22 +18,31 @@ using minrt::test::shared_dir;
 
 namespace {
 
-// Renders every manifest row of the given size and compares sha256.
-void check_manifest(const std::string& manifest, const std::string& scene_dir, int size) {
-  if (!minrt::test::shared_available()) {
-    WARN("shared/ test data not found at " << shared_dir() << ": golden test skipped");
-    return;
-  }
-  int checked = 0;
+// Renders every manifest row of the given size and compares sha256; with
+// no_warnings, the scene must also read without a warning. Returns the
+// scenes checked.
+std::vector<std::string> check_rows(const std::string& manifest, const std::string& scene_dir, int size,
+                                    bool no_warnings = false) {
+  std::vector<std::string> checked;
   for (const auto& row : read_manifest(manifest)) {
     if (row.size != size) continue;
     CAPTURE(row.scene, row.size);
     const auto result = render_bytes(read_file(scene_dir + "/" + row.scene + ".sld"), size, size);
     REQUIRE(result.status == minrt::RenderStatus::kOk);
     CHECK(minrt::host::sha256_hex(result.image) == row.sha256);
-    ++checked;
+    if (no_warnings)
+      for (const std::string& w : result.warnings) FAIL_CHECK("warning: " << w);
+    checked.push_back(row.scene);
   }
-  CHECK(checked > 0);
+  return checked;
+}
+
+void check_manifest(const std::string& manifest, const std::string& scene_dir, int size) {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found at " << shared_dir() << ": golden test skipped");
+    return;
+  }
+  CHECK(!check_rows(manifest, scene_dir, size).empty());
 }
 
 }  // namespace
@@ -45,6 +57,23 @@ TEST_CASE("golden: the 25 scenes at 512x512 match the original byte for byte", "
 
 TEST_CASE("golden: the 280 generated scenes at 48x48 match the original byte for byte", "[golden]") {
   check_manifest(shared_dir() + "/fuzz/manifest.tsv", shared_dir() + "/fuzz/scenes", 48);
+}
+
+// The repository's own sample scenes; their sums were made with the original
+// program built by hand outside the repository (sld/ordinary/README.md).
+TEST_CASE("golden: the ordinary scenes of sld/ordinary match the original byte for byte and without warnings",
+          "[golden]") {
+  const std::string dir = std::string(MINRT_SOURCE_DIR) + "/sld/ordinary";
+  std::vector<std::string> checked = check_rows(dir + "/manifest.tsv", dir, 128, true);
+  // Every scene of the folder has its row: a scene added without the
+  // original's sum fails here.
+  std::vector<std::string> scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().extension() == ".sld") scenes.push_back(entry.path().stem().string());
+  std::sort(checked.begin(), checked.end());
+  std::sort(scenes.begin(), scenes.end());
+  CHECK(!scenes.empty());
+  CHECK(checked == scenes);
 }
 
 TEST_CASE("golden: P6 output holds exactly the reference pixels", "[golden]") {
