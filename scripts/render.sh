@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [[ $# -lt 1 ]]; then
-  sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//' >&2
+  script_usage >&2
   exit 2
 fi
 # Set-up and build: their steps and the build's percentage are shown as they

@@ -1,14 +1,12 @@
 #!/usr/bin/env bash
 # Installs what the build needs (Debian packages, only the missing ones, as
 # root) and builds everything with the host-release preset. Safe to rerun.
+#   scripts/setup.sh   (no arguments)
+. "$(dirname "$0")/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 case ${1:-} in
   "") ;;
-  -h|--help)
-    echo "usage: scripts/setup.sh"
-    sed -n '2,3p' "$0" | sed 's/^# \{0,1\}//'
-    exit 0 ;;
   *) echo "setup.sh: error: unknown argument '$1' (see scripts/setup.sh --help)" >&2; exit 2 ;;
 esac
 
