@@ -3,7 +3,7 @@
 // end, so that they finish together) and render them with a tracer of their
 // own (its tables point into its own object array, which the ray loops
 // write) through Tracer::render_rows, which gives every band the bytes of
-// the one-thread render (render/minrt/band_rows.hpp). The calling thread's
+// the one-thread render (render/sld/band_rows.hpp). The calling thread's
 // worker uses the tracer prepare_sld set up; the others set theirs up in
 // their own threads. The rows where two bands meet are traced once and
 // handed over when they are ready (RowExchange), and finished rows go to the sink in order as
@@ -25,7 +25,7 @@
 
 #include "core/base/arena.hpp"
 #include "core/image/row_sink.hpp"
-#include "render/minrt/tracer.hpp"
+#include "render/sld/tracer.hpp"
 #include "thread_count.hpp"
 
 namespace minrt::host {

@@ -4,7 +4,7 @@
 
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 
 namespace minrt::host {
 

@@ -20,7 +20,7 @@
 #include <stdint.h>
 
 #include "core/base/diagnostic.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 
 #ifndef MINRT_FW_DEFAULT_WIDTH
 #define MINRT_FW_DEFAULT_WIDTH 512

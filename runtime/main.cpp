@@ -33,7 +33,7 @@
 #include "protocol/protocol_course_board.hpp"
 #include "protocol/protocol_framed_board.hpp"
 #include "protocol/raw_check.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 #include "serial_stream.hpp"
 #include "text_scene_board.hpp"
 

@@ -4,7 +4,7 @@
 #   docs/eastray/<scene>.png   contact sheets: double | float/portable | difference
 #   docs/eastray/table.md      the figures, one row per scene
 # There is no reference renderer: the sheets are for looking at (the README
-# of the scenes says what each must show; test/general/eastray_test.cpp
+# of the scenes says what each must show; test/eastray/eastray_test.cpp
 # probes it).
 # Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR]
 # Needs build/release (scripts/render.sh or scripts/test.sh builds it).

@@ -77,7 +77,7 @@ class Tracer {
   }
 
   // A colour channel's byte: 255 x v clamped to [0, 1], rounded half to
-  // even (test/general/jaworski_byte_test.cpp pins it).
+  // even (test/jaworski/jaworski_byte_test.cpp pins it).
   static uint8_t to_byte(R v) {
     const R x = R(255) * max0(min1(v));
     // Round half to even (Haskell's round) by the addition's own rounding:

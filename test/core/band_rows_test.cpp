@@ -1,4 +1,4 @@
-// Tracer::render_rows on bands that skip rows (render/minrt/band_rows.hpp):
+// Tracer::render_rows on bands that skip rows (render/sld/band_rows.hpp):
 // with slot rows (prepare_bands) and by replay without them, alone and two
 // tracers handing boundary rows over (RowExchange), the rows must be those
 // of the whole-image render. ss20 and tsu3 end traces early after mirrors,

@@ -11,7 +11,7 @@
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
 #include "render/general/render.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 
 namespace {
 alignas(16) unsigned char g_arena[1 << 20];

@@ -10,7 +10,7 @@
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 #include "test_support.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "core/image/ppm_writer.hpp"
-#include "render/minrt/tracer.hpp"
+#include "render/sld/tracer.hpp"
 
 namespace {
 

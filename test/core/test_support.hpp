@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/base/diagnostic.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 #include "render_variants.hpp"
 
 namespace minrt::test {

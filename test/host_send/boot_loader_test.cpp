@@ -112,7 +112,7 @@ TEST_CASE("a program larger than the program region is refused", "[boot][firmwar
   CHECK(out == kProgramRequest + MINRT_ERROR_MARKER + message + "\n");
   // host-send refuses such a file itself, before the link is opened
   // (general:host-send refuses a --program larger than the board's program
-  // region ..., test/general/scene_size_test.cpp).
+  // region ..., test/host/scene_size_test.cpp).
 }
 
 TEST_CASE("a cut-short program upload gives the error line", "[boot][firmware][bad]") {

@@ -218,13 +218,13 @@ TEST_CASE("host-send: a broken CS418 scene ends with the board's located error a
   hs_test::TempDir dir;
   const std::string out = dir.file("x.png");
   const RunResult r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF,
-                           std::string(HS_SOURCE_DIR) + "/test/general/bad/bad-number.txt", "-o", out});
+                           std::string(HS_SOURCE_DIR) + "/test/cs418/bad/bad-number.txt", "-o", out});
   CHECK(r.status == 3);
   CHECK(r.err.find("the board reported an error: 2:15: not a number: 'O.5'") != std::string::npos);
   CHECK(!hs_test::file_exists(out));
   // Over framed the same error comes back in an X frame.
   const RunResult framed = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--protocol",
-                                "framed", std::string(HS_SOURCE_DIR) + "/test/general/bad/bad-number.txt", "-o", out});
+                                "framed", std::string(HS_SOURCE_DIR) + "/test/cs418/bad/bad-number.txt", "-o", out});
   CHECK(framed.status == 3);
   CHECK(framed.err.find("the board reported an error: 2:15: not a number: 'O.5'") != std::string::npos);
   CHECK(!hs_test::file_exists(out));

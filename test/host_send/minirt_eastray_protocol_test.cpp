@@ -135,7 +135,7 @@ TEST_CASE("broken miniRT and EASTRAY files over course and framed: located error
   // EASTRAY: host-send checks the expanded scene before sending, with
   // minrt's own "FILE:LINE:COL: error: MESSAGE".
   for (const char* name : {"bad-number", "undefined-vertex", "unterminated-block", "range-kind"}) {
-    const std::string scene = source + "/test/general/eastray_bad/" + name + ".ray";
+    const std::string scene = source + "/test/eastray/eastray_bad/" + name + ".ray";
     const RunResult m = run({HS_MINRT, "--precision", "float", "--shims", "portable", scene, "-o", dir.file("m.png")});
     REQUIRE(m.status != 0);
     std::string line = m.err.substr(0, m.err.find('\n'));

@@ -200,7 +200,7 @@ TEST_CASE("every broken CS418 and Jaworski file gets its located error over ever
           "[e2e][firmware][bad]") {
   HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
-  std::vector<std::string> bad = files_in(std::string(HS_SOURCE_DIR) + "/test/general/bad", ".txt");
+  std::vector<std::string> bad = files_in(std::string(HS_SOURCE_DIR) + "/test/cs418/bad", ".txt");
   const std::vector<std::string> jw = files_in(hs_test::shared_dir() + "/formats/jaworski/bad", ".txt");
   bad.insert(bad.end(), jw.begin(), jw.end());
   REQUIRE(bad.size() >= 9);

@@ -14,7 +14,7 @@
 
 #define minrt minrt_fma_build
 #include "core/math/math_portable.hpp"
-#include "render/minrt/render.hpp"
+#include "render/sld/render.hpp"
 #undef minrt
 
 namespace minrt_accuracy {

@@ -1,4 +1,4 @@
-// EASTRAY invalid inputs beyond ../shared and test/general/eastray_bad
+// EASTRAY invalid inputs beyond ../shared and test/eastray/eastray_bad
 // (issue 14): each class the issue lists in new forms, plus the lexical and
 // preprocessor corner cases (unterminated comments and include names,
 // include cycles through three files, self-referring and exploding macros,
@@ -256,7 +256,7 @@ TEST_CASE("eastray probe: host-send refuses invalid inputs before sending, over 
   }
 }
 
-// The files this helper added to test/general/eastray_bad (which the
+// The files this helper added to test/eastray/eastray_bad (which the
 // firmware tests also send to the board as they are): each names its
 // expected message in its header comment.
 TEST_CASE("eastray probe: the added invalid scene files, through minrt and host-send", "[eastray][eprobe]") {

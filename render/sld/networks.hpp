@@ -1,9 +1,9 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // AND/OR networks: inside/outside tests, shadows (with their per-axis
 // culling limits) and the nearest intersection.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

@@ -1,8 +1,8 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // The mirror table: every reflecting surface, set up once per scene.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

@@ -1,8 +1,8 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // The surface normal and the texture colour at the hit point.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

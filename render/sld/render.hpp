@@ -16,7 +16,7 @@
 #include "core/image/ppm_writer.hpp"
 #include "formats/sld/scene.hpp"
 #include "formats/sld/sld_reader.hpp"
-#include "render/minrt/tracer.hpp"
+#include "render/sld/tracer.hpp"
 
 namespace minrt {
 

@@ -7,7 +7,7 @@
 // are kept on purpose and marked "original:".
 //
 // This file declares the class, its data and its small helpers; the member
-// functions are defined by seam in the files render/minrt/tracer.hpp lists.
+// functions are defined by seam in the files render/sld/tracer.hpp lists.
 #pragma once
 
 #include <stdint.h>
@@ -17,7 +17,7 @@
 #include "core/image/row_sink.hpp"
 #include "formats/sld/scene.hpp"
 #include "formats/sld/sld_limits.hpp"
-#include "render/minrt/tracer_state.hpp"
+#include "render/sld/tracer_state.hpp"
 
 // The innermost solver steps run millions of times per image; keep them in
 // their callers' loops.

@@ -1,9 +1,9 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // Diffuse (indirect) light sampled over the precomputed directions and
 // shared between a pixel and its neighbours; the rows and the render loop.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

@@ -630,7 +630,7 @@ TEST_CASE("eastray: shading laws", "[eastray]") {
   }
 }
 
-// The files of test/general/eastray_bad (also sent to the board by the
+// The files of test/eastray/eastray_bad (also sent to the board by the
 // firmware tests): each names its expected message in its header comment.
 TEST_CASE("eastray: the invalid scene files are refused by minrt and by host-send before sending", "[eastray]") {
   const std::string dir = EASTRAY_BAD_DIR;

@@ -1,4 +1,4 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // Rows in bands: render_rows gives any band of rows the bytes of the
 // whole-image render, so that workers can render bands of one image in
 // parallel, each with a tracer of its own.
@@ -15,7 +15,7 @@
 // both need are traced once and handed over (SharedRows).
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

@@ -1,10 +1,10 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // Direction tables and culling: per-direction solver constants, the
 // per-start tables and forward-culling masks, and the 300 diffuse
 // directions themselves.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

@@ -1,9 +1,9 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // Direct light along a primary ray: trace_ray with its mirror recursion,
 // the light source's diffuse and highlight terms and their reflections.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

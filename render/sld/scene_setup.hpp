@@ -1,10 +1,10 @@
-// Part of the min-rt tracer (render/minrt/tracer.hpp).
+// Part of the min-rt tracer (render/sld/tracer.hpp).
 // Scene preparation: the original's globals from the scene (screen, light,
 // objects with their rotated quadratic forms, AND/OR networks) and init,
 // which takes the tables from the arena.
 #pragma once
 
-#include "render/minrt/tracer_class.hpp"
+#include "render/sld/tracer_class.hpp"
 
 namespace minrt {
 

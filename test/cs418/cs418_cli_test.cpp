@@ -1,6 +1,6 @@
 // minrt on CS418 files as a student meets it: the PNG named in the scene,
 // -o, located errors with status 2 and no image for every broken file in
-// test/general/bad, the output checked before the render.
+// test/cs418/bad, the output checked before the render.
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
@@ -31,7 +31,7 @@ bool exists(const std::string& p) {
   return ::stat(p.c_str(), &st) == 0;
 }
 
-const std::string kBad = std::string(MINRT_SOURCE_DIR) + "/test/general/bad";
+const std::string kBad = std::string(MINRT_SOURCE_DIR) + "/test/cs418/bad";
 
 }  // namespace
 
