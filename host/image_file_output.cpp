@@ -5,7 +5,24 @@
 #include <cstring>
 #include <vector>
 
+#include "core/image/bmp_writer.hpp"
+#include "tiff_io.hpp"
+
 namespace minrt::host {
+
+ImageFile image_file_for(const std::string& name, formats::ImageKind format_default) {
+  if (formats::has_extension(name.c_str(), ".png")) return ImageFile::kPng;
+  if (formats::has_extension(name.c_str(), ".ppm")) return ImageFile::kPpm;
+  if (formats::has_extension(name.c_str(), ".bmp")) return ImageFile::kBmp;
+  if (formats::has_extension(name.c_str(), ".tif") || formats::has_extension(name.c_str(), ".tiff"))
+    return ImageFile::kTiff;
+  switch (format_default) {
+    case formats::ImageKind::kPpm: return ImageFile::kPpm;
+    case formats::ImageKind::kBmp: return ImageFile::kBmp;
+    case formats::ImageKind::kPng: break;
+  }
+  return ImageFile::kPng;
+}
 
 bool write_ppm(std::FILE* f, const RgbaImage& image) {
   if (std::fprintf(f, "P6\n%d %d\n255\n", image.width, image.height) < 0) return false;
@@ -19,13 +36,40 @@ bool write_ppm(std::FILE* f, const RgbaImage& image) {
   return true;
 }
 
-bool write_image_file(std::FILE* f, const std::string& name, const RgbaImage& image, std::string& why) {
-  const std::string ppm = ".ppm";
-  const bool is_ppm = name.size() >= ppm.size() && name.compare(name.size() - ppm.size(), ppm.size(), ppm) == 0;
-  if (!is_ppm) return write_png(f, image, why);
-  if (write_ppm(f, image)) return true;
-  why = std::strerror(errno);
-  return false;
+namespace {
+
+// The BMP stores the bottom row first, each pixel as BGRA.
+bool write_bmp(std::FILE* f, const RgbaImage& image) {
+  uint8_t header[BmpWriter::kHeaderBytes];
+  BmpWriter::header(header, image.width, image.height);
+  if (std::fwrite(header, 1, sizeof header, f) != sizeof header) return false;
+  std::vector<uint8_t> row(static_cast<std::size_t>(image.width) * 4);
+  for (int y = image.height - 1; y >= 0; --y) {
+    BmpWriter::to_bgra(image.rgba.data() + static_cast<std::size_t>(y) * image.width * 4, row.data(), image.width);
+    if (std::fwrite(row.data(), 1, row.size(), f) != row.size()) return false;
+  }
+  return true;
+}
+
+bool write_tiff(std::FILE* f, const RgbaImage& image, std::string& why) {
+  std::vector<uint8_t> rgb(static_cast<std::size_t>(image.width) * image.height * 3);
+  for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * image.height; i < n; ++i)
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = image.rgba[4 * i + c];
+  return write_tiff_rgb(f, image.width, image.height, rgb, why);
+}
+
+}  // namespace
+
+bool write_image(std::FILE* f, ImageFile kind, const RgbaImage& image, std::string& why) {
+  bool ok = false;
+  switch (kind) {
+    case ImageFile::kPng: return write_png(f, image, why);
+    case ImageFile::kTiff: return write_tiff(f, image, why);
+    case ImageFile::kPpm: ok = write_ppm(f, image); break;
+    case ImageFile::kBmp: ok = write_bmp(f, image); break;
+  }
+  if (!ok) why = std::strerror(errno);
+  return ok;
 }
 
 }  // namespace minrt::host

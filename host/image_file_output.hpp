@@ -1,20 +1,28 @@
-// An RGBA image written as the file its name asks for: `.ppm` binary PPM
-// (P6, alpha dropped), anything else PNG. minrt's CS418 and miniRT front
-// ends both take either from -o.
+// An RGBA image written as the file its name asks for: `.png`, `.ppm`
+// (binary P6, alpha dropped), `.bmp` (32-bit, as Jaworski's program writes
+// it), `.tif`/`.tiff` (RGB through libtiff); any other name gets the
+// format's own kind (formats/registry.hpp's reply image).
 #pragma once
 
 #include <cstdio>
 #include <string>
 
+#include "formats/registry.hpp"
 #include "png_io.hpp"
 
 namespace minrt::host {
+
+enum class ImageFile { kPng, kPpm, kBmp, kTiff };
+
+// The kind `name`'s extension asks for (without case), else the one the
+// format writes.
+ImageFile image_file_for(const std::string& name, formats::ImageKind format_default);
 
 // P6, maxval 255, the RGB of each pixel. False when a write fails (errno
 // says why).
 bool write_ppm(std::FILE* f, const RgbaImage& image);
 
-// PPM when `name` ends in .ppm, else PNG; false with the reason in `why`.
-bool write_image_file(std::FILE* f, const std::string& name, const RgbaImage& image, std::string& why);
+// Writes `image` as `kind`; false with the reason in `why`.
+bool write_image(std::FILE* f, ImageFile kind, const RgbaImage& image, std::string& why);
 
 }  // namespace minrt::host

@@ -3,8 +3,7 @@
 // Freestanding: <stdint.h>/<stddef.h> and the core's base only.
 //
 //   word 0  kTextSceneMarker, a NaN bit pattern
-//   word 1  the format tag (MINRT_SCENE_FORMAT_CS418, _JAWORSKI, _MINIRT
-//           or _EASTRAY)
+//   word 1  the format's tag (formats/registry.hpp, Format::wire_tag)
 //   word 2  N, the number of bytes that follow
 //   N bytes exactly what the raw protocol sends before its 0x04: for CS418
 //           and miniRT the texture preamble when the scene names textures
@@ -36,10 +35,9 @@ namespace minrt::send::text {
 inline constexpr uint32_t kTextSceneMarker = 0x7FF45854;  // exponent all ones, mantissa non-zero: NaN
 inline constexpr size_t kHeaderBytes = 12;
 
-inline bool is_text_format(uint32_t tag) {
-  return tag == MINRT_SCENE_FORMAT_CS418 || tag == MINRT_SCENE_FORMAT_JAWORSKI || tag == MINRT_SCENE_FORMAT_MINIRT ||
-         tag == MINRT_SCENE_FORMAT_EASTRAY;
-}
+// A tag a text format may have (which format it names is the registry's
+// business, formats/registry.hpp; the board refuses one it does not know).
+inline bool is_text_format(uint32_t tag) { return tag != MINRT_SCENE_FORMAT_SLD && tag < MINRT_SCENE_FORMAT_TAG_LIMIT; }
 
 // The scene bytes as they arrived (texture preamble and text), in memory.
 struct TextScene {

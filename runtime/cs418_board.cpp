@@ -1,6 +1,5 @@
 #include "cs418_board.hpp"
 
-#include "core/image/png_writer.hpp"
 #include "board_math.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "general_board.hpp"
@@ -36,10 +35,5 @@ SceneResult render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, boo
   return SceneResult::kOk;
 }
 
-SceneResult render_cs418(ByteSource in, ByteSink out, Arena& arena, bool all_features,
-                         const send::textures::Table* textures, Diagnostic& error) {
-  PngStoredWriter png(out);
-  return render_cs418_rows(in, rgba_row_sink_of(png), arena, all_features, textures, error);
-}
 
 }  // namespace minrt::fw

@@ -1,7 +1,6 @@
 #include "eastray_board.hpp"
 
 #include "board_math.hpp"
-#include "core/image/png_writer.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "formats/eastray/eastray_model.hpp"
 #include "render/general/render.hpp"
@@ -15,8 +14,6 @@ namespace {
 constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096, 4096, 4096};
 
 }  // namespace
-
-bool is_eastray_start(int first_byte) { return first_byte == '/'; }
 
 SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
   using R = Math::real;
@@ -48,7 +45,7 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
   return SceneResult::kOk;
 }
 
-SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray_source_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
   // The text, whole, at the arena's top: parts are read again at every
   // call. Room is left below it for the scene, the reader's part table and
   // the rows.
@@ -77,8 +74,7 @@ SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic
   char* kept = arena.alloc_top<char>(size);
   for (size_t i = size; i-- > 0;) kept[i] = text[i];  // kept >= text: from the end
   text = kept;
-  PngStoredWriter png(out);
-  return render_eastray_rows(text, size, rgba_row_sink_of(png), arena, error);
+  return render_eastray_rows(text, size, rows, arena, error);
 }
 
 }  // namespace minrt::fw

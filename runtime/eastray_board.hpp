@@ -3,7 +3,7 @@
 // marker; the board reads it whole into the arena (over course and framed it
 // is already there: render_eastray_rows), renders it in float with
 // the portable shims like the host's `--precision float --shims portable`,
-// and streams the image back as a stored-deflate PNG.
+// and sends the image back as a stored-deflate PNG (board_formats.hpp).
 #pragma once
 
 #include "core/base/arena.hpp"
@@ -14,14 +14,10 @@
 
 namespace minrt::fw {
 
-SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
+// From the line (raw): the text is read whole into the arena first.
+SceneResult render_eastray_source_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error);
 
-// The same from text already in memory (course and framed uploads) into an
-// RGBA row sink.
+// From text already in memory (course and framed uploads).
 SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error);
-
-// True when the scene's first byte is host-send's `/*` marker (no other
-// format the board reads starts with '/').
-bool is_eastray_start(int first_byte);
 
 }  // namespace minrt::fw

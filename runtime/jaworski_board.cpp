@@ -1,8 +1,6 @@
 #include "jaworski_board.hpp"
 
-#include "core/image/bmp_writer.hpp"
 #include "board_math.hpp"
-#include "same_text.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "render/jaworski/tracer.hpp"
 
@@ -16,14 +14,6 @@ constexpr int32_t kCapacity = 4096;
 
 }  // namespace
 
-bool is_jaworski_start(int first_byte, const char* first_word) {
-  if (first_byte == '#') return true;  // neither SLD nor CS418 has comments
-  static constexpr const char* kWords[] = {"imwidth", "imheight", "canvwidth", "canvheight", "depth",
-                                           "bgcolor", "raydepth", "lights",    "objects"};
-  for (const char* w : kWords)
-    if (same_text(first_word, w)) return true;
-  return false;
-}
 
 SceneResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
   using R = Math::real;
@@ -48,9 +38,5 @@ SceneResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& arena, 
   return SceneResult::kOk;
 }
 
-SceneResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
-  BmpWriter bmp(out);
-  return render_jaworski_rows(in, rgba_row_sink_of(bmp), arena, error);
-}
 
 }  // namespace minrt::fw

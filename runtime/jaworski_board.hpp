@@ -12,14 +12,8 @@
 
 namespace minrt::fw {
 
-SceneResult render_jaworski(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
-
-// The same into any RGBA row sink, bottom row first (the framed protocol's
-// row sender).
+// Into RGBA rows, bottom row first (the BMP writer, or the framed
+// protocol's row sender).
 SceneResult render_jaworski_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error);
-
-// True when a scene's first word (lower case, letters only) or its first
-// byte ('#') says it is one of Jaworski's.
-bool is_jaworski_start(int first_byte, const char* first_word);
 
 }  // namespace minrt::fw

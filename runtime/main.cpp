@@ -1,11 +1,9 @@
-// The firmware: reads an SLD scene from the UART, renders it with the
-// portable float math and streams the PPM back, row by row. A scene whose
-// first word starts with a letter is a CS418 file (cs418_board.hpp): its
-// image goes back as a streamed PNG; one that starts with `#` or a header
-// field of Jaworski's format (jaworski_board.hpp) gets a streamed BMP; one
-// that starts with a miniRT element (minirt_board.hpp) a streamed PNG; one
-// that starts with host-send's `/*` marker is an expanded EASTRAY scene
-// (eastray_board.hpp) and gets a streamed PNG too. On a bad scene
+// The firmware: reads a scene from the UART, renders it with the portable
+// float math and streams the image back, row by row. The scene's format is
+// recognised from its first word by the registry's rule
+// (formats/registry.hpp), the same as minrt's; an SLD scene gets the
+// original's PPM, the others the image board_formats.hpp sends (PNG, or
+// BMP for Jaworski's). On a bad scene
 // or bad arguments it sends one MINRT_ERROR_MARKER line instead and returns
 // a non-zero status, which crt0 hands to the test finisher.
 //
@@ -20,10 +18,7 @@
 
 #include "core/base/diagnostic.hpp"
 #include "core/base/peek_source.hpp"
-#include "cs418_board.hpp"
-#include "jaworski_board.hpp"
-#include "minirt_board.hpp"
-#include "eastray_board.hpp"
+#include "board_formats.hpp"
 #include "firmware_args.hpp"
 #include "firmware_layout.h"
 #include "footprint.hpp"
@@ -35,7 +30,6 @@
 #include "protocol/raw_check.hpp"
 #include "render/sld/render.hpp"
 #include "serial_stream.hpp"
-#include "text_scene_board.hpp"
 
 namespace {
 
@@ -67,8 +61,20 @@ minrt::RenderStatus status_of(minrt::fw::SceneResult r) {
                                                    : minrt::RenderStatus::kSceneError;
 }
 
-// Course protocol, a CS418, Jaworski, miniRT or EASTRAY scene after its marker word: the
-// bytes into the arena, the format's image (PNG, BMP) back as in raw.
+// What a text-format scene may use on this board.
+minrt::fw::BoardScene board_scene(minrt::Arena& arena, const minrt::fw::FirmwareOptions& options,
+                                  minrt::Diagnostic& error) {
+  minrt::fw::BoardScene s;
+  s.arena = &arena;
+  s.width = options.render.width;
+  s.height = options.render.height;
+  s.all_features = options.all_features;
+  s.error = &error;
+  return s;
+}
+
+// Course protocol, a text-format scene after its marker word: the bytes
+// into the arena, the format's image (PNG, BMP) back as in raw.
 minrt::RenderStatus serve_course_text(minrt::ByteSource in, minrt::send::course::Endian endian, minrt::ByteSink out,
                                       const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
                                       minrt::Diagnostic& error) {
@@ -76,8 +82,7 @@ minrt::RenderStatus serve_course_text(minrt::ByteSource in, minrt::send::course:
   bool too_large = false;
   if (!minrt::send::text::read_course(in, endian, arena, scene, too_large, error))
     return too_large ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
-  return status_of(minrt::fw::stream_text_scene(scene, out, arena, options.render.width, options.render.height,
-                                                options.all_features, error));
+  return status_of(minrt::fw::stream_uploaded_image(scene, board_scene(arena, options, error), out));
 }
 
 // Course protocol (protocol/protocol_course_board.hpp). Stage 1, the boot
@@ -190,9 +195,8 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
           }
           rows.set_pixel_bytes(4);
           StoreOnBegin sink{rows, arena};
-          status = status_of(
-              minrt::fw::render_text_scene_rows(text, minrt::rgba_row_sink_of(sink), arena, options.render.width,
-                                                options.render.height, options.all_features, error));
+          status = status_of(minrt::fw::render_uploaded_rows(text, board_scene(arena, options, error),
+                                                             minrt::rgba_row_sink_of(sink)));
           return status == minrt::RenderStatus::kOk;
         }
         const minrt::RenderOptions& render = options.render;
@@ -209,53 +213,6 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
     case BoardResult::kRenderFailed: return status_of(status);
     default: return MINRT_STATUS_SCENE_ERROR;
   }
-}
-
-// Raw protocol: a text-format scene as the first bytes tell it, after any
-// texture preamble. Each format's board renderer (*_board.hpp) is an entry;
-// the first that claims the scene renders it, and a scene none claims is SLD.
-struct RawScene {
-  minrt::ByteSource text;
-  minrt::ByteSink out;
-  minrt::Arena& arena;
-  const minrt::fw::FirmwareOptions& options;
-  const minrt::send::textures::Table* textures;
-  minrt::Diagnostic& error;
-};
-
-struct RawFormat {
-  bool (*claims)(int first_byte, const char* first_word);
-  minrt::RenderStatus (*render)(const RawScene& scene);
-};
-
-// In the order they are tried: EASTRAY's `/*` marker, Jaworski's header
-// fields or `#`, miniRT's element identifiers, then any other word that
-// starts with a letter is CS418.
-constexpr RawFormat kRawFormats[] = {
-    {[](int first, const char*) { return minrt::fw::is_eastray_start(first); },
-     [](const RawScene& s) { return status_of(minrt::fw::render_eastray(s.text, s.out, s.arena, s.error)); }},
-    {[](int first, const char* word) { return minrt::fw::is_jaworski_start(first, word); },
-     [](const RawScene& s) { return status_of(minrt::fw::render_jaworski(s.text, s.out, s.arena, s.error)); }},
-    {[](int, const char* word) { return minrt::fw::is_minirt_start(word); },
-     [](const RawScene& s) {  // PNG at the board's --size
-       return status_of(minrt::fw::render_minirt(s.text, s.out, s.arena, s.options.render.width,
-                                                 s.options.render.height, s.options.all_features, s.textures,
-                                                 s.error));
-     }},
-    {[](int first, const char*) { return (first >= 'a' && first <= 'z') || (first >= 'A' && first <= 'Z'); },
-     [](const RawScene& s) {
-       return status_of(minrt::fw::render_cs418(s.text, s.out, s.arena, s.options.all_features, s.textures, s.error));
-     }},
-};
-
-const RawFormat* find_raw_format(int first_byte, const char* first_word) {
-  // SLD's first value is a number: a digit, sign or point, which starts no
-  // text format, so the common case skips the word lists.
-  if ((first_byte >= '0' && first_byte <= '9') || first_byte == '-' || first_byte == '+' || first_byte == '.')
-    return nullptr;
-  for (const RawFormat& f : kRawFormats)
-    if (f.claims(first_byte, first_word)) return &f;
-  return nullptr;
 }
 
 }  // namespace
@@ -297,7 +254,7 @@ extern "C" int main(int argc, char** argv) {
   const bool checked = request.first_nonblank() == MINRT_CHECK_REQUEST;
   minrt::send::raw_check::CheckedSink output(uart_out.sink(), checked);
   minrt::PeekSource scene(checked ? input.source() : request.source());
-  int first = scene.first_nonblank();
+  const int first = scene.first_nonblank();
   // A CS418 scene's textures, decoded by host-send, come first.
   minrt::send::textures::Table* textures = nullptr;
   minrt::PeekSource after_textures(input.source());
@@ -309,16 +266,21 @@ extern "C" int main(int argc, char** argv) {
       send_error(uart, error);
       return MINRT_STATUS_OUT_OF_MEMORY;
     }
-    first = after_textures.first_nonblank();
   }
+  // The format by the registry's rule, from the first word (SLD: a number).
   minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
-  char word[16];
-  text.first_word(word, sizeof word);
-  const RawFormat* format = find_raw_format(first, word);
-  const minrt::RenderStatus status =
-      format != nullptr
-          ? format->render(RawScene{text.source(), output.sink(), arena, options, textures, error})
-          : minrt::render_sld<Math>(scene.source(), output.sink(), options.render, g_state, arena, error);
+  const int kept = text.peek_start(static_cast<int>(minrt::formats::TextStart::kWordBytes));
+  const minrt::formats::Format& format =
+      minrt::formats::format_of_text(minrt::formats::text_start(text.kept(), static_cast<size_t>(kept)));
+  minrt::RenderStatus status;
+  if (format.reply == minrt::formats::ImageKind::kPpm) {
+    status = minrt::render_sld<Math>(text.source(), output.sink(), options.render, g_state, arena, error);
+  } else {
+    minrt::fw::BoardScene s = board_scene(arena, options, error);
+    s.text = text.source();
+    s.textures = textures;
+    status = status_of(minrt::fw::stream_board_image(format, s, output.sink()));
+  }
   if (status != minrt::RenderStatus::kOk) {
     send_error(uart, error);
     return status_of(status);

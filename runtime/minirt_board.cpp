@@ -1,8 +1,6 @@
 #include "minirt_board.hpp"
 
 #include "board_math.hpp"
-#include "same_text.hpp"
-#include "core/image/png_writer.hpp"
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
 #include "general_board.hpp"
@@ -20,18 +18,7 @@ int32_t find_texture(void* ctx, const char* name, Diagnostic& error) {
 
 }  // namespace
 
-bool is_minirt_start(const char* first_word) {
-  static constexpr const char* kWords[] = {"a", "c", "l", "sp", "pl", "cy", "co", "plc", "spt"};
-  for (const char* w : kWords)
-    if (same_text(first_word, w)) return true;
-  return false;
-}
 
-SceneResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
-                          const send::textures::Table* textures, Diagnostic& error) {
-  PngStoredWriter png(out);
-  return render_minirt_rows(in, rgba_row_sink_of(png), arena, width, height, all_features, textures, error);
-}
 
 SceneResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
                                bool all_features, const send::textures::Table* textures, Diagnostic& error) {

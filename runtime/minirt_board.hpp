@@ -14,15 +14,8 @@
 
 namespace minrt::fw {
 
-SceneResult render_minirt(ByteSource in, ByteSink out, Arena& arena, int width, int height, bool all_features,
-                          const send::textures::Table* textures, Diagnostic& error);
-
-// The same into RGBA rows (the framed protocol's RowFramer, or the PNG).
+// Into RGBA rows (the PNG writer, or the framed protocol's RowFramer).
 SceneResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, int width, int height,
                                bool all_features, const send::textures::Table* textures, Diagnostic& error);
-
-// True when a scene's first word (lower case, letters only) is a miniRT
-// element identifier: a, c, l, sp, pl, cy, co, plc, spt.
-bool is_minirt_start(const char* first_word);
 
 }  // namespace minrt::fw

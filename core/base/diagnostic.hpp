@@ -18,6 +18,9 @@ struct Diagnostic {
   bool has_pos = false;
   char message[200] = {};
   int length = 0;
+  // The input did not fit the memory it was given: the same input may be
+  // read with a larger arena (the host grows it and tries again).
+  bool out_of_memory = false;
 
   Diagnostic& text(const char* s) {
     while (*s != 0 && length + 1 < static_cast<int>(sizeof message)) message[length++] = *s++;

@@ -97,6 +97,11 @@ class Reader {
   // --------------------------------------------------------------- basics
   void advance() { tok_ = lex_.next(); }
 
+  // A table is full: the host tries again with larger ones.
+  bool fail_full(const SourcePos& at, const char* msg) {
+    error_->out_of_memory = true;
+    return fail_at(at, msg);
+  }
   bool fail_at(const SourcePos& at, const char* msg) {
     error_->pos = at;
     error_->has_pos = true;
@@ -394,7 +399,7 @@ class Reader {
     l.position = to_world.point(l.position);
     l.direction = to_world.vector(l.direction);
     if (dot(l.direction, l.direction) != R(0)) l.direction = normalize<M>(l.direction);
-    if (scene_.light_count >= scene_.light_capacity) return fail_at(at, "too many lights for the memory");
+    if (scene_.light_count >= scene_.light_capacity) return fail_full(at, "too many lights for the memory");
     scene_.lights[scene_.light_count++] = l;
     return true;
   }
@@ -453,7 +458,7 @@ class Reader {
     }
     if (m.bump != R(0)) warn("warning: bump needs a mapping, which is not supported; ignored");
     if (!end_statement("the colour")) return false;
-    if (scene_.material_count >= scene_.material_capacity) return fail_at(at, "too many colours for the memory");
+    if (scene_.material_count >= scene_.material_capacity) return fail_full(at, "too many colours for the memory");
     scene_.materials[scene_.material_count++] = m;
     return true;
   }
@@ -523,7 +528,7 @@ class Reader {
 
   int32_t new_node(NodeKind kind, NodeKind mode, int32_t parent) {
     if (scene_.node_count >= scene_.node_capacity) {
-      fail_at(tok_.pos, "too many objects for the memory");
+      fail_full(tok_.pos, "too many objects for the memory");
       return kNone;
     }
     const int32_t id = scene_.node_count++;
@@ -853,7 +858,7 @@ class Reader {
 
   // Builds the primitive of `kind` with parameters p[0..n) under the moves m.
   bool place(int kind, const Affine<R>& m, const R* p, int n, const SourcePos& at, int32_t& out) {
-    if (scene_.primitive_count >= scene_.primitive_capacity) return fail_at(at, "too many objects for the memory");
+    if (scene_.primitive_count >= scene_.primitive_capacity) return fail_full(at, "too many objects for the memory");
     Primitive<R>& q = scene_.primitives[scene_.primitive_count];
     q = Primitive<R>{};
     q.kind = static_cast<uint8_t>(kind);
@@ -1007,7 +1012,10 @@ class Reader {
     uint32_t size = 16;
     while (size < 2 * n) size *= 2;
     index.slots = scratch_.template alloc_top<int32_t>(size);
-    if (index.slots == nullptr) return fail_here("no memory to index the polygon's vertices");
+    if (index.slots == nullptr) {
+      error_->out_of_memory = true;
+      return fail_here("no memory to index the polygon's vertices");
+    }
     index.mask = size - 1;
     for (uint32_t i = 0; i < size; ++i) index.slots[i] = kNone;
     for (int32_t v = first; v < scene_.vertex_count; ++v) {
@@ -1063,7 +1071,7 @@ class Reader {
         if (!integer(id, "vertex number", 0, 0x7fffffff) || !vec(pos, "vertex position")) return false;
         // Stored in every walk, so faces are checked everywhere; a walk
         // that places nothing drops them again at the end.
-        if (scene_.vertex_count >= scene_.vertex_capacity) return fail_at(id_at, "too many vertices for the memory");
+        if (scene_.vertex_count >= scene_.vertex_capacity) return fail_full(id_at, "too many vertices for the memory");
         scene_.vertex_ids[scene_.vertex_count] = id;
         scene_.vertices[scene_.vertex_count] = m.point(pos);
         scene_.vertex_normals[scene_.vertex_count] = V{};
@@ -1151,7 +1159,7 @@ class Reader {
       for (int i = 0; i < count; ++i) scene_.vertex_normals[idx[i]] += fn;
     }
     for (int i = 1; i + 1 < count; ++i) {
-      if (scene_.triangle_count >= scene_.triangle_capacity) return fail_at(at, "too many polygons for the memory");
+      if (scene_.triangle_count >= scene_.triangle_capacity) return fail_full(at, "too many polygons for the memory");
       Triangle<R>& t = scene_.triangles[scene_.triangle_count];
       t = Triangle<R>{};  // whole: the array is not zeroed (Scene::allocate)
       t.p0 = scene_.vertices[idx[0]];

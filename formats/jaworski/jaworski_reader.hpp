@@ -153,6 +153,11 @@ class Reader {
   }
 
   // --------------------------------------------------------------- helpers
+  // A table is full: the host tries again with larger ones.
+  bool fail_full(const char* msg) {
+    if (ok_) error_->out_of_memory = true;
+    return fail(msg);
+  }
   bool fail(const char* msg) {
     if (!ok_) return false;
     ok_ = false;
@@ -326,7 +331,7 @@ class Reader {
     R intensity;
     Vec3<R> c, v;
     if (!number(intensity, false) || !color(c) || !vector(v)) return false;
-    if (scene_.light_count == scene_.light_capacity) return fail("too many lights");
+    if (scene_.light_count == scene_.light_capacity) return fail_full("too many lights");
     Light<R>& l = scene_.lights[scene_.light_count++];
     l.kind = directional ? LightKind::kDirectional : LightKind::kSpherical;
     l.color = c * intensity;
@@ -359,14 +364,14 @@ class Reader {
       o.normal = n * (R(1) / M::sqrt(dot(n, n)));
     }
     if (!surface(o.surface, 0)) return false;
-    if (scene_.object_count == scene_.object_capacity) return fail("too many objects");
+    if (scene_.object_count == scene_.object_capacity) return fail_full("too many objects");
     scene_.objects[scene_.object_count++] = o;
     return true;
   }
 
   bool surface(int32_t& index, int depth) {
     if (depth > kMaxMixedDepth) return fail("'mixed' nested too deeply");
-    if (scene_.surface_count == scene_.surface_capacity) return fail("too many surfaces");
+    if (scene_.surface_count == scene_.surface_capacity) return fail_full("too many surfaces");
     index = scene_.surface_count++;
     SurfaceNode<R> node{};
     const SourcePos at = tok_.pos;
@@ -393,7 +398,7 @@ class Reader {
         R w;
         if (!number(w, false)) return false;
         if (!(w >= R(0))) return fail_value(wat, "mixed weight", "must be >= 0");
-        if (scene_.part_count == scene_.part_capacity) return fail("too many mixed parts");
+        if (scene_.part_count == scene_.part_capacity) return fail_full("too many mixed parts");
         const int32_t p = scene_.part_count++;
         int32_t child = kNone;
         if (!surface(child, depth + 1)) return false;

@@ -2,17 +2,11 @@
 
 #include "core/base/text_numbers.hpp"
 #include "file_input.hpp"
-#include "general_cli.hpp"
-#include "general_render.hpp"
 #include "image_load.hpp"
 #include "image_window.hpp"
-#include "jaworski_cli.hpp"
-#include "minirt_cli.hpp"
-#include "minirt_render.hpp"
 #include "png_io.hpp"
 #include "posix/output_file.hpp"
-#include "eastray_cli.hpp"
-#include "scene_format.hpp"
+#include "formats/registry.hpp"
 
 #include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
@@ -34,7 +28,7 @@
 #include "protocol_course_host.hpp"
 #include "protocol_framed_host.hpp"
 #include "protocol_raw.hpp"
-#include "texture_preamble.hpp"
+#include "scene_upload.hpp"
 #include "sim_launcher.hpp"
 #include "verify.hpp"
 
@@ -337,104 +331,48 @@ int run(const Options& options) {
   std::string scene, why;
   if (!minrt::host::read_whole_file(o.scene, scene, why, minrt::host::kMaxSceneBytes))
     return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
-  // A CS418 scene (the first word decides, as in minrt): the board answers
-  // with a PNG of the size on the png line, written by default to the name
-  // given there, like the course's program.
-  const minrt::host::SceneFormat format = minrt::host::detect_scene_format(o.scene, scene.substr(0, 4096));
-  const bool cs418 = format == minrt::host::SceneFormat::kCs418;
-  // A Jaworski scene: the board answers with a BMP, by default written to
-  // the scene's name with .bmp, like the original program.
-  const bool jaworski = format == minrt::host::SceneFormat::kJaworski;
-  if (jaworski) {
-    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to Jaworski scenes");
-    if (!o.output_given) o.output = minrt::host::jaworski_output_name(o.scene);
-    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
-      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
+  // The format, as minrt recognises it (formats/registry.hpp); its upload
+  // row checks the scene here and says what goes over the line and what
+  // comes back (scene_upload.cpp).
+  const std::size_t bom = minrt::formats::bom_bytes(reinterpret_cast<const uint8_t*>(scene.data()), scene.size());
+  const minrt::formats::Format& format = minrt::formats::detect_format(
+      o.scene.c_str(), minrt::formats::text_start(reinterpret_cast<const uint8_t*>(scene.data()), scene.size()));
+  scene.erase(0, bom);
+  const bool text_format = format.reply != minrt::formats::ImageKind::kPpm;  // SLD has protocols of its own
+  const bool png_reply = format.reply == minrt::formats::ImageKind::kPng;
+  if (text_format && !o.verify_ref.empty())
+    return fail(kExitUsage, std::string("--verify compares PPM images; it does not apply to ") + format.title + " scenes");
+  const std::size_t slash = o.scene.rfind('/');
+  const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
+  UploadRequest request{o.scene, slash == std::string::npos ? "" : o.scene.substr(0, slash + 1), ram - kFirmwareReserve,
+                        o.size_given ? o.spec.width : 0, o.size_given ? o.spec.height : 0};
+  Upload upload;
+  if (!upload_format(format.id).prepare(request, scene, upload, why))
+    return fail(kExitFirmware, "scene rejected before sending: " + why);
+  scene = std::move(upload.bytes);
+  if (upload.width > 0 && format.default_width > 0) {  // a format whose reply size the board takes from --size
+    o.spec.width = upload.width;
+    o.spec.height = upload.height;
   }
-  int png_width = 0, png_height = 0;
-  std::string texture_preamble;  // CS418, miniRT: decoded textures, sent ahead of the scene
-  // A miniRT scene: the board answers with a PNG at --size (default 800x600,
-  // as minrt), written by default to the scene's stem with .png.
-  const bool minirt = format == minrt::host::SceneFormat::kMinirt;
-  if (minirt) {
-    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to miniRT scenes");
-    if (!minrt::host::has_rt_extension(o.scene))
-      return fail(kExitFirmware, "scene rejected before sending: " + o.scene + ": a miniRT scene file's name must end in .rt");
-    if (!o.size_given) {
-      o.spec.width = minrt::host::kMinirtDefaultWidth;
-      o.spec.height = minrt::host::kMinirtDefaultHeight;
-    }
-    png_width = o.spec.width;
-    png_height = o.spec.height;
-    if (!o.output_given) {
+  const int png_width = upload.width, png_height = upload.height;
+  if (!o.output_given) {
+    if (!upload.output.empty()) {
+      o.output = upload.output;
+    } else if (png_reply) {
       o.output = default_output(o.scene);
       o.output.replace(o.output.size() - 4, 4, ".png");
     }
-    const std::size_t slash = o.scene.rfind('/');
-    const std::string base_dir = slash == std::string::npos ? "" : o.scene.substr(0, slash + 1);
-    const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
-    if (!build_minirt_texture_preamble(scene, o.scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
-      return fail(kExitFirmware, "scene rejected before sending: " + why);
-    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
-      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
-  // An EASTRAY scene: preprocessed and checked here, sent expanded; the
-  // board answers with a PNG, written like minrt's (-o, the output
-  // statement, the scene's name with .png).
-  const bool eastray = format == minrt::host::SceneFormat::kEastray;
-  if (eastray) {
-    // The scene is checked first, so a bad one gets its located message
-    // whatever protocol was asked for.
-    std::string expanded, statement;
-    if (!minrt::host::eastray_board_text(o.scene, scene, expanded, png_width, png_height, statement, why))
-      return fail(kExitFirmware, "scene rejected before sending: " + why);
-    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
-    scene = expanded;
-    bool tiff = false;
-    std::string warning;
-    const std::string name = minrt::host::eastray_output_name("", statement, o.scene, tiff, warning);
-    if (!o.output_given) {
-      o.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;  // the board sends PNG
-      if (!warning.empty() || tiff)
-        std::fprintf(stderr, "host-send: warning: the board sends PNG; writing %s\n", o.output.c_str());
-    }
-    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
-      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
-  }
-  const bool png_reply = cs418 || minirt || eastray;
-  if (cs418) {
-    if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to CS418 scenes");
-    std::string name;
-    if (!minrt::host::cs418_png_line(scene, png_width, png_height, name)) {
-      // The reply's size comes from that line, so the board cannot be asked.
-      // The core's reader, given the line alone, says what is wrong and
-      // where, as minrt and the board do.
-      const std::string first = scene.substr(0, scene.find('\n'));
-      minrt::host::GeneralResult unused;
-      std::string located;
-      if (minrt::host::render_cs418(first + "\n", o.scene, "", minrt::host::GeneralOptions{}, unused, located,
-                                     minrt::WarningSink{}))
-        located = o.scene + ":1:1: error: the first line must be 'png WIDTH HEIGHT FILE.png' (1..4096 each)";
-      return fail(kExitFirmware, "scene rejected before sending: " + located);
-    }
-    if (!o.output_given) o.output = name;
-    // The textures it names go first, decoded here (the board has no PNG
-    // decoder); they must fit in the board's RAM next to the firmware.
-    const std::size_t slash = o.scene.rfind('/');
-    const std::string base_dir = slash == std::string::npos ? "" : o.scene.substr(0, slash + 1);
-    const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
-    if (!build_texture_preamble(scene, o.scene, base_dir, ram - kFirmwareReserve, texture_preamble, why))
-      return fail(kExitFirmware, "scene rejected before sending: " + why);
-    if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
-      return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
-  }
+  if (!upload.warning.empty() && !o.output_given) std::fprintf(stderr, "host-send: warning: %s\n", upload.warning.c_str());
+  if (text_format && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+    return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   // The output is checked before the transfer, not after minutes of it.
   if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
   // refuses such a scene with minrt's message, so nothing is sent.
-  if (!png_reply && !jaworski && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
+  if (!text_format && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos) {
     std::string words;
     if (!sld_to_course_words(scene, false, words, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
@@ -514,17 +452,14 @@ int run(const Options& options) {
   TransferResult r;
   CourseHostOptions course_options;
   course_options.big_endian = o.big_endian;
-  if (jaworski || png_reply) {
+  if (text_format) {
     // Course and framed carry these formats as text behind a header
     // (protocol/text_scene_upload.hpp), the bytes raw would send; the image
     // is the format's own.
-    const std::string bytes = texture_preamble + scene;  // no preamble: Jaworski, EASTRAY, untextured
-    const std::uint32_t tag = cs418      ? MINRT_SCENE_FORMAT_CS418
-                              : minirt   ? MINRT_SCENE_FORMAT_MINIRT
-                              : eastray  ? MINRT_SCENE_FORMAT_EASTRAY
-                                         : MINRT_SCENE_FORMAT_JAWORSKI;
+    const std::string& bytes = scene;  // the texture preamble, if any, and the text
+    const std::uint32_t tag = format.wire_tag;
     if (o.protocol == Protocol::kFramed) {
-      r = run_framed_text(ex, tag, bytes, png_width, png_height);
+      r = run_framed_text(ex, tag, png_reply ? FramedImage::kPng : FramedImage::kBmp, bytes, png_width, png_height);
     } else if (o.protocol == Protocol::kCourse) {
       const std::string words = text_scene_course_words(tag, bytes, o.big_endian);
       if (png_reply) {

@@ -285,13 +285,12 @@ TransferResult run_framed(Exchange& ex, const std::string& scene_text, const Ima
   return run_framed_image(ex, scene_text, FramedImage::kPpm, spec, options);
 }
 
-TransferResult run_framed_text(Exchange& ex, std::uint32_t format, const std::string& bytes, int width, int height,
-                               const FramedHostOptions& options) {
+TransferResult run_framed_text(Exchange& ex, std::uint32_t format, FramedImage kind, const std::string& bytes,
+                               int width, int height, const FramedHostOptions& options) {
   std::string upload(text::kHeaderBytes, '\0');
   text::put_header(reinterpret_cast<uint8_t*>(upload.data()), format, static_cast<uint32_t>(bytes.size()),
                    course::Endian::kLittle);
   upload += bytes;
-  const FramedImage kind = format == MINRT_SCENE_FORMAT_JAWORSKI ? FramedImage::kBmp : FramedImage::kPng;
   return run_framed_image(ex, upload, kind, ImageSpec{width, height, PpmKind::kP6}, options);
 }
 

@@ -30,12 +30,13 @@ enum class FramedImage { kPpm, kPng, kBmp };
 // board streams over raw and course.
 std::string framed_rgba_image(FramedImage kind, int width, int height, const std::vector<std::vector<uint8_t>>& rows);
 
-// A CS418 (`format` MINRT_SCENE_FORMAT_CS418) or Jaworski scene: `bytes` as
-// raw would send them (texture preamble, text) behind the text-scene header
+// A text-format scene (`format`: its registry tag): `bytes` as raw would
+// send them (texture preamble, text) behind the text-scene header
 // (protocol/text_scene_upload.hpp); the board answers with RGBA rows, and
-// the result is the PNG or BMP. `width`/`height`: the png line's size, or 0
-// to take the one the board announces.
-TransferResult run_framed_text(Exchange& ex, std::uint32_t format, const std::string& bytes, int width, int height,
+// the result is the `kind` of image (PNG or BMP). `width`/`height`: the
+// scene's size, or 0 to take the one the board announces.
+TransferResult run_framed_text(Exchange& ex, std::uint32_t format, FramedImage kind, const std::string& bytes,
+                               int width, int height,
                                const FramedHostOptions& options = FramedHostOptions{});
 
 }  // namespace minrt::send

@@ -75,16 +75,14 @@
  * ends the input at once. */
 #define MINRT_FRAMED_IDLE_FACTOR 1024
 
-/* The scene formats, by the tag a protocol uses to say which one it carries.
- * Raw tells them apart by content; course and framed carry SLD as they
- * always did and CS418, Jaworski, miniRT and EASTRAY scenes behind a header
- * with their tag (protocol/text_scene_upload.hpp). Values are fixed: boards and hosts of
+/* The scene formats travel by the tag the registry gives each one
+ * (formats/registry.hpp, Format::wire_tag). Raw tells them apart by content;
+ * course and framed carry SLD (tag MINRT_SCENE_FORMAT_SLD) as they always did
+ * and the other formats behind a header with their tag
+ * (protocol/text_scene_upload.hpp). Tags are fixed: boards and hosts of
  * different versions must agree. */
 #define MINRT_SCENE_FORMAT_SLD 0
-#define MINRT_SCENE_FORMAT_CS418 1
-#define MINRT_SCENE_FORMAT_JAWORSKI 2
-#define MINRT_SCENE_FORMAT_MINIRT 3
-#define MINRT_SCENE_FORMAT_EASTRAY 4
+#define MINRT_SCENE_FORMAT_TAG_LIMIT 256 /* tags are below it */
 
 /* Halt status. */
 #define MINRT_STATUS_OK 0

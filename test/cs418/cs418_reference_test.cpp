@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "general_render.hpp"
+#include "render_driver.hpp"
 #include "image_metrics.hpp"
 #include "png_io.hpp"
 #include "test_support.hpp"
@@ -26,13 +26,15 @@ std::string cs418_dir() { return minrt::test::shared_dir() + "/formats/cs418/"; 
 
 minrt::host::RgbaImage render(const std::string& name, minrt::host::Variant v, uint32_t seed = 1, int threads = 2) {
   const std::string path = cs418_dir() + "ray-" + name + ".txt";
-  minrt::host::GeneralOptions o;
+  minrt::host::DriverOptions o;
   o.variant = v;
   o.seed = seed;
   o.threads = threads;
-  minrt::host::GeneralResult r;
+  minrt::host::RenderedScene r;
   std::string error;
-  const bool ok = minrt::host::render_cs418(minrt::test::read_file(path), path, cs418_dir(), o, r, error, {});
+  const minrt::host::SceneInput in{path, path, cs418_dir(), minrt::test::read_file(path)};
+  const bool ok = minrt::host::render_in_memory(minrt::formats::format_of(minrt::formats::FormatId::kCs418), in, o,
+                                                r, error);
   INFO(error);
   REQUIRE(ok);
   return r.image;

@@ -7,21 +7,29 @@
 #include <cstdlib>
 #include <string>
 
-#include "general_render.hpp"
+#include "format_sides/general_scene.hpp"
+#include "render_driver.hpp"
 #include "render/general/render.hpp"
 #include "test_support.hpp"
 
 namespace {
 
-minrt::host::GeneralResult render_text(const std::string& text, bool full, minrt::host::Variant v = {}) {
-  minrt::host::GeneralOptions o;
+// A CS418 scene's text rendered in memory by minrt's driver.
+bool render_cs418(const std::string& text, const std::string& name, const std::string& dir,
+                  const minrt::host::DriverOptions& o, minrt::host::RenderedScene& r, std::string& error) {
+  const minrt::host::SceneInput in{name, name, dir, text};
+  return minrt::host::render_in_memory(minrt::formats::format_of(minrt::formats::FormatId::kCs418), in, o, r, error);
+}
+
+minrt::host::RenderedScene render_text(const std::string& text, bool full, minrt::host::Variant v = {}) {
+  minrt::host::DriverOptions o;
   o.variant = v;
   o.force_full = full;
   o.threads = 2;
-  minrt::host::GeneralResult r;
+  minrt::host::RenderedScene r;
   std::string error;
   const std::string dir = minrt::test::shared_dir() + "/formats/cs418/";
-  const bool ok = minrt::host::render_cs418(text, "scene.txt", dir, o, r, error, {});
+  const bool ok = render_cs418(text, "scene.txt", dir, o, r, error);
   INFO(error);
   REQUIRE(ok);
   return r;
@@ -68,14 +76,14 @@ TEST_CASE("general: the weight cut-off leaves the course's reflection and refrac
     DYNAMIC_SECTION(name) {
       const std::string text =
           minrt::test::read_file(minrt::test::shared_dir() + "/formats/cs418/ray-" + name + ".txt");
-      minrt::host::GeneralOptions o;
+      minrt::host::DriverOptions o;
       o.threads = 2;
-      minrt::host::GeneralResult cut, full;
+      minrt::host::RenderedScene cut, full;
       std::string error;
       const std::string dir = minrt::test::shared_dir() + "/formats/cs418/";
-      REQUIRE(minrt::host::render_cs418(text, name, dir, o, cut, error, {}));
+      REQUIRE(render_cs418(text, name, dir, o, cut, error));
       o.full_tree = true;
-      REQUIRE(minrt::host::render_cs418(text, name, dir, o, full, error, {}));
+      REQUIRE(render_cs418(text, name, dir, o, full, error));
       CHECK(cut.image.rgba == full.image.rgba);
     }
   }
@@ -89,12 +97,12 @@ TEST_CASE("general: a skipped branch changes no other random number", "[general]
       "png 48 32 x.png\nbounces 16\naa 4\nsun 1 1 1\ncolor 0.9 0.9 0.9\nshininess 0.1\ntransparency 0.9\n"
       "sphere -0.6 0 -3 0.5\nsphere 0.6 0 -3 0.5\ntransparency 0\nshininess 0.6\nroughness 0.1\n"
       "sphere 0 0.8 -3.5 0.5\nsphere 0 -0.8 -3.5 0.5\n";
-  minrt::host::GeneralOptions o;
-  minrt::host::GeneralResult cut, full;
+  minrt::host::DriverOptions o;
+  minrt::host::RenderedScene cut, full;
   std::string error;
-  REQUIRE(minrt::host::render_cs418(scene, "s.txt", "", o, cut, error, {}));
+  REQUIRE(render_cs418(scene, "s.txt", "", o, cut, error));
   o.full_tree = true;
-  REQUIRE(minrt::host::render_cs418(scene, "s.txt", "", o, full, error, {}));
+  REQUIRE(render_cs418(scene, "s.txt", "", o, full, error));
   int worst = 0;
   for (std::size_t i = 0; i < cut.image.rgba.size(); ++i)
     worst = std::max(worst, std::abs(int(cut.image.rgba[i]) - int(full.image.rgba[i])));

@@ -18,12 +18,37 @@
 #include <string>
 #include <vector>
 
-#include "eastray_cli.hpp"
+#include "format_sides/eastray_host.hpp"
+#include "render_driver.hpp"
 #include "test_support.hpp"
 
 namespace eprobe {
 
-using minrt::host::EastrayImage;
+// An EASTRAY scene rendered in memory by minrt's driver, as RGB.
+struct EastrayImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;      // 3 bytes a pixel, top row first
+  std::string output_statement;  // where the scene's `output` sends the image, if it names it
+};
+
+inline bool render_eastray(const std::string& path, const std::string& text, minrt::host::Variant v,
+                           EastrayImage& img, std::string& error) {
+  minrt::host::DriverOptions o;
+  o.variant = v;
+  o.quiet = true;
+  minrt::host::RenderedScene r;
+  const std::size_t slash = path.rfind('/');
+  const minrt::host::SceneInput in{path, path, slash == std::string::npos ? "" : path.substr(0, slash + 1), text};
+  if (!minrt::host::render_in_memory(minrt::formats::format_of(minrt::formats::FormatId::kEastray), in, o, r, error))
+    return false;
+  img.width = r.image.width;
+  img.height = r.image.height;
+  img.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
+  for (std::size_t i = 0, n = static_cast<std::size_t>(img.width) * img.height; i < n; ++i)
+    for (int c = 0; c < 3; ++c) img.rgb[3 * i + c] = r.image.rgba[4 * i + c];
+  img.output_statement = r.output_name;
+  return true;
+}
 
 struct Rgb {
   int r, g, b;
@@ -33,7 +58,7 @@ inline EastrayImage render(const std::string& text, const std::string& path = "p
                            minrt::host::Variant v = {}) {
   EastrayImage img;
   std::string error;
-  const bool ok = minrt::host::render_eastray(path, path, text, v, true, img, error);
+  const bool ok = render_eastray(path, text, v, img, error);
   INFO(error);
   REQUIRE(ok);
   return img;

@@ -16,14 +16,13 @@
 #include <string>
 #include <vector>
 
-#include "eastray_cli.hpp"
 #include "eastray_preprocess.hpp"
 #include "eastray_probe_support.hpp"
 #include "test_support.hpp"
 
 namespace {
 
-using minrt::host::EastrayImage;
+using eprobe::EastrayImage;
 
 struct Rgb {
   int r, g, b;
@@ -41,7 +40,7 @@ EastrayImage render_file(const std::string& path, minrt::host::Variant v = {}) {
   std::string error;
   const std::string text = minrt::test::read_file(path);
   INFO(path);
-  const bool ok = minrt::host::render_eastray(path, path, text, v, true, img, error);
+  const bool ok = eprobe::render_eastray(path, text, v, img, error);
   INFO(error);
   REQUIRE(ok);
   return img;
@@ -50,7 +49,7 @@ EastrayImage render_file(const std::string& path, minrt::host::Variant v = {}) {
 EastrayImage render_text(const std::string& text, minrt::host::Variant v = {}) {
   EastrayImage img;
   std::string error;
-  const bool ok = minrt::host::render_eastray("scene.ray", "scene.ray", text, v, true, img, error);
+  const bool ok = eprobe::render_eastray("scene.ray", text, v, img, error);
   INFO(error);
   REQUIRE(ok);
   return img;

@@ -1,9 +1,11 @@
 // miniRT and EASTRAY scenes over the course and framed protocols
-// (protocol/text_scene_upload.hpp, tags MINRT_SCENE_FORMAT_MINIRT and
+// (protocol/text_scene_upload.hpp, tags minrt::formats::format_of(minrt::formats::FormatId::kMinirt).wire_tag and
 // _EASTRAY): end to end against firmware-sim running the firmware, the PNG
 // byte for byte the raw protocol's and its pixels the host float model's;
 // broken files get their located error, a non-zero status and no file.
 #include <catch2/catch.hpp>
+
+#include "formats/registry.hpp"
 
 #include <string>
 #include <vector>
@@ -40,12 +42,12 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
 TEST_CASE("text-scene upload: miniRT and EASTRAY tags are accepted, in both byte orders of the course words",
           "[course][framed]") {
   using namespace minrt::send;
-  CHECK(text::is_text_format(MINRT_SCENE_FORMAT_MINIRT));
-  CHECK(text::is_text_format(MINRT_SCENE_FORMAT_EASTRAY));
+  CHECK(text::is_text_format(minrt::formats::format_of(minrt::formats::FormatId::kMinirt).wire_tag));
+  CHECK(text::is_text_format(minrt::formats::format_of(minrt::formats::FormatId::kEastray).wire_tag));
   CHECK_FALSE(text::is_text_format(MINRT_SCENE_FORMAT_SLD));
-  CHECK_FALSE(text::is_text_format(MINRT_SCENE_FORMAT_EASTRAY + 1));
+  CHECK_FALSE(text::is_text_format(MINRT_SCENE_FORMAT_TAG_LIMIT));
   for (const bool big : {false, true}) {
-    const std::string words = text_scene_course_words(MINRT_SCENE_FORMAT_EASTRAY, "/* EASTRAY */", big);
+    const std::string words = text_scene_course_words(minrt::formats::format_of(minrt::formats::FormatId::kEastray).wire_tag, "/* EASTRAY */", big);
     std::vector<unsigned char> mem(256);
     minrt::Arena arena(mem.data(), mem.size());
     minrt::MemorySource src{reinterpret_cast<const uint8_t*>(words.data()) + 4, words.size() - 4};
@@ -54,7 +56,7 @@ TEST_CASE("text-scene upload: miniRT and EASTRAY tags are accepted, in both byte
     minrt::Diagnostic d;
     REQUIRE(text::read_course(src.source(), big ? course::Endian::kBig : course::Endian::kLittle, arena, scene,
                               too_large, d));
-    CHECK(scene.format == MINRT_SCENE_FORMAT_EASTRAY);
+    CHECK(scene.format == minrt::formats::format_of(minrt::formats::FormatId::kEastray).wire_tag);
     CHECK(std::string(reinterpret_cast<const char*>(scene.bytes), scene.size) == "/* EASTRAY */");
   }
 }
@@ -165,8 +167,8 @@ TEST_CASE("the board's own EASTRAY and miniRT errors over course and framed: one
   };
   // The bad field of the miniRT camera line starts at column 9.
   const std::vector<Case> cases = {
-      {MINRT_SCENE_FORMAT_EASTRAY, "/* EASTRAY */\ndisplay 8 8 0 0 7 7 1 1 1 ;\nbogus 1 ;\n", "3:1: unknown statement 'bogus'"},
-      {MINRT_SCENE_FORMAT_MINIRT, "A 0.2 255,255,255\nC 0,0,0 0,0,0 70\n", "2:9: camera orientation \"0,0,0\" is the zero vector: it has no direction"}};
+      {minrt::formats::format_of(minrt::formats::FormatId::kEastray).wire_tag, "/* EASTRAY */\ndisplay 8 8 0 0 7 7 1 1 1 ;\nbogus 1 ;\n", "3:1: unknown statement 'bogus'"},
+      {minrt::formats::format_of(minrt::formats::FormatId::kMinirt).wire_tag, "A 0.2 255,255,255\nC 0,0,0 0,0,0 70\n", "2:9: camera orientation \"0,0,0\" is the zero vector: it has no direction"}};
   for (const Case& c : cases) {
     for (const bool framed : {false, true}) {
       SimLauncher board;
@@ -181,7 +183,7 @@ TEST_CASE("the board's own EASTRAY and miniRT errors over course and framed: one
       Exchange ex{port, {20000, 20000}, nullptr};
       TransferResult r;
       if (framed) {
-        r = run_framed_text(ex, c.tag, c.text, 8, 8);
+        r = run_framed_text(ex, c.tag, FramedImage::kPng, c.text, 8, 8);
       } else {
         PngReceiver rx(8, 8);
         r = run_course_words(ex, text_scene_course_words(c.tag, c.text, false), "", CourseHostOptions{}, rx);

@@ -5,6 +5,8 @@
 // every broken file over every protocol.
 #include <catch2/catch.hpp>
 
+#include "formats/registry.hpp"
+
 #include <dirent.h>
 
 #include <algorithm>
@@ -61,15 +63,15 @@ void host_model(const std::string& scene, const std::string& out) {
 TEST_CASE("text-scene header: its marker is a NaN in either byte order and it frames the bytes", "[course][framed]") {
   for (auto e : {course::Endian::kLittle, course::Endian::kBig}) {
     uint8_t h[text::kHeaderBytes];
-    text::put_header(h, MINRT_SCENE_FORMAT_JAWORSKI, 1234, e);
+    text::put_header(h, minrt::formats::format_of(minrt::formats::FormatId::kJaworski).wire_tag, 1234, e);
     CHECK(text::is_marker(h, e));
     const float f = minrt::bit_cast<float>(course::get_u32(h, e));
     CHECK(f != f);  // the SLD reader refuses it as a first value
-    CHECK(course::get_u32(h + 4, e) == MINRT_SCENE_FORMAT_JAWORSKI);
+    CHECK(course::get_u32(h + 4, e) == minrt::formats::format_of(minrt::formats::FormatId::kJaworski).wire_tag);
     CHECK(course::get_u32(h + 8, e) == 1234u);
   }
   // Course words: padded to whole words, the bytes unchanged in between.
-  const std::string words = text_scene_course_words(MINRT_SCENE_FORMAT_CS418, "png 1 1 a.png\n", true);
+  const std::string words = text_scene_course_words(minrt::formats::format_of(minrt::formats::FormatId::kCs418).wire_tag, "png 1 1 a.png\n", true);
   CHECK(words.size() == 12 + 16);
   CHECK(words.substr(12, 14) == "png 1 1 a.png\n");
   CHECK(words.substr(26) == std::string(2, '\0'));
@@ -82,11 +84,11 @@ TEST_CASE("text-scene header: its marker is a NaN in either byte order and it fr
   const std::string sld = "0 0 -100 0 0\n";
   CHECK_FALSE(text::view_framed(reinterpret_cast<const uint8_t*>(sld.data()), sld.size(), scene, ok, d));
   std::string up(text::kHeaderBytes, '\0');
-  text::put_header(reinterpret_cast<uint8_t*>(up.data()), MINRT_SCENE_FORMAT_CS418, 5, course::Endian::kLittle);
+  text::put_header(reinterpret_cast<uint8_t*>(up.data()), minrt::formats::format_of(minrt::formats::FormatId::kCs418).wire_tag, 5, course::Endian::kLittle);
   up += "hello";
   REQUIRE(text::view_framed(reinterpret_cast<const uint8_t*>(up.data()), up.size(), scene, ok, d));
   CHECK(ok);
-  CHECK(scene.format == MINRT_SCENE_FORMAT_CS418);
+  CHECK(scene.format == minrt::formats::format_of(minrt::formats::FormatId::kCs418).wire_tag);
   CHECK(std::string(reinterpret_cast<const char*>(scene.bytes), scene.size) == "hello");
   REQUIRE(text::view_framed(reinterpret_cast<const uint8_t*>(up.data()), up.size() - 1, scene, ok, d));
   CHECK_FALSE(ok);
@@ -100,7 +102,7 @@ TEST_CASE("text-scene header: its marker is a NaN in either byte order and it fr
 
 TEST_CASE("course text scene on the board side: bytes into the arena's top, the padding read, a cut reported",
           "[course]") {
-  const std::string words = text_scene_course_words(MINRT_SCENE_FORMAT_JAWORSKI, "abcde", false);
+  const std::string words = text_scene_course_words(minrt::formats::format_of(minrt::formats::FormatId::kJaworski).wire_tag, "abcde", false);
   std::vector<unsigned char> mem(4096);
   for (size_t cut : {words.size(), words.size() - 1}) {
     minrt::Arena arena(mem.data(), mem.size());

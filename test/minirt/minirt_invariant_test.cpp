@@ -10,19 +10,23 @@
 #include <set>
 #include <string>
 
-#include "minirt_render.hpp"
+#include "render_driver.hpp"
 
 namespace {
 
 using minrt::host::RgbaImage;
 
 RgbaImage render(const std::string& text, int w, int h, minrt::host::Variant variant = {}) {
-  minrt::host::GeneralOptions options;
+  minrt::host::DriverOptions options;
   options.variant = variant;
   options.threads = 2;
-  minrt::host::GeneralResult result;
+  options.width = w;
+  options.height = h;
+  minrt::host::RenderedScene result;
   std::string error;
-  const bool ok = minrt::host::render_minirt(text, "test.rt", "", w, h, options, result, error);
+  const minrt::host::SceneInput in{"test.rt", "test.rt", "", text};
+  const bool ok = minrt::host::render_in_memory(minrt::formats::format_of(minrt::formats::FormatId::kMinirt), in,
+                                                options, result, error);
   INFO(error);
   REQUIRE(ok);
   return result.image;

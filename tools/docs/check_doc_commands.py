@@ -22,7 +22,8 @@ A line ending in a backslash goes on with the next. For every command:
   comment states ("# exit status 1: ...").
 
 The commands run in a scratch copy of the root (the files they write stay out
-of the checkout): symbolic links to REPO's entries, a copy of docs/,
+of the checkout): symbolic links to REPO's tracked entries (not files earlier
+commands left in the root), a copy of docs/,
 build/release pointing to BUILD, and ../shared pointing to SHARED.
 """
 import argparse
@@ -205,12 +206,24 @@ def check_paths(cmd, words, root, problems):
         out_next = False
 
 
+def tracked_entries(root):
+    """The root's entries that git tracks: files a user's earlier commands left
+    there (the README's contest.ppm) stay out of the scratch copy. Every entry
+    when the root is not a git checkout."""
+    try:
+        out = subprocess.run(["git", "-C", root, "ls-files", "-z"], capture_output=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return set(os.listdir(root))
+    return {p.split("/", 1)[0] for p in out.decode().split("\0") if p}
+
+
 def make_scratch(root, build, shared):
     scratch = tempfile.mkdtemp(prefix="doc-commands-")
     top = os.path.join(scratch, "root")
     os.makedirs(os.path.join(top, "build"))
+    tracked = tracked_entries(root)
     for name in os.listdir(root):
-        if name in ("build", ".git"):
+        if name in ("build", ".git") or name not in tracked:
             continue
         if name == "docs":  # a copy: commands that redraw a picture of docs/ leave the checkout alone
             shutil.copytree(os.path.join(root, name), os.path.join(top, name), symlinks=True)

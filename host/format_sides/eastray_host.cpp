@@ -1,0 +1,168 @@
+// EASTRAY on the host: the .ray text preprocessed (#include, #define), read,
+// turned into the general model with EASTRAY's finish, and rendered by the
+// general tracer. Messages name the file and line the text came from.
+#include "eastray_host.hpp"
+
+#include <cstdio>
+
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "eastray_preprocess.hpp"
+#include "formats/eastray/eastray_model.hpp"
+#include "formats/eastray/eastray_reader.hpp"
+#include "general_scene.hpp"
+#include "math_policy_dispatch.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+bool ends_with_nocase(const std::string& s, const char* tail) {
+  const std::string t(tail);
+  if (s.size() < t.size()) return false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    char c = s[s.size() - t.size() + i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != t[i]) return false;
+  }
+  return true;
+}
+
+std::string replace_extension(const std::string& path, const char* ext) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ext;
+  return path.substr(0, dot) + ext;
+}
+
+struct WarningContext {
+  const ExpandedEastray* expanded;
+};
+
+void print_warning(void* ctx, const Diagnostic& d) {
+  const auto* w = static_cast<const WarningContext*>(ctx);
+  std::fprintf(stderr, "%s: %s\n", w->expanded->at(d.pos.line, d.pos.col).c_str(), d.message);
+}
+
+// The general scene with what EASTRAY's model points into.
+template <class M>
+struct EastrayScene final : GeneralScene<M> {
+  using R = typename M::real;
+  ExpandedEastray expanded;
+  eastray::Scene<R> source;
+  model::EastrayShading<R> shading;
+};
+
+template <class M>
+std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOptions& options, std::string& error) {
+  using R = typename M::real;
+  using Scene = eastray::Scene<R>;
+  const auto t_parse = std::chrono::steady_clock::now();
+  auto scene = std::make_unique<EastrayScene<M>>();
+  if (!preprocess_eastray(in.path, in.shown, in.text, scene->expanded, error)) return nullptr;
+  const ExpandedEastray& x = scene->expanded;
+  WarningContext wc{&x};
+  typename Scene::Capacities caps = Scene::Capacities::for_text(content_bytes(x.text));
+  for (int growth = 0;; ++growth) {
+    // The reader's scratch (part table, a mesh's vertex index) and the
+    // hierarchies over the triangles and the objects come after the arrays.
+    const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
+                              general::bvh_footprint<R>(static_cast<uint32_t>(caps.triangles)) +
+                              general::object_bvh_bytes<R>(static_cast<uint32_t>(caps.nodes)) + 4096;
+    if (!scene->storage.allocate(bytes, in.shown, error)) return nullptr;
+    Arena arena(scene->storage.bytes.get(), scene->storage.size);
+    scene->source = Scene{};
+    if (!scene->source.allocate(arena, caps)) {
+      error = in.shown + ": error: scene does not fit in memory";
+      return nullptr;
+    }
+    const WarningSink warnings =
+        options.quiet || growth > 0 ? WarningSink{} : WarningSink{&print_warning, &wc};
+    auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene->source, arena, warnings);
+    Diagnostic d;
+    if (!reader->read(d)) {
+      if (d.out_of_memory && growth < kMaxArenaGrowths) {
+        caps = {caps.lights * 2, caps.materials * 2, caps.primitives * 2, caps.nodes * 2, caps.triangles * 2,
+                caps.vertices * 2};
+        continue;
+      }
+      error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
+      return nullptr;
+    }
+    bool tiff = false;
+    std::string warning;
+    scene->output_name = eastray_output_name("", scene->source.output, in.path, tiff, warning);
+    if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
+    eastray::to_model(scene->source, scene->shading, scene->model);
+    if (!scene->set_up(arena, options, t_parse)) {
+      error = in.shown + ": error: scene does not fit in memory";
+      return nullptr;
+    }
+    return scene;
+  }
+}
+
+}  // namespace
+
+std::string eastray_output_name(const std::string& option, const std::string& statement,
+                                const std::string& scene_path, bool& tiff, std::string& warning) {
+  std::string name = !option.empty() ? option : !statement.empty() ? statement
+                                              : scene_path == "-" ? std::string("-")
+                                                                  : replace_extension(scene_path, ".png");
+  for (char& c : name)
+    if (c == '\\') c = '/';
+  tiff = ends_with_nocase(name, ".tif") || ends_with_nocase(name, ".tiff");
+  if (option.empty() && (ends_with_nocase(name, ".fal") || ends_with_nocase(name, ".ipr") || ends_with_nocase(name, ".hpi"))) {
+    const std::string png = replace_extension(name, ".png");
+    warning = "output format of '" + name + "' is not supported; writing PNG to '" + png + "'";
+    name = png;
+  }
+  return name;
+}
+
+bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
+                        int& height, std::string& output_statement, std::string& error) {
+  ExpandedEastray x;
+  if (!preprocess_eastray(path, path, text, x, error)) return false;
+  using M = PortableFloat;
+  using R = M::real;
+  using Scene = eastray::Scene<R>;
+  typename Scene::Capacities caps = Scene::Capacities::for_text(content_bytes(x.text));
+  for (int growth = 0;; ++growth) {
+    const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
+                              4 * Arena::footprint<int32_t>(static_cast<std::size_t>(caps.vertices)) + 4096;
+    ArenaStorage storage;
+    if (!storage.allocate(bytes, path, error)) return false;
+    Arena arena(storage.bytes.get(), storage.size);
+    Scene scene;
+    if (!scene.allocate(arena, caps)) {
+      error = path + ": error: scene does not fit in memory";
+      return false;
+    }
+    auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene, arena);
+    Diagnostic d;
+    if (!reader->read(d)) {
+      if (d.out_of_memory && growth < kMaxArenaGrowths) {
+        caps = {caps.lights * 2, caps.materials * 2, caps.primitives * 2, caps.nodes * 2, caps.triangles * 2,
+                caps.vertices * 2};
+        continue;
+      }
+      error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
+      return false;
+    }
+    width = scene.width;
+    height = scene.height;
+    output_statement = scene.output;
+    board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
+    return true;
+  }
+}
+
+std::unique_ptr<PreparedScene> prepare_eastray(const SceneInput& in, const DriverOptions& options, const WarningSink&,
+                                               std::string& error) {
+  std::unique_ptr<PreparedScene> scene;
+  with_math_policy(options.variant, [&]<class M>() { scene = prepare_with<M>(in, options, error); });
+  return scene;
+}
+
+}  // namespace minrt::host

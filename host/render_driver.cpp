@@ -1,0 +1,160 @@
+#include "render_driver.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include "file_input.hpp"
+#include "format_sides/host_formats.hpp"
+#include "image_file_output.hpp"
+#include "image_window.hpp"
+#include "row_pool.hpp"
+
+namespace minrt::host {
+
+namespace {
+
+struct WarningContext {
+  const char* file;
+};
+
+void print_warning(void* ctx, const Diagnostic& d) {
+  const auto* w = static_cast<const WarningContext*>(ctx);
+  std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w->file, d.pos.line, d.pos.col, d.message);
+}
+
+int scene_status(formats::ErrorStyle style) {
+  return style == formats::ErrorStyle::kMinirtError ? kExitMinirtError : kExitSceneError;
+}
+int io_status(formats::ErrorStyle style) {
+  return style == formats::ErrorStyle::kMinirtError ? kExitMinirtError : kExitIoError;
+}
+
+bool display_available() {
+  auto set = [](const char* name) {
+    const char* v = std::getenv(name);
+    return v != nullptr && *v != 0;
+  };
+  return set("DISPLAY") || set("WAYLAND_DISPLAY") || set("SDL_VIDEODRIVER");
+}
+
+}  // namespace
+
+void print_error(formats::ErrorStyle style, const std::string& line) {
+  if (style == formats::ErrorStyle::kMinirtError) std::fprintf(stderr, "Error\n");
+  std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+bool render_in_memory(const formats::Format& format, const SceneInput& in, const DriverOptions& options,
+                      RenderedScene& out, std::string& error, const WarningSink& warnings) {
+  const HostFormat& host = host_format(format.id);
+  if (host.prepare == nullptr) {
+    error = std::string(format.name) + " scenes are streamed, not rendered in memory";
+    return false;
+  }
+  std::unique_ptr<PreparedScene> scene = host.prepare(in, options, warnings, error);
+  if (!scene) {
+    if (error.empty()) error = "this combination of --precision and --shims is not built";
+    return false;
+  }
+  out.threads = render_rows(*scene, options.threads, out.image, nullptr);
+  out.output_name = scene->output_name;
+  out.path = scene->path;
+  out.features = scene->features;
+  return true;
+}
+
+int run_driver(const DriverOptions& options) {
+  SceneInput in;
+  in.path = options.scene_path;
+  const bool from_stdin = in.path == "-";
+  in.shown = from_stdin ? "<stdin>" : in.path;
+  if (!from_stdin) {
+    const std::size_t slash = in.path.rfind('/');
+    if (slash != std::string::npos) in.base_dir = in.path.substr(0, slash + 1);
+  }
+  // The name alone decides the error style of a file that cannot be read.
+  const formats::Format& by_name =
+      options.format != nullptr ? *options.format : formats::detect_format(from_stdin ? nullptr : in.path.c_str(), {});
+  std::string why;
+  const bool read_ok = from_stdin ? read_whole_fd(STDIN_FILENO, in.text, why, kMaxSceneBytes)
+                                  : read_whole_file(in.path, in.text, why, kMaxSceneBytes);
+  if (!read_ok) {
+    print_error(by_name.errors, (by_name.errors == formats::ErrorStyle::kMinirtError ? in.shown + ": cannot read the scene: "
+                                                                                      : "minrt: error: cannot read " + in.shown + ": ") +
+                                    why);
+    return scene_status(by_name.errors);
+  }
+  const auto* bytes = reinterpret_cast<const uint8_t*>(in.text.data());
+  const std::size_t bom = formats::bom_bytes(bytes, in.text.size());
+  const formats::TextStart start = formats::text_start(bytes, in.text.size());
+  in.text.erase(0, bom);
+  const formats::Format& format =
+      options.format != nullptr ? *options.format : formats::detect_format(from_stdin ? nullptr : in.path.c_str(), start);
+  const HostFormat& host = host_format(format.id);
+  if (host.stream != nullptr) return host.stream(in, options);
+
+  const formats::ErrorStyle style = format.errors;
+  WarningContext wctx{in.shown.c_str()};
+  WarningSink warnings;
+  if (!options.quiet) warnings = WarningSink{&print_warning, &wctx};
+  std::string error;
+  std::unique_ptr<PreparedScene> scene = host.prepare(in, options, warnings, error);
+  if (!scene) {
+    print_error(style, error.empty() ? "minrt: error: this combination of --precision and --shims is not built" : error);
+    return scene_status(style);
+  }
+
+  // Where the image goes, checked before the render: -o, else the scene's
+  // name for it; a format that names none (miniRT) shows a window.
+  std::string out_path;
+  if (options.save) out_path = !options.output_path.empty() ? options.output_path : scene->output_name;
+  const bool window_only = options.save && out_path.empty();
+  if (!out_path.empty() && !check_output_target(out_path, options.write_through, why)) {
+    print_error(style, "minrt: error: " + why);
+    return io_status(style);
+  }
+  if (window_only && !display_available()) {
+    print_error(style, "minrt: no display to show the image on (DISPLAY is not set); give -o FILE.png to write the "
+                       "image instead");
+    return io_status(style);
+  }
+  LiveWindow window;
+  if ((options.show || window_only) && !window.open("minrt: " + in.shown, why)) {
+    if (window_only) {
+      print_error(style, "minrt: cannot open a window: " + why + " (give -o FILE.png to write the image instead)");
+      return io_status(style);
+    }
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  }
+
+  RgbaImage image;
+  const auto t0 = std::chrono::steady_clock::now();
+  const int threads = render_rows(*scene, options.threads, image, &window);
+  const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (options.stats)
+    std::fprintf(stderr,
+                 "minrt: %s: %s %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d "
+                 "thread%s\n",
+                 in.shown.c_str(), format.name, scene->width, scene->height, scene->path, scene->features,
+                 scene->parse_seconds, scene->build_seconds, render_seconds, threads, threads == 1 ? "" : "s");
+
+  if (!out_path.empty()) {
+    AtomicOutput output(options.durability);
+    if (!output.open(out_path, options.write_through, why)) {
+      print_error(style, "minrt: error: " + why);
+      return io_status(style);
+    }
+    if (!write_image(output.file(), image_file_for(out_path, format.reply), image, why) || !output.commit(why)) {
+      output.discard();
+      print_error(style, "minrt: error: cannot write " + out_path + ": " + (why.empty() ? "write error" : why));
+      return io_status(style);
+    }
+  }
+  if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
+  return kExitOk;
+}
+
+}  // namespace minrt::host

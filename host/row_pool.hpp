@@ -1,0 +1,23 @@
+// The one pool that renders a prepared scene's rows on several threads (0:
+// every core), for every format but SLD, whose band renderer has its own
+// (render_variants.cpp). Each thread takes the next row; the image is the
+// same for any thread count because rows do not depend on each other.
+#pragma once
+
+#include <atomic>
+
+#include "png_io.hpp"
+#include "prepared_scene.hpp"
+
+namespace minrt::host {
+
+class LiveWindow;
+
+// Renders every row of `scene` into `image` (resized), handing each to
+// `window` as it is done when the window is open. Returns the thread count
+// used. `stop`, when set by another thread, ends the work early (the
+// image is then incomplete).
+int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
+                const std::atomic<bool>* stop = nullptr);
+
+}  // namespace minrt::host

@@ -1,0 +1,100 @@
+#include "scene_upload.hpp"
+
+#include <minrt/limits.hpp>
+
+#include "format_sides/cs418_host.hpp"
+#include "format_sides/eastray_host.hpp"
+#include "format_sides/jaworski_host.hpp"
+#include "format_sides/minirt_host.hpp"
+#include "render_driver.hpp"
+#include "texture_preamble.hpp"
+
+namespace minrt::send {
+
+namespace {
+
+using formats::FormatId;
+
+// SLD travels as it is; the board answers with the PPM at its --size.
+bool prepare_sld(const UploadRequest&, std::string scene, Upload& out, std::string&) {
+  out.bytes = std::move(scene);
+  return true;
+}
+
+// CS418: the textures it names, decoded here (the board has no PNG
+// decoder), go first; the reply's size and default name are the png line's.
+bool prepare_cs418(const UploadRequest& r, std::string scene, Upload& out, std::string& error) {
+  std::string name;
+  if (!host::cs418_png_line(scene, out.width, out.height, name)) {
+    // The reply's size comes from that line, so the board cannot be asked.
+    // minrt's reader, given the line alone, says what is wrong and where.
+    const std::string first = scene.substr(0, scene.find('\n'));
+    host::RenderedScene unused;
+    const host::SceneInput in{r.path, r.path, "", first + "\n"};
+    if (host::render_in_memory(formats::format_of(FormatId::kCs418), in, host::DriverOptions{}, unused, error))
+      error = r.path + ":1:1: error: the first line must be 'png WIDTH HEIGHT FILE.png' (1.." +
+              std::to_string(limits::kMaxImageWidth) + " each)";
+    return false;
+  }
+  out.output = name;
+  std::string preamble;
+  if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  out.bytes = preamble + scene;
+  return true;
+}
+
+// Jaworski: the text as it is; the BMP's size is the scene's.
+bool prepare_jaworski(const UploadRequest& r, std::string scene, Upload& out, std::string&) {
+  out.output = host::jaworski_output_name(r.path);
+  out.bytes = std::move(scene);
+  return true;
+}
+
+// miniRT: the subject's file name, the PPM textures decoded here, the PNG at --size.
+bool prepare_minirt(const UploadRequest& r, std::string scene, Upload& out, std::string& error) {
+  if (!host::has_rt_extension(r.path)) {
+    error = r.path + ": a miniRT scene file's name must end in .rt";
+    return false;
+  }
+  const formats::Format& f = formats::format_of(FormatId::kMinirt);
+  out.width = r.width > 0 ? r.width : f.default_width;
+  out.height = r.height > 0 ? r.height : f.default_height;
+  std::string preamble;
+  if (!build_minirt_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  out.bytes = preamble + scene;
+  return true;
+}
+
+// EASTRAY: preprocessed and checked here, sent expanded; the board sends PNG.
+bool prepare_eastray(const UploadRequest& r, std::string scene, Upload& out, std::string& error) {
+  std::string statement;
+  if (!host::eastray_board_text(r.path, scene, out.bytes, out.width, out.height, statement, error)) return false;
+  bool tiff = false;
+  const std::string name = host::eastray_output_name("", statement, r.path, tiff, out.warning);
+  out.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;
+  if (tiff) out.warning = "the board sends PNG; writing " + out.output;
+  else if (!out.warning.empty()) out.warning = "the board sends PNG; writing " + out.output;
+  return true;
+}
+
+constexpr UploadFormat kUploads[] = {
+    {FormatId::kSld, &prepare_sld},
+    {FormatId::kCs418, &prepare_cs418},
+    {FormatId::kJaworski, &prepare_jaworski},
+    {FormatId::kMinirt, &prepare_minirt},
+    {FormatId::kEastray, &prepare_eastray},
+};
+
+constexpr bool rows_follow_registry() {
+  if (sizeof kUploads / sizeof kUploads[0] != formats::kFormatCount) return false;
+  for (std::size_t i = 0; i < formats::kFormatCount; ++i)
+    if (kUploads[i].id != formats::kFormats[i].id) return false;
+  return true;
+}
+static_assert(rows_follow_registry(), "kUploads has one row per registered format, in the registry's order");
+
+}  // namespace
+
+const UploadFormat& upload_format(formats::FormatId id) { return kUploads[static_cast<std::size_t>(id)]; }
+
+}  // namespace minrt::send

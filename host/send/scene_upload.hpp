@@ -1,0 +1,38 @@
+// What host-send sends the board for each format in the registry
+// (formats/registry.hpp), and what it expects back: one row per format in
+// kUploads, in the registry's order (a format without its row does not
+// compile). The protocols and the receivers are chosen from the registry's
+// reply image alone.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "formats/registry.hpp"
+
+namespace minrt::send {
+
+struct UploadRequest {
+  std::string path;             // the scene file as given
+  std::string base_dir;         // its folder, with the slash, or ""
+  std::uint64_t texture_bytes;  // board RAM the textures may take
+  int width = 0, height = 0;    // --size (0: not given)
+};
+
+struct Upload {
+  std::string bytes;            // what raw sends before its 0x04 (course and framed: the same behind a header)
+  int width = 0, height = 0;    // the reply's size (0: the board's --size; BMP: the scene's)
+  std::string output;           // where the image goes without -o ("": the scene's stem with the reply's extension)
+  std::string warning;          // printed before the transfer
+};
+
+struct UploadFormat {
+  formats::FormatId id;
+  // Checks `scene` here (so a bad one gets its located message before
+  // anything is sent) and prepares the upload; false with the message.
+  bool (*prepare)(const UploadRequest& request, std::string scene, Upload& out, std::string& error);
+};
+
+const UploadFormat& upload_format(formats::FormatId id);
+
+}  // namespace minrt::send
