@@ -6,12 +6,15 @@ include(GNUInstallDirs)
 
 # tool -> one-line description for the man page's NAME section.
 set(MINRT_USER_TOOLS minrt host-send firmware-sim image-compare)
-set(_desc_minrt "render min-rt SLD, CS418, Jaworski and miniRT scenes on the host")
+set(_desc_minrt "render min-rt SLD, CS418, Jaworski, miniRT and EASTRAY scenes on the host")
 set(_desc_host-send "send a scene to the min-rt firmware over a serial line and receive the image")
 set(_desc_firmware-sim "RV32IMF instruction-set simulator for the min-rt firmware")
 set(_desc_image-compare "compare two images (PNG, PPM, BMP) with the SPEC.md measures")
 
 install(TARGETS ${MINRT_USER_TOOLS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# miniRT: minrt under the 42 subject's name (host/CMakeLists.txt).
+install(CODE "execute_process(COMMAND \${CMAKE_COMMAND} -E create_symlink minrt
+              \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}/miniRT\")")
 
 # The firmware images the runtime/ build made (empty names: not built).
 set(_fw_files "")

@@ -9,7 +9,7 @@
 // extension when it names one format, else the first word of the text (a
 // UTF-8 byte-order mark and blanks skipped, letters compared without case),
 // else, for an extension two formats share, the first of them, else SLD,
-// the original program's stdin format.
+// the original program's stdin format (detect_format).
 #pragma once
 
 #include <stddef.h>
@@ -208,9 +208,11 @@ inline constexpr bool has_extension(const char* path, const char* ext) {
   return path[n - e - 1] != '/';
 }
 
-// The host's rule: the extension when one format has it; among the formats
-// that share it (.txt), the one the text's start names, else the first of
-// them; without a known extension, the text's start (format_of_text).
+// The host's rule: the extension when one format has it; otherwise the
+// format the text's start names (a `.txt` file that starts like a miniRT
+// scene is one, whose reader then says the name must end in .rt); a text no
+// format claims is the first format with the extension (an empty `.txt` is
+// CS418's), or SLD without a known extension.
 inline constexpr const Format& detect_format(const char* path, const TextStart& s) {
   const Format* first_with_ext = nullptr;
   int with_ext = 0;
@@ -225,8 +227,7 @@ inline constexpr const Format& detect_format(const char* path, const TextStart& 
   const Format& by_text = format_of_text(s);
   if (with_ext == 0) return by_text;
   for (const Format& f : kFormats)
-    for (const char* const* e = f.extensions; *e != nullptr; ++e)
-      if (&f == &by_text && has_extension(path, *e)) return f;
+    if (claims(f, s)) return by_text;
   return *first_with_ext;
 }
 

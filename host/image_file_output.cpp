@@ -24,6 +24,17 @@ ImageFile image_file_for(const std::string& name, formats::ImageKind format_defa
   return ImageFile::kPng;
 }
 
+bool has_foreign_extension(const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  const std::size_t slash = name.rfind('/');
+  if (dot == std::string::npos || dot + 1 == name.size() || (slash != std::string::npos && dot < slash) ||
+      dot == (slash == std::string::npos ? 0 : slash + 1))
+    return false;  // no extension (a leading dot names a hidden file)
+  for (const char* ext : {".png", ".ppm", ".bmp", ".tif", ".tiff"})
+    if (formats::has_extension(name.c_str(), ext)) return false;
+  return true;
+}
+
 bool write_ppm(std::FILE* f, const RgbaImage& image) {
   if (std::fprintf(f, "P6\n%d %d\n255\n", image.width, image.height) < 0) return false;
   std::vector<uint8_t> row(static_cast<std::size_t>(image.width) * 3);

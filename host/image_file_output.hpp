@@ -18,6 +18,11 @@ enum class ImageFile { kPng, kPpm, kBmp, kTiff };
 // format writes.
 ImageFile image_file_for(const std::string& name, formats::ImageKind format_default);
 
+// Whether `name` has an extension that is not one of the kinds above
+// ("out.jpg"): -o refuses it rather than write a PNG under that name.
+bool has_foreign_extension(const std::string& name);
+inline constexpr const char* kImageExtensions = ".png, .ppm, .bmp, .tif or .tiff";
+
 // P6, maxval 255, the RGB of each pixel. False when a write fails (errno
 // says why).
 bool write_ppm(std::FILE* f, const RgbaImage& image);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/base/text_numbers.hpp"
+#include "format_sides/minirt_host.hpp"
 #include "posix/command_line.hpp"
 #include "render_driver.hpp"
 
@@ -20,35 +21,39 @@ using minrt::formats::ErrorStyle;
 const std::vector<Option>& options_table() {
   static const std::vector<Option> table = {
       {"scene-format", 0, "NAME",
-       "the scene's format: sld, cs418, jaworski, minirt or eastray (default:\n"
-       "from the extension, then the first word: 'png' means CS418, a header\n"
-       "field such as imWidth Jaworski, an element such as 'sp' miniRT)"},
-      {"size", 0, "WxH", "image size (SLD default 512x512, miniRT 800x600; the other\nformats take it from the scene)"},
+       "the scene's format: sld, cs418, jaworski, minirt or\n"
+       "eastray (default: from the extension, then the first\n"
+       "word: 'png' means CS418, a header field such as\n"
+       "imWidth Jaworski, an element such as 'sp' miniRT)"},
+      {"size", 0, "WxH", "image size (SLD default 512x512, miniRT 800x600; the\nother formats take it from the scene)"},
       {"format", 0, "p3|p6", "SLD: PPM flavour (default p3, the original's text form)"},
       {"precision", 0, "double|float", "floating-point type (default double)"},
       {"shims", 0, "NAME",
-       "math routines: libm (default), portable, portable-fast or portable-min:\n"
-       "the add/sub/mul/div-only shims of the firmware (float only); -fast is\n"
-       "cheaper, -min just meets the course's error rules"},
+       "math routines: libm (default), portable,\n"
+       "portable-fast or portable-min: the add/sub/mul/div-only\n"
+       "shims of the firmware (float only); -fast is cheaper,\n"
+       "-min just meets the course's error rules"},
       {"output", 'o', "FILE",
-       "write the image to FILE (complete or not at all; a FIFO, device or\n"
-       "symbolic link is refused; - is stdout). Its extension picks the kind:\n"
-       ".png, .ppm, .bmp, .tif; else the format's own"},
+       "write the image to FILE (complete or not at all; a\n"
+       "FIFO, device or symbolic link is refused; - is stdout);\n"
+       "its extension picks the kind: .png, .ppm, .bmp, .tif,\n"
+       "else the format's own"},
       {"write-through", 0, nullptr, "write into a FIFO, device or link given to -o"},
-      {"sync", 0, nullptr, "make the -o file durable (fsync) before exiting; without it the\nfile is still replaced whole or not at all"},
+      {"sync", 0, nullptr, "make the -o file durable (fsync) before exiting;\nwithout it the file is still replaced whole or not at all"},
       {"quiet", 'q', nullptr, "no warnings on standard error"},
       {"no-save", 'n', nullptr, "render without saving the image"},
       {"show", 's', nullptr,
-       "show the image in a window as it is rendered; it stays until closed\n"
-       "(ESC, q or the close button); without a display a one-line warning,\n"
-       "and the file is still written"},
-      {"threads", 0, "N", "render rows on N threads (default: every core; the image is the\nsame for any N)"},
+       "show the image in a window as it is rendered; it stays\n"
+       "until closed (ESC, q or the close button); without a\n"
+       "display a one-line warning, and the file is still written"},
+      {"threads", 0, "N", "render rows on N threads (default: every core; the\nimage is the same for any N)"},
       {"seed", 0, "N", "random numbers for aa, dof, roughness, gi (default 1)"},
-      {"all-features", 0, nullptr, "render on the path with every feature compiled in (for measuring\nwhat the specialised paths save)"},
+      {"all-features", 0, nullptr, "render on the path with every feature compiled in\n(for measuring what the specialised paths save)"},
       {"full-tree", 0, nullptr,
-       "trace every reflected, refracted and GI ray; by default rays that can\n"
-       "change a pixel by less than 1/65536 of the brightest radiance are skipped"},
-      {"stats", 0, nullptr, "say which format and path rendered the scene and how long the parse,\nthe BVH and the render took"},
+       "trace every reflected, refracted and GI ray; by default\n"
+       "rays that can change a pixel by less than 1/65536 of\n"
+       "the brightest radiance are skipped"},
+      {"stats", 0, nullptr, "say which format and path rendered the scene and how\nlong the parse, the BVH and the render took"},
       {"help", 'h', nullptr, "this text"},
       {"version", 0, nullptr, "version"},
   };
@@ -97,15 +102,15 @@ int run(int argc, char** argv) {
   bool minirt_command = minirt_program;
   for (int i = 1; i < argc; ++i) minirt_command = minirt_command || host::has_rt_extension(argv[i]);
   const ErrorStyle style = minirt_command ? ErrorStyle::kMinirtError : ErrorStyle::kLocated;
+  const std::string program = minirt_program ? "miniRT" : "minrt";
   auto usage_error = [&](const std::string& msg) {
-    host::print_error(style, minirt_command ? "minrt: " + msg + " (see minrt --help)"
+    host::print_error(style, minirt_command ? program + ": " + msg + " (see " + program + " --help)"
                                              : "minrt: error: " + msg + " (see minrt --help)");
     return minirt_command ? host::kExitMinirtError : host::kExitSceneError;
   };
 
   std::vector<std::string> scenes;
   bool help = false, version = false, sync = false;
-  const std::string program = minirt_program ? "miniRT" : "minrt";
   std::string error;
   const bool parsed = minrt::cli::parse(
       argc, argv, options_table(),

@@ -112,6 +112,10 @@ int run_driver(const DriverOptions& options) {
   std::string out_path;
   if (options.save) out_path = !options.output_path.empty() ? options.output_path : scene->output_name;
   const bool window_only = options.save && out_path.empty();
+  if (!options.output_path.empty() && has_foreign_extension(options.output_path)) {
+    print_error(style, "minrt: error: the output " + options.output_path + " must end in " + kImageExtensions);
+    return io_status(style);
+  }
   if (!out_path.empty() && !check_output_target(out_path, options.write_through, why)) {
     print_error(style, "minrt: error: " + why);
     return io_status(style);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the Jaworski speed scene of issue 12: 640x480, 20 spheres (diffuse,
+"""Writes the Jaworski speed scene: 640x480, 20 spheres (diffuse,
 mirror and mixed), a floor, a directional and a spherical light, ray depth
 4. Deterministic (fixed seed).
 

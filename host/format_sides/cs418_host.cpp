@@ -20,55 +20,40 @@ namespace minrt::host {
 
 namespace {
 
-// The parse log and the final arrays take at most two records a line, the
-// BVH a bounded amount per object.
-template <class R>
-std::size_t arena_bytes(std::size_t lines) {
-  const std::size_t record = model::SceneBuilder<R>::record_bytes();
-  return lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
-}
-
 template <class M>
 std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOptions& options,
                                             const WarningSink& warnings, std::string& error) {
   using R = typename M::real;
   const auto t_parse = std::chrono::steady_clock::now();
-  std::size_t lines = content_lines(in.text) + 1;
-  for (int growth = 0;; ++growth, lines *= 2) {
-    auto scene = std::make_unique<GeneralScene<M>>();
-    if (!scene->storage.allocate(arena_bytes<R>(lines), in.shown, error)) return nullptr;
-    Arena arena(scene->storage.bytes.get(), scene->storage.size);
+  return prepare_growing<M>(content_lines(in.text) + 1, in.shown, error,
+                            [&](GeneralScene<M>& scene, Arena& arena, bool first, std::string& message) {
     model::SceneBuilder<R> builder(arena);
-    scene->textures = std::make_unique<TextureFiles>(in.base_dir, &load_png_texture, cs418::kMaxTextures, "textures");
-    TextureFiles& textures = *scene->textures;
+    scene.textures = std::make_unique<TextureFiles>(in.base_dir, &load_png_texture, cs418::kMaxTextures, "textures");
     MemorySource mem{reinterpret_cast<const uint8_t*>(in.text.data()), in.text.size()};
-    // Warnings once: on the first pass only (a larger arena reads the same text).
-    cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{&TextureFiles::resolve, &textures},
-                            growth == 0 ? warnings : WarningSink{});
+    // Warnings once: a larger arena reads the same text again.
+    cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{&TextureFiles::resolve, scene.textures.get()},
+                            first ? warnings : WarningSink{});
     cs418::Header header;
     Diagnostic d;
-    const cs418::ReadStatus st = reader.read(header, scene->model, d);
-    const bool full = st == cs418::ReadStatus::kOutOfMemory || (st == cs418::ReadStatus::kOk && !builder.finish(scene->model));
-    if (full && growth < kMaxArenaGrowths) continue;
-    if (st != cs418::ReadStatus::kOk) {
-      error = located_error(in.shown, d);
-      return nullptr;
+    const cs418::ReadStatus st = reader.read(header, scene.model, d);
+    if (st == cs418::ReadStatus::kSceneError) {
+      message = located_error(in.shown, d);
+      return Pass::kFailed;
     }
-    if (full) {
-      error = in.shown + ": error: scene does not fit in memory";
-      return nullptr;
+    if (st == cs418::ReadStatus::kOutOfMemory || !builder.finish(scene.model)) {
+      message = in.shown + ": error: scene does not fit in memory";
+      return Pass::kFull;
     }
-    scene->model.textures = textures.table();
-    scene->model.texture_count = textures.count();
-    scene->output_name = header.output_name;
-    scene->opaque = false;  // the course's PNGs leave the background transparent
-    if (!scene->set_up(arena, options, t_parse)) {
-      if (growth < kMaxArenaGrowths) continue;
-      error = in.shown + ": error: scene does not fit in memory (BVH)";
-      return nullptr;
+    scene.model.textures = scene.textures->table();
+    scene.model.texture_count = scene.textures->count();
+    scene.output_name = header.output_name;
+    scene.opaque = false;  // the course's PNGs leave the background transparent
+    if (!scene.set_up(arena, options, t_parse)) {
+      message = in.shown + ": error: scene does not fit in memory (BVH)";
+      return Pass::kFull;
     }
-    return scene;
-  }
+    return Pass::kDone;
+  });
 }
 
 }  // namespace

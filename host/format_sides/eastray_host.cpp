@@ -44,6 +44,40 @@ void print_warning(void* ctx, const Diagnostic& d) {
   std::fprintf(stderr, "%s: %s\n", w->expanded->at(d.pos.line, d.pos.col).c_str(), d.message);
 }
 
+// Reads the expanded text into `scene`, in an arena (in `storage`) sized for
+// capacities from the text's content plus `extra(caps)` bytes, doubling the
+// capacities while the reader finds a table full. `arena` is the arena the
+// scene lies in. False with the message line.
+template <class M, class Extra>
+bool read_growing(const ExpandedEastray& x, const std::string& shown, const WarningSink& warnings, Extra extra,
+                  ArenaStorage& storage, std::unique_ptr<Arena>& arena, eastray::Scene<typename M::real>& scene,
+                  std::string& error) {
+  using Scene = eastray::Scene<typename M::real>;
+  typename Scene::Capacities caps = Scene::Capacities::for_text(content_bytes(x.text));
+  for (int growth = 0;; ++growth) {
+    if (!storage.allocate(Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() + extra(caps) + 4096, shown,
+                          error))
+      return false;
+    arena = std::make_unique<Arena>(storage.bytes.get(), storage.size);
+    scene = Scene{};
+    if (!scene.allocate(*arena, caps)) {
+      error = shown + ": error: scene does not fit in memory";
+      return false;
+    }
+    // Warnings once: a larger arena reads the same text again.
+    auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene, *arena,
+                                                       growth == 0 ? warnings : WarningSink{});
+    Diagnostic d;
+    if (reader->read(d)) return true;
+    if (!d.out_of_memory || growth == kMaxArenaGrowths) {
+      error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
+      return false;
+    }
+    caps = {caps.lights * 2, caps.materials * 2, caps.primitives * 2, caps.nodes * 2, caps.triangles * 2,
+            caps.vertices * 2};
+  }
+}
+
 // The general scene with what EASTRAY's model points into.
 template <class M>
 struct EastrayScene final : GeneralScene<M> {
@@ -56,50 +90,29 @@ struct EastrayScene final : GeneralScene<M> {
 template <class M>
 std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOptions& options, std::string& error) {
   using R = typename M::real;
-  using Scene = eastray::Scene<R>;
   const auto t_parse = std::chrono::steady_clock::now();
   auto scene = std::make_unique<EastrayScene<M>>();
   if (!preprocess_eastray(in.path, in.shown, in.text, scene->expanded, error)) return nullptr;
-  const ExpandedEastray& x = scene->expanded;
-  WarningContext wc{&x};
-  typename Scene::Capacities caps = Scene::Capacities::for_text(content_bytes(x.text));
-  for (int growth = 0;; ++growth) {
-    // The reader's scratch (part table, a mesh's vertex index) and the
-    // hierarchies over the triangles and the objects come after the arrays.
-    const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
-                              general::bvh_footprint<R>(static_cast<uint32_t>(caps.triangles)) +
-                              general::object_bvh_bytes<R>(static_cast<uint32_t>(caps.nodes)) + 4096;
-    if (!scene->storage.allocate(bytes, in.shown, error)) return nullptr;
-    Arena arena(scene->storage.bytes.get(), scene->storage.size);
-    scene->source = Scene{};
-    if (!scene->source.allocate(arena, caps)) {
-      error = in.shown + ": error: scene does not fit in memory";
-      return nullptr;
-    }
-    const WarningSink warnings =
-        options.quiet || growth > 0 ? WarningSink{} : WarningSink{&print_warning, &wc};
-    auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene->source, arena, warnings);
-    Diagnostic d;
-    if (!reader->read(d)) {
-      if (d.out_of_memory && growth < kMaxArenaGrowths) {
-        caps = {caps.lights * 2, caps.materials * 2, caps.primitives * 2, caps.nodes * 2, caps.triangles * 2,
-                caps.vertices * 2};
-        continue;
-      }
-      error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
-      return nullptr;
-    }
-    bool tiff = false;
-    std::string warning;
-    scene->output_name = eastray_output_name("", scene->source.output, in.path, tiff, warning);
-    if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
-    eastray::to_model(scene->source, scene->shading, scene->model);
-    if (!scene->set_up(arena, options, t_parse)) {
-      error = in.shown + ": error: scene does not fit in memory";
-      return nullptr;
-    }
-    return scene;
+  WarningContext wc{&scene->expanded};
+  // The hierarchies over the triangles and the objects come after the arrays.
+  auto hierarchies = [](const typename eastray::Scene<R>::Capacities& c) {
+    return general::bvh_footprint<R>(static_cast<uint32_t>(c.triangles)) +
+           general::object_bvh_bytes<R>(static_cast<uint32_t>(c.nodes));
+  };
+  std::unique_ptr<Arena> arena;
+  if (!read_growing<M>(scene->expanded, in.shown, options.quiet ? WarningSink{} : WarningSink{&print_warning, &wc},
+                       hierarchies, scene->storage, arena, scene->source, error))
+    return nullptr;
+  bool tiff = false;
+  std::string warning;
+  scene->output_name = eastray_output_name("", scene->source.output, in.path, tiff, warning);
+  if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
+  eastray::to_model(scene->source, scene->shading, scene->model);
+  if (!scene->set_up(*arena, options, t_parse)) {
+    error = in.shown + ": error: scene does not fit in memory";
+    return nullptr;
   }
+  return scene;
 }
 
 }  // namespace
@@ -124,38 +137,18 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
                         int& height, std::string& output_statement, std::string& error) {
   ExpandedEastray x;
   if (!preprocess_eastray(path, path, text, x, error)) return false;
-  using M = PortableFloat;
-  using R = M::real;
-  using Scene = eastray::Scene<R>;
-  typename Scene::Capacities caps = Scene::Capacities::for_text(content_bytes(x.text));
-  for (int growth = 0;; ++growth) {
-    const std::size_t bytes = Scene::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() +
-                              4 * Arena::footprint<int32_t>(static_cast<std::size_t>(caps.vertices)) + 4096;
-    ArenaStorage storage;
-    if (!storage.allocate(bytes, path, error)) return false;
-    Arena arena(storage.bytes.get(), storage.size);
-    Scene scene;
-    if (!scene.allocate(arena, caps)) {
-      error = path + ": error: scene does not fit in memory";
-      return false;
-    }
-    auto reader = std::make_unique<eastray::Reader<M>>(x.text.data(), x.text.size(), scene, arena);
-    Diagnostic d;
-    if (!reader->read(d)) {
-      if (d.out_of_memory && growth < kMaxArenaGrowths) {
-        caps = {caps.lights * 2, caps.materials * 2, caps.primitives * 2, caps.nodes * 2, caps.triangles * 2,
-                caps.vertices * 2};
-        continue;
-      }
-      error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
-      return false;
-    }
-    width = scene.width;
-    height = scene.height;
-    output_statement = scene.output;
-    board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
-    return true;
-  }
+  using M = PortableFloat;  // the board's reader and arithmetic
+  using Caps = eastray::Scene<M::real>::Capacities;
+  auto vertex_index = [](const Caps& c) { return 4 * Arena::footprint<int32_t>(static_cast<std::size_t>(c.vertices)); };
+  ArenaStorage storage;
+  std::unique_ptr<Arena> arena;
+  eastray::Scene<M::real> scene;
+  if (!read_growing<M>(x, path, WarningSink{}, vertex_index, storage, arena, scene, error)) return false;
+  width = scene.width;
+  height = scene.height;
+  output_statement = scene.output;
+  board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
+  return true;
 }
 
 std::unique_ptr<PreparedScene> prepare_eastray(const SceneInput& in, const DriverOptions& options, const WarningSink&,

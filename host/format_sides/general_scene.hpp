@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "formats/model/scene.hpp"
+#include "formats/model/scene_builder.hpp"
 #include "prepared_scene.hpp"
 #include "render/general/render.hpp"
 #include "scene_memory.hpp"
@@ -47,6 +48,36 @@ class GeneralScene : public PreparedScene {
  private:
   general::Renderer<M> renderer_;
 };
+
+// Arena bytes for `lines` lines of scene text: the parse log and the final
+// arrays take at most two records a line, the BVH a bounded amount per object.
+template <class R>
+std::size_t general_arena_bytes(std::size_t lines) {
+  const std::size_t record = model::SceneBuilder<R>::record_bytes();
+  return lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
+}
+
+// How one try at reading a scene into an arena went.
+enum class Pass { kDone, kFull, kFailed };
+
+// Runs `attempt(scene, arena, first, error)` on a fresh GeneralScene with an
+// arena for `lines` lines (content_lines), doubling them while it reports
+// kFull. `first` is true on the first try (warnings once). On kFull the
+// attempt sets `error` to its "does not fit" line, which stands when the
+// growths run out.
+template <class M, class Attempt>
+std::unique_ptr<PreparedScene> prepare_growing(std::size_t lines, const std::string& shown, std::string& error,
+                                               Attempt attempt) {
+  using R = typename M::real;
+  for (int growth = 0;; ++growth, lines *= 2) {
+    auto scene = std::make_unique<GeneralScene<M>>();
+    if (!scene->storage.allocate(general_arena_bytes<R>(lines), shown, error)) return nullptr;
+    Arena arena(scene->storage.bytes.get(), scene->storage.size);
+    const Pass pass = attempt(*scene, arena, growth == 0, error);
+    if (pass == Pass::kDone) return scene;
+    if (pass == Pass::kFailed || growth == kMaxArenaGrowths) return nullptr;
+  }
+}
 
 // The message line for a reader's located diagnostic.
 inline std::string located_error(const std::string& name, const Diagnostic& d) {

@@ -16,12 +16,6 @@ namespace minrt::host {
 
 namespace {
 
-template <class R>
-std::size_t arena_bytes(std::size_t lines) {
-  const std::size_t record = model::SceneBuilder<R>::record_bytes();
-  return lines * (2 * record + 64) + general::bvh_footprint<R>(static_cast<uint32_t>(lines)) + (1u << 16);
-}
-
 template <class M>
 std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOptions& options, std::string& error) {
   using R = typename M::real;
@@ -29,43 +23,36 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOp
   const int width = options.width > 0 ? options.width : f.default_width;
   const int height = options.height > 0 ? options.height : f.default_height;
   const auto t_parse = std::chrono::steady_clock::now();
-  std::size_t lines = content_lines(in.text) + 1;
-  for (int growth = 0;; ++growth, lines *= 2) {
-    auto scene = std::make_unique<GeneralScene<M>>();
-    if (!scene->storage.allocate(arena_bytes<R>(lines), in.shown, error)) return nullptr;
-    Arena arena(scene->storage.bytes.get(), scene->storage.size);
+  return prepare_growing<M>(content_lines(in.text) + 1, in.shown, error,
+                            [&](GeneralScene<M>& scene, Arena& arena, bool, std::string& message) {
     model::SceneBuilder<R> builder(arena);
-    scene->textures =
+    scene.textures =
         std::make_unique<TextureFiles>(in.base_dir, &load_minirt_texture, minirt::kMaxTextures, "texture files");
     MemorySource mem{reinterpret_cast<const uint8_t*>(in.text.data()), in.text.size()};
-    minirt::Reader<M> reader(mem.source(), builder,
-                             minirt::TextureResolver{&TextureFiles::resolve, scene->textures.get()});
+    minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, scene.textures.get()});
     minirt::View<R> view;
     Diagnostic d;
-    const minirt::ReadStatus st = reader.read(scene->model, view, d);
-    const bool full = st == minirt::ReadStatus::kOutOfMemory || (st == minirt::ReadStatus::kOk && !builder.finish(scene->model));
-    if (full && growth < kMaxArenaGrowths) continue;
-    if (st != minirt::ReadStatus::kOk) {
-      error = d.has_pos ? in.shown + ":" + std::to_string(d.pos.line) + ": " + d.message : in.shown + ": " + d.message;
-      return nullptr;
+    const minirt::ReadStatus st = reader.read(scene.model, view, d);
+    if (st == minirt::ReadStatus::kSceneError) {
+      message = d.has_pos ? in.shown + ":" + std::to_string(d.pos.line) + ": " + d.message : in.shown + ": " + d.message;
+      return Pass::kFailed;
     }
-    if (full) {
-      error = in.shown + ": the scene does not fit in memory";
-      return nullptr;
+    if (st == minirt::ReadStatus::kOutOfMemory || !builder.finish(scene.model)) {
+      message = in.shown + ": the scene does not fit in memory";
+      return Pass::kFull;
     }
-    scene->model.width = width;
-    scene->model.height = height;
-    scene->model.camera = minirt::place_camera<M>(view, width, height);
-    scene->model.textures = scene->textures->table();
-    scene->model.texture_count = scene->textures->count();
-    scene->opaque = false;
-    if (!scene->set_up(arena, options, t_parse)) {
-      if (growth < kMaxArenaGrowths) continue;
-      error = in.shown + ": the scene does not fit in memory (BVH)";
-      return nullptr;
+    scene.model.width = width;
+    scene.model.height = height;
+    scene.model.camera = minirt::place_camera<M>(view, width, height);
+    scene.model.textures = scene.textures->table();
+    scene.model.texture_count = scene.textures->count();
+    scene.opaque = false;
+    if (!scene.set_up(arena, options, t_parse)) {
+      message = in.shown + ": the scene does not fit in memory (BVH)";
+      return Pass::kFull;
     }
-    return scene;
-  }
+    return Pass::kDone;
+  });
 }
 
 }  // namespace

@@ -54,6 +54,9 @@ TEST_CASE("registry: a .txt file is CS418 or Jaworski by its first word, CS418 w
   CHECK(host_rule("s.txt", "") == FormatId::kCs418);
   CHECK(host_rule("s.txt", "\x01\x02 garbage") == FormatId::kCs418);
   CHECK(host_rule("s.TXT", "PNG 4 4 s.png") == FormatId::kCs418);
+  CHECK(host_rule("s.txt", "0 0 0 0 30\n") == FormatId::kCs418);  // numbers claim nothing
+  // A miniRT scene misnamed .txt is miniRT's, whose reader asks for .rt.
+  CHECK(host_rule("s.txt", "A 0.2 255,255,255\n") == FormatId::kMinirt);
 }
 
 TEST_CASE("registry: a byte-order mark and letter case do not change the format", "[registry]") {

@@ -1,5 +1,5 @@
-// EASTRAY invalid inputs beyond ../shared and test/eastray/eastray_bad
-// (issue 14): each class the issue lists in new forms, plus the lexical and
+// EASTRAY invalid inputs beyond ../shared and test/eastray/eastray_bad:
+// each class of invalid input in new forms, plus the lexical and
 // preprocessor corner cases (unterminated comments and include names,
 // include cycles through three files, self-referring and exploding macros,
 // bad number spellings, empty files, binary garbage, huge tokens, deep

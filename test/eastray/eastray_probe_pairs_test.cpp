@@ -1,5 +1,4 @@
-// EASTRAY equivalence pairs written for issue 14's "pairs not in
-// ../shared": the same geometry written two ways must give the same image
+// EASTRAY equivalence pairs beyond ../shared: the same geometry written two ways must give the same image
 // within float rounding (SPEC.md 1.6's deterministic metric: pixels whose
 // largest channel difference exceeds 2, a few silhouette pixels allowed).
 // Every quadric kind against the general quadric (kind 0) with the

@@ -1,4 +1,4 @@
-// EASTRAY probes written for issue 14: pixels whose colour follows by hand
+// EASTRAY probes: pixels whose colour follows by hand
 // from the manual's statements and the formulas docs/eastray.md chose where
 // the manual gives none (value x 255, clamped, truncated). Camera on +z
 // looking at the origin, odd image sizes so the centre pixel looks straight

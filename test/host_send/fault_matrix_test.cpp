@@ -1,4 +1,4 @@
-// The fault matrix (issue 17): drop, duplicate, flip and stall, three seeds
+// The fault matrix: drop, duplicate, flip and stall, three seeds
 // each, on the line between host-send and the firmware in firmware-sim
 // (tools/fault_relay), for raw P3, raw P6 and framed, plus raw P6 without the
 // CRC-32 trailer. The rule for every run: status 0 only with the exact

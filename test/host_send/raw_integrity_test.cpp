@@ -1,4 +1,4 @@
-// Raw-protocol integrity (issue 17): the receivers check the layout the
+// Raw-protocol integrity: the receivers check the layout the
 // firmware writes, and the CRC-32 trailer catches what the layout cannot:
 // a dropped or doubled digit that leaves a valid number (`94` -> `4`,
 // `16` -> `116`), a flipped pixel bit. Units on built replies, then the

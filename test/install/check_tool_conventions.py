@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks the command-line conventions of every tool (issue 16):
+"""Checks the command-line conventions of every tool:
 
 - `--help` exits 0, prints the usage on standard output and nothing on
   standard error;

@@ -181,7 +181,7 @@ TEST_CASE("minrt miniRT: command-line mistakes give Error too (SPEC.md 2.7)", "[
   check_error(run_in(dir, "missing.rt -o out.png"), "missing.rt: cannot read the scene: No such file or directory");
   check_error(run_in(dir, "folder.rt -o out.png"), "folder.rt: cannot read the scene: Is a directory");
   check_error(run_in(dir, "good.rt good.rt -o out.png"), "expected one scene file");
-  check_error(run_in(dir, "good.rt -o out.jpg"), "must end in .png or .ppm");
+  check_error(run_in(dir, "good.rt -o out.jpg"), "must end in .png, .ppm, .bmp, .tif or .tiff");
   check_error(run_in(dir, "--scene-format minirt - -o out.png"), "not from standard input");
   check_error(run_in(dir, "good.rt --bogus -o out.png"), "unknown option '--bogus'");
   check_error(run_in(dir, "good.rt --size 0x0 -o out.png"), "bad --size '0x0'");
