@@ -12,7 +12,7 @@
 # rate there measures the simulator's speed; that run is informational.
 . "$(dirname "$0")/../../scripts/help.sh"
 set -eu
-BUILD=${1:-build-hs}
+BUILD=${1:-build/release}
 SCENE=${2:-../shared/scenes/ball.sld}
 HS=$BUILD/host/send/host-send
 STANDIN=$BUILD/test/host_send/hs_standin_board

@@ -5,7 +5,7 @@
 #
 #   bench/sim/fuzz-vs-qemu.sh [--seed N] [--count M] [--sim PATH] [--gen PATH] [--work DIR]
 #
-# Defaults: seed 1, count 200, binaries from build-sim/. CI runs it through
+# Defaults: seed 1, count 200, binaries from build/release/ (scripts/setup.sh). CI runs it through
 # ctest with --seed 1 --count 40. Exit 0 = all equal, 1 = a mismatch (the
 # program is kept in the work dir), 77 = skipped (qemu-riscv32 or clang absent).
 . "$(dirname "$0")/../../scripts/help.sh"
@@ -13,8 +13,8 @@ set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 seed=1
 count=200
-sim=$root/build-sim/firmware_sim/firmware-sim
-gen=$root/build-sim/test/sim/fwsim-fuzzgen
+sim=$root/build/release/firmware_sim/firmware-sim
+gen=$root/build/release/test/sim/fwsim-fuzzgen
 work=
 while [ $# -gt 0 ]; do
   case $1 in

@@ -22,7 +22,7 @@
 #include "render_driver.hpp"
 #include "test_support.hpp"
 
-namespace eprobe {
+namespace minrt::test {
 
 // An EASTRAY scene rendered in memory by minrt's driver, as RGB.
 struct EastrayImage {
@@ -49,6 +49,14 @@ inline bool render_eastray(const std::string& path, const std::string& text, min
   img.output_statement = r.output_name;
   return true;
 }
+
+}  // namespace minrt::test
+
+namespace eprobe {
+
+using minrt::test::EastrayImage;
+using minrt::test::render_eastray;
+
 
 struct Rgb {
   int r, g, b;

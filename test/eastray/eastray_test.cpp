@@ -22,7 +22,7 @@
 
 namespace {
 
-using eprobe::EastrayImage;
+using minrt::test::EastrayImage;
 
 struct Rgb {
   int r, g, b;
@@ -40,7 +40,7 @@ EastrayImage render_file(const std::string& path, minrt::host::Variant v = {}) {
   std::string error;
   const std::string text = minrt::test::read_file(path);
   INFO(path);
-  const bool ok = eprobe::render_eastray(path, text, v, img, error);
+  const bool ok = minrt::test::render_eastray(path, text, v, img, error);
   INFO(error);
   REQUIRE(ok);
   return img;
@@ -49,7 +49,7 @@ EastrayImage render_file(const std::string& path, minrt::host::Variant v = {}) {
 EastrayImage render_text(const std::string& text, minrt::host::Variant v = {}) {
   EastrayImage img;
   std::string error;
-  const bool ok = eprobe::render_eastray("scene.ray", text, v, img, error);
+  const bool ok = minrt::test::render_eastray("scene.ray", text, v, img, error);
   INFO(error);
   REQUIRE(ok);
   return img;
