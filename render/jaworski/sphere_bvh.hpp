@@ -63,8 +63,7 @@ class SphereBvh {
       const Lanes doc = d.x * ox + d.y * oy + d.z * oz;
       const Lanes occ = ox * ox + oy * oy + oz * oz;
       if (n.leaf) {
-        // The tracer's own delta, lane by lane.
-        const Lanes delta = doc * doc - occ + n.r2;
+        const Lanes delta = sphere_delta(d, ox, oy, oz, doc, occ, n.r2);
         for (int32_t i = 0; i < n.count; ++i)
           if (delta[i] >= R(0) && hit(n.child[i], doc[i], delta[i])) return true;
         continue;
@@ -77,6 +76,27 @@ class SphereBvh {
       if (!cull || !(margin[0] > R(0))) stack[sp++] = n.child[0];
     }
     return false;
+  }
+
+  // The discriminant a ray o + t d has with a sphere (centre c, radius^2
+  // r2), given oc = o - c, doc = d.oc and occ = |oc|^2; its roots are
+  // -doc -+ sqrt(delta). In double it is the original's doc^2 - |oc|^2 + r^2.
+  // In float that form cancels: its error, about u |oc|^2, moves a hit
+  // point off the surface by about u |oc|^2 / r (speckled self-shadowing
+  // when the eye is far from a small sphere), so float computes the same
+  // quantity as r^2 - |oc - doc d|^2 (d a unit vector), whose error is
+  // about u |oc| r. The node walk's skips still hold: they only need the
+  // computed delta to be negative for a line as far from the centre as
+  // they require, and this form errs less.
+  template <class T>
+  static T sphere_delta(const V& d, const T& ox, const T& oy, const T& oz, const T& doc, const T& occ,
+                        const T& r2) {
+    if constexpr (kDouble) {
+      return doc * doc - occ + r2;
+    } else {
+      const T px = ox - doc * d.x, py = oy - doc * d.y, pz = oz - doc * d.z;
+      return r2 - (px * px + py * py + pz * pz);
+    }
   }
 
   // Whether |d|^2 = dd is within 16u of 1, as the skips' reasoning needs.
