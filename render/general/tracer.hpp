@@ -245,11 +245,15 @@ class Tracer {
         break;
     }
     const model::Material<R>& mat = s_.materials[mat_index];
-    const bool entering = dot(ray.dir, n) < R(0);
-    if (!entering) n = -n;
+    // Roughness perturbs the object's own normal; the two-sided flip then
+    // looks at the perturbed one (docs/cs418.md, conventions): at grazing
+    // angles a perturbed normal that faces away from the viewer is turned
+    // round, away from the light above the surface, as in the reference.
     if constexpr ((F & kRoughness) != 0) {
       if (mat.roughness > R(0)) n = normalize<M>(n + gaussian3<M>(rng) * mat.roughness);
     }
+    const bool entering = dot(ray.dir, n) < R(0);
+    if (!entering) n = -n;
     Vec3<R> color = mat.color;
     if constexpr ((F & kTextures) != 0) {
       if (mat.texture != model::kNoTexture && h.kind != HitKind::kPlane) color = texel(h, p, mat.texture);
