@@ -163,8 +163,20 @@ class Renderer {
       px_out[0] = srgb_encode<R>(c.x);
       px_out[1] = srgb_encode<R>(c.y);
       px_out[2] = srgb_encode<R>(c.z);
-      px_out[3] = static_cast<uint8_t>(static_cast<uint32_t>(255 * hits) / static_cast<uint32_t>(s.samples));
+      px_out[3] = alpha<F>(hits, s.samples);
     }
+  }
+
+  // floor(255 hits / samples), in 32 bits while 255 * samples fits (any
+  // count aa asks for).
+  template <uint32_t F>
+  static uint8_t alpha(int32_t hits, int32_t samples) {
+    const uint32_t h = static_cast<uint32_t>(hits), n = static_cast<uint32_t>(samples);
+    if constexpr ((F & kLensOrAa) != 0) {
+      if (n > 0xffffffffu / 255u)
+        return static_cast<uint8_t>(static_cast<uint64_t>(h) * 255u / static_cast<uint64_t>(n));
+    }
+    return static_cast<uint8_t>(255u * h / n);
   }
 
   const model::Scene<R>* scene_ = nullptr;
