@@ -102,7 +102,8 @@ TEST_CASE("cs418 leniency: '#' comment lines are ignored with a warning", "[cs41
 }
 
 TEST_CASE("cs418 leniency: a trailing '# comment' is ignored with a warning", "[cs418][cli][lenient]") {
-  const auto r = render("png 8 8 o.png\nsphere 0 0 -2 1 # the ball, with more words than a line stores: a b c d e f g h i j k\nsun 1 1 1\n");
+  const auto r = render("png 8 8 o.png\nsphere 0 0 -2 1 # the ball, with more words than a line stores: a b c d e f g\n"
+                        "sun 1 1 1\n");
   check_renders(r, "scene.txt:2:17: warning: comment ignored\n");
   CHECK(r.image.rgba == render("png 8 8 o.png\n" + kBall).image.rgba);
 }
