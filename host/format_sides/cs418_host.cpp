@@ -63,9 +63,10 @@ bool cs418_png_line(const std::string& text, int& width, int& height, std::strin
   std::string line;
   while (std::getline(in, line)) {
     std::istringstream words(line);
-    std::string kw, w, h, extra;
-    if (!(words >> kw)) continue;
-    if (kw != "png" || !(words >> w >> h >> name) || (words >> extra)) return false;
+    std::string kw, w, h;
+    if (!(words >> kw) || kw[0] == '#') continue;  // blank or comment: the reader skips both
+    // Fields after the name are ignored, as the reader ignores them.
+    if (kw != "png" || !(words >> w >> h >> name)) return false;
     uint32_t wv = 0, hv = 0;
     const char* pw = w.c_str();
     const char* ph = h.c_str();

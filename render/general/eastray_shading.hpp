@@ -1,12 +1,12 @@
-// EASTRAY's finish (Finish::kEastray), members of the general tracer
-// defined here: visibility through the CSG tree of quadric solids
+// EASTRAY's finish (Finish::kEastray), the general tracer's policy for
+// EASTRAY scenes: visibility through the CSG tree of quadric solids
 // (csg_intersect.hpp, by membership, RANGE as a bound) and the mesh
 // triangles, and the manual's shading: ambient (env), diffuse, specular
 // models 0, 1, 4, 5, mirror reflection, Fresnel transmission with
 // absorption, mist, the sky with visible sun discs, three light kinds with
 // 2^(-d/h) fall-off and shadows through transparent blockers. The camera,
 // display window and antialiasing are eastray_view.hpp. docs/eastray.md
-// has every formula. Included at the end of tracer.hpp.
+// has every formula.
 //
 // The tie rule is EASTRAY's: of equally near hits the object earlier in
 // the tree wins, objects win over triangles, and the earlier triangle over
@@ -69,9 +69,45 @@ Vec3<R> offset(const Vec3<R>& p, const Vec3<R>& side) {
 
 }  // namespace eastray_detail
 
+template <class M, uint32_t F>
+class EastrayShader : public TracerCore<M, F> {
+  using R = typename M::real;
+  using Base = TracerCore<M, F>;
+
+ public:
+  using Base::Base;
+
+  // The colour a ray from `o` along unit `d` brings back; `medium_half` is
+  // the absorption half distance of the body it travels in (0: air, where
+  // the mist is).
+  Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half) const;
+
+ private:
+  using Base::bvh_;
+  using Base::objects_;
+  using Base::s_;
+
+  struct EastrayHit {
+    R t = R(-1);
+    Vec3<R> normal{};  // unit outward normal at the hit (smoothed on meshes)
+    Vec3<R> geo{};     // the geometric one: which side a new ray starts on
+    int32_t material = model::kNoNode;
+    bool found = false;
+  };
+  EastrayHit eastray_nearest(const Vec3<R>& o, const Vec3<R>& d, R t_min, R t_max, bool shadow) const;
+  [[gnu::always_inline]] inline void eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min,
+                                                      R& t_max, EastrayHit& hit, bool shadow) const;
+  Vec3<R> eastray_shadow(const Vec3<R>& p, const Vec3<R>& l, R dist) const;
+  Vec3<R> eastray_sky(const Vec3<R>& d) const;
+  Vec3<R> eastray_direct(const Vec3<R>& p, const Vec3<R>& start, const Vec3<R>& n, const Vec3<R>& v,
+                         const model::EastrayMaterial<R>& m) const;
+  Vec3<R> eastray_specular(const model::EastrayMaterial<R>& m, const Vec3<R>& n, const Vec3<R>& v,
+                           const Vec3<R>& l, R ndl, R ndv) const;
+};
+
 // Moller-Trumbore on the edges p1-p0 and p2-p0; lowers t_max to a hit.
 template <class M, uint32_t F>
-void Tracer<M, F>::eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min, R& t_max,
+void EastrayShader<M, F>::eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min, R& t_max,
                                     EastrayHit& hit, bool shadow) const {
   using V = Vec3<R>;
   const model::Triangle<R>& tr = s_.triangles[i];
@@ -110,8 +146,8 @@ void Tracer<M, F>::eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>&
 // The nearest surface in (t_min, t_max). `shadow`: solids and faces
 // flagged no-shadow are not there.
 template <class M, uint32_t F>
-typename Tracer<M, F>::EastrayHit Tracer<M, F>::eastray_nearest(const Vec3<R>& o, const Vec3<R>& d, R t_min,
-                                                                R t_max, bool shadow) const {
+typename EastrayShader<M, F>::EastrayHit EastrayShader<M, F>::eastray_nearest(const Vec3<R>& o, const Vec3<R>& d,
+                                                                              R t_min, R t_max, bool shadow) const {
   EastrayHit hit;
   if constexpr ((F & kQuadrics) != 0) {
     if (s_.csg_root != model::kNoNode) {
@@ -153,7 +189,7 @@ typename Tracer<M, F>::EastrayHit Tracer<M, F>::eastray_nearest(const Vec3<R>& o
 // Light arriving at p (unit direction l, distance dist) after blockers:
 // opaque ones stop it, transparent ones tint it by their transmittance.
 template <class M, uint32_t F>
-Vec3<typename M::real> Tracer<M, F>::eastray_shadow(const Vec3<R>& p, const Vec3<R>& l, R dist) const {
+Vec3<typename M::real> EastrayShader<M, F>::eastray_shadow(const Vec3<R>& p, const Vec3<R>& l, R dist) const {
   using V = Vec3<R>;
   using namespace eastray_detail;
   const model::EastrayShading<R>& e = *s_.eastray;
@@ -175,7 +211,7 @@ Vec3<typename M::real> Tracer<M, F>::eastray_shadow(const Vec3<R>& p, const Vec3
 
 // The sky, with visible sun discs (back_mode 0).
 template <class M, uint32_t F>
-Vec3<typename M::real> Tracer<M, F>::eastray_sky(const Vec3<R>& d) const {
+Vec3<typename M::real> EastrayShader<M, F>::eastray_sky(const Vec3<R>& d) const {
   using V = Vec3<R>;
   using namespace eastray_detail;
   const model::EastrayShading<R>& e = *s_.eastray;
@@ -198,7 +234,7 @@ Vec3<typename M::real> Tracer<M, F>::eastray_sky(const Vec3<R>& d) const {
 // Local light at p with shading normal n, view direction v (toward the
 // eye). `start`: p pushed off the surface toward the viewer's side.
 template <class M, uint32_t F>
-Vec3<typename M::real> Tracer<M, F>::eastray_direct(const Vec3<R>& p, const Vec3<R>& start, const Vec3<R>& n,
+Vec3<typename M::real> EastrayShader<M, F>::eastray_direct(const Vec3<R>& p, const Vec3<R>& start, const Vec3<R>& n,
                                                     const Vec3<R>& v, const model::EastrayMaterial<R>& m) const {
   using V = Vec3<R>;
   using namespace eastray_detail;
@@ -243,7 +279,7 @@ Vec3<typename M::real> Tracer<M, F>::eastray_direct(const Vec3<R>& p, const Vec3
 }
 
 template <class M, uint32_t F>
-Vec3<typename M::real> Tracer<M, F>::eastray_specular(const model::EastrayMaterial<R>& m, const Vec3<R>& n,
+Vec3<typename M::real> EastrayShader<M, F>::eastray_specular(const model::EastrayMaterial<R>& m, const Vec3<R>& n,
                                                       const Vec3<R>& v, const Vec3<R>& l, R ndl, R ndv) const {
   using V = Vec3<R>;
   using namespace eastray_detail;
@@ -295,7 +331,7 @@ Vec3<typename M::real> Tracer<M, F>::eastray_specular(const model::EastrayMateri
 }
 
 template <class M, uint32_t F>
-Vec3<typename M::real> Tracer<M, F>::eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight,
+Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight,
                                                       R medium_half) const {
   using V = Vec3<R>;
   using namespace eastray_detail;

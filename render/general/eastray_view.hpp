@@ -12,7 +12,6 @@
 #include "core/math/vec3.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/eastray_shading.hpp"
-#include "render/general/tracer.hpp"
 
 namespace minrt::general {
 

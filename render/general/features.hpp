@@ -30,6 +30,35 @@ enum Feature : uint32_t {
 };
 inline constexpr uint32_t kAllFeatures = (1u << 12) - 1;
 
+// The shading is a policy over the tracer's geometry (tracer.hpp), one per
+// format, chosen by the path's features: a path carries one format's
+// shading and nothing of the others'.
+template <class M, uint32_t F>
+class Cs418Shader;  // cs418_shading.hpp
+template <class M, uint32_t F>
+class PhongShader;  // phong_shading.hpp (miniRT)
+template <class M, uint32_t F>
+class EastrayShader;  // eastray_shading.hpp
+
+namespace detail {
+template <class M, uint32_t F, bool kPhongPath = (F & kPhong) != 0, bool kEastrayPath = (F & kEastray) != 0>
+struct ShaderOf {
+  using type = Cs418Shader<M, F>;
+};
+template <class M, uint32_t F>
+struct ShaderOf<M, F, true, false> {
+  using type = PhongShader<M, F>;
+};
+template <class M, uint32_t F>
+struct ShaderOf<M, F, false, true> {
+  using type = EastrayShader<M, F>;
+};
+}  // namespace detail
+
+// The tracer of path F: geometry and the shading of F's format.
+template <class M, uint32_t F>
+using Tracer = typename detail::ShaderOf<M, F>::type;
+
 template <class R>
 uint32_t features_of(const model::Scene<R>& s) {
   uint32_t f = 0;

@@ -1,10 +1,13 @@
-// miniRT's shading (SPEC.md 2.3), a member of the general tracer defined
-// here: c = colour * ambient + sum over the lights that see the point of
+// miniRT's shading (SPEC.md 2.3), the general tracer's policy for miniRT
+// scenes: c = colour * ambient + sum over the lights that see the point of
 // colour * light * max(0, n.l) + light * ks * max(0, r.v)^n, lights without
 // falloff, hard shadows. Normals face the viewer, so the insides of objects
-// are lit from inside. Included at the end of tracer.hpp.
+// are lit from inside. Pixels are opaque, black where nothing is hit.
 #pragma once
 
+#include <stdint.h>
+
+#include "core/base/counter_rng.hpp"
 #include "render/general/surface_maps.hpp"
 #include "render/general/tracer.hpp"
 
@@ -16,32 +19,51 @@ inline constexpr int kSpecularSquarings = 5;  // exponent 2^5 = 32
 // point's coordinates (the shared scenes range from units to thousands).
 inline constexpr double kShadowBias = 1e-4;
 
+template <class M>
+uint8_t minirt_byte(typename M::real c);
+
 template <class M, uint32_t F>
-Vec3<typename M::real> Tracer<M, F>::shade_phong(const Ray<R>& ray, const Hit<R>& h) const {
-  const Vec3<R> p = ray.origin + ray.dir * h.t;
-  Vec3<R> n;
-  uint32_t mat_index;
-  switch (h.kind) {
-    case HitKind::kSphere: {
-      const model::Sphere<R>& sp = s_.spheres[h.index];
-      n = (p - sp.center) / sp.radius;
-      mat_index = sp.material;
-      break;
-    }
-    case HitKind::kPlane:
-      n = s_.planes[h.index].normal;  // unit: the reader normalised it
-      mat_index = s_.planes[h.index].material;
-      break;
-    case HitKind::kSolid:
-      n = solid_normal<M>(s_.solids[h.index], p, h.part);
-      mat_index = s_.solids[h.index].material;
-      break;
-    default:
-      n = normalize<M>(s_.triangles[h.index].normal);
-      mat_index = s_.triangles[h.index].material;
-      break;
+class PhongShader : public TracerCore<M, F> {
+  using R = typename M::real;
+  using Base = TracerCore<M, F>;
+
+ public:
+  using Base::Base;
+
+  // Colour along a ray; `hit` false when it meets nothing. One level: no
+  // secondary rays, no random numbers (the signature is the paths' own).
+  Sample<R> trace(const Ray<R>& ray, int, int, R, R eps, CounterRng&) const {
+    Hit<R> h{};
+    this->nearest(ray, eps, h);
+    if (h.kind == HitKind::kNone) return {{}, false};
+    return {shade_phong(ray, h), true};
   }
-  const model::Material<R>& mat = s_.materials[mat_index];
+
+  // Opaque, black where nothing is hit: clamp, then floor(255 c).
+  [[gnu::always_inline]] static inline void pixel(const model::Scene<R>&, const Vec3<R>& sum, int32_t hits,
+                                                  uint8_t* px_out) {
+    const Vec3<R> c = hits == 0 ? Vec3<R>{} : sum;
+    px_out[0] = minirt_byte<M>(c.x);
+    px_out[1] = minirt_byte<M>(c.y);
+    px_out[2] = minirt_byte<M>(c.z);
+    px_out[3] = 255;
+  }
+
+ private:
+  using Base::max_abs;
+  using Base::occluded;
+  using Base::s_;
+
+  Vec3<R> shade_phong(const Ray<R>& ray, const Hit<R>& hit) const;
+};
+
+template <class M, uint32_t F>
+Vec3<typename M::real> PhongShader<M, F>::shade_phong(const Ray<R>& ray, const Hit<R>& hit) const {
+  // Plane normals are unit as stored: the reader normalised them.
+  const SurfaceHit<R> h = this->template surface<true>(ray, hit);
+  const Vec3<R> p = h.point;
+  Vec3<R> n = h.normal;
+  const model::Material<R>& mat = s_.materials[h.material];
   Vec3<R> color = mat.color;
   if (mat.checker && h.kind == HitKind::kPlane) color = checker_colour<M>(s_.planes[h.index], n, p, color);
   if constexpr ((F & kTextures) != 0) {

@@ -9,28 +9,32 @@
 #include "core/base/arena.hpp"
 #include "core/base/counter_rng.hpp"
 #include "core/image/row_sink.hpp"
-#include "core/image/srgb.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/bvh.hpp"
 #include "render/general/camera.hpp"
+#include "render/general/cs418_shading.hpp"
 #include "render/general/csg_object_bvh.hpp"
+#include "render/general/eastray_shading.hpp"
 #include "render/general/eastray_view.hpp"
 #include "render/general/features.hpp"
-#include "render/general/tracer.hpp"
+#include "render/general/phong_shading.hpp"
 
 namespace minrt::general {
 
 // The compiled paths: features outside a path's set make the scene use the
 // next larger one (features.hpp).
-inline constexpr uint32_t kPathBasic = 0;  // spheres and suns
+// CS418's (Cs418Shader): spheres and suns, then direct light, then every
+// feature of the course.
+inline constexpr uint32_t kPathBasic = 0;
 inline constexpr uint32_t kPathDirect = kPlanes | kTriangles | kBulbs | kExposure | kLenses;
-inline constexpr uint32_t kPathFull = kAllFeatures;
-// miniRT's: spheres and planes, then everything the format has.
+inline constexpr uint32_t kPathFull = kAllFeatures & ~(kPhong | kSolids);
+// miniRT's (PhongShader): spheres and planes, then everything the format has.
 inline constexpr uint32_t kPathPhong = kPlanes | kPhong;
 inline constexpr uint32_t kPathPhongFull = kPlanes | kPhong | kSolids | kTextures;
-// EASTRAY's: CSG over quadric solids, meshes, its finish and view.
+// EASTRAY's (EastrayShader): CSG over quadric solids, meshes, its finish and view.
 inline constexpr uint32_t kPathEastray = kEastray | kQuadrics | kTriangles;
-static_assert((kPathFull & (kEastray | kQuadrics)) == 0, "no CS418 or miniRT path carries EASTRAY's code");
+static_assert(((kPathFull | kPathPhongFull) & (kEastray | kQuadrics)) == 0,
+              "no CS418 or miniRT path carries EASTRAY's code");
 
 // Reflected, refracted and GI rays whose weight (the product of the
 // shininess, transparency and colour factors on the way to the pixel) is
@@ -53,20 +57,22 @@ class Renderer {
     scene_ = &scene;
     seed_ = seed;
     min_weight_ = full_tree ? R(0) : R(kDefaultMinWeight);
+    features_ = features_of(scene);
     // EASTRAY's meshes may go without their hierarchy (every ray then tests
     // every triangle: the same image, slower), as on a board short of room.
-    if (!build_bvh<M>(scene, arena, bvh_) && scene.finish != model::Finish::kEastray) return false;
+    if (!build_bvh<M>(scene, arena, bvh_) && (features_ & kEastray) == 0) return false;
     auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
     if (dirs == nullptr) return false;
     for (uint32_t i = 0; i < scene.light_count; ++i)
       if (scene.lights[i].kind == model::LightKind::kSun) dirs[i] = normalize<M>(scene.lights[i].vector);
     light_dirs_ = dirs;
-    features_ = features_of(scene);
     if ((features_ & kQuadrics) != 0) build_object_bvh<M>(scene, arena, objects_);
+    // Each format's paths, the smallest that has the scene's features;
+    // --all-features (force_full): the format's path with every one.
     if ((features_ & kEastray) != 0) path_ = kPathEastray;
+    else if ((features_ & kPhong) != 0)
+      path_ = !force_full && (features_ & ~kPathPhong) == 0 ? kPathPhong : kPathPhongFull;
     else if (force_full) path_ = kPathFull;
-    else if ((features_ & ~kPathPhong) == 0 && (features_ & kPhong) != 0) path_ = kPathPhong;
-    else if ((features_ & ~kPathPhongFull) == 0 && (features_ & kPhong) != 0) path_ = kPathPhongFull;
     else if ((features_ & ~kPathBasic) == 0) path_ = kPathBasic;
     else if ((features_ & ~kPathDirect) == 0) path_ = kPathDirect;
     else path_ = kPathFull;
@@ -138,32 +144,7 @@ class Renderer {
         sum += smp.color;
         ++hits;
       }
-      uint8_t* px_out = out + 4 * x;
-      if constexpr ((F & kPhong) != 0) {
-        if (s.finish == model::Finish::kMinirt) {  // opaque, black where nothing is hit
-          const Vec3<R> c = hits == 0 ? Vec3<R>{} : sum;
-          px_out[0] = minirt_byte<M>(c.x);
-          px_out[1] = minirt_byte<M>(c.y);
-          px_out[2] = minirt_byte<M>(c.z);
-          px_out[3] = 255;
-          continue;
-        }
-      }
-      if (hits == 0) {
-        px_out[0] = px_out[1] = px_out[2] = px_out[3] = 0;
-        continue;
-      }
-      Vec3<R> c = hits == 1 ? sum : sum / M::from_int(hits);
-      if constexpr ((F & kExposure) != 0) {
-        if (s.exposure) {
-          c = Vec3<R>{R(1) - M::exp(-s.exposure_value * c.x), R(1) - M::exp(-s.exposure_value * c.y),
-                      R(1) - M::exp(-s.exposure_value * c.z)};
-        }
-      }
-      px_out[0] = srgb_encode<R>(c.x);
-      px_out[1] = srgb_encode<R>(c.y);
-      px_out[2] = srgb_encode<R>(c.z);
-      px_out[3] = static_cast<uint8_t>(static_cast<uint32_t>(255 * hits) / static_cast<uint32_t>(s.samples));
+      Tracer<M, F>::pixel(s, sum, hits, out + 4 * x);
     }
   }
 

@@ -1,70 +1,53 @@
-// The general tracer: nearest hit through the BVH and the plane list, direct
-// light with shadows, reflection, refraction, roughness and global
-// illumination, as SPEC.md 1.3 gives them for CS418. Templated on the math
-// policy (like the min-rt tracer) and on the features the scene uses
-// (features.hpp): code for an unused feature is not compiled into the path.
-// EASTRAY's finish (quadric solids in CSG trees, meshes, its shading) is a
-// path of its own: eastray_shading.hpp.
+// The general tracer's geometry: the nearest hit through the BVH and the
+// plane list, shadow rays, and the surface at a hit (point, normal,
+// material, where on the object). Templated on the math policy (like the
+// min-rt tracer) and on the features the scene uses (features.hpp): code
+// for an unused feature is not compiled into the path. The shading is a
+// policy on top of it, one per format, chosen by the path (features.hpp):
+// cs418_shading.hpp, phong_shading.hpp (miniRT), eastray_shading.hpp.
 #pragma once
 
 #include <stdint.h>
 
-#include "core/base/counter_rng.hpp"
-#include "core/image/srgb.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/bvh.hpp"
 #include "render/general/csg_intersect.hpp"
 #include "render/general/features.hpp"
 #include "render/general/intersect.hpp"
-#include "render/general/sampling.hpp"
 #include "render/general/solid_intersect.hpp"
 
 namespace minrt::general {
 
-// Secondary rays ignore hits at or below this distance (SPEC.md 1.3: any
-// value from 1e-10 to 1e-3 gives the reference images).
-inline constexpr double kSecondaryEpsilon = 1e-4;
-
-// Each secondary ray draws from its own stream, forked by the kind of
-// branch, so skipping a branch (the weight cut-off) changes no other
-// random number.
-inline constexpr uint32_t kBranchReflect = 1;
-inline constexpr uint32_t kBranchRefract = 2;
-inline constexpr uint32_t kBranchGi = 3;
-
+// The colour a ray brings back; `hit` false when it meets nothing.
 template <class R>
 struct Sample {
   Vec3<R> color;
   bool hit;
 };
 
+// What shading needs of a hit.
+template <class R>
+struct SurfaceHit {
+  Vec3<R> point;
+  Vec3<R> normal;  // outward: sphere (p - c) / r, plane and triangle unit, solid unit
+  uint32_t material;
+  HitKind kind;
+  uint32_t index;  // which object of its kind
+  R b1, b2;        // triangle barycentrics (its texture coordinates come from them)
+};
+
 template <class M, uint32_t F>
-class Tracer {
+class TracerCore {
   using R = typename M::real;
 
  public:
   // `light_dirs`: each sun's normalised direction, computed once at set-up.
   // `objects`: the hierarchy over the CSG tree's objects (kQuadrics).
-  Tracer(const model::Scene<R>& scene, const Bvh<R>& bvh, const Vec3<R>* light_dirs, R min_weight,
-         const CsgObjects<R>* objects = nullptr)
+  TracerCore(const model::Scene<R>& scene, const Bvh<R>& bvh, const Vec3<R>* light_dirs, R min_weight,
+             const CsgObjects<R>* objects = nullptr)
       : s_(scene), bvh_(bvh), light_dirs_(light_dirs), min_weight_(min_weight), objects_(objects) {}
 
-  // Colour along a ray; `hit` false when it meets nothing.
-  // `weight` bounds how much this ray can still change the pixel: children
-  // whose weight falls below the renderer's cut-off are not traced.
-  Sample<R> trace(const Ray<R>& ray, int depth, int gi_level, R weight, R eps, CounterRng& rng) const {
-    Hit<R> h{};
-    nearest(ray, eps, h);
-    if (h.kind == HitKind::kNone) return {{}, false};
-    return {shade(ray, h, depth, gi_level, weight, rng), true};
-  }
-
-  // Finish::kEastray (eastray_shading.hpp): the colour a ray from `o` along
-  // unit `d` brings back; `medium_half` is the absorption half distance of
-  // the body it travels in (0: air, where the mist is).
-  Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half) const;
-
- private:
+ protected:
   // ------------------------------------------------------------ visibility
   void nearest(const Ray<R>& ray, R eps, Hit<R>& h) const {
     if constexpr ((F & kPlanes) != 0) {
@@ -215,168 +198,51 @@ class Tracer {
     return false;
   }
 
-  // --------------------------------------------------------------- shading
-  static R max_abs(const Vec3<R>& v) {
-    const R x = v.x < R(0) ? -v.x : v.x, y = v.y < R(0) ? -v.y : v.y, z = v.z < R(0) ? -v.z : v.z;
-    return x > y ? (x > z ? x : z) : (y > z ? y : z);
-  }
-
-  Vec3<R> shade(const Ray<R>& ray, const Hit<R>& h, int depth, int gi_level, R weight, CounterRng& rng) const {
-    if constexpr ((F & kPhong) != 0) {
-      if (s_.finish == model::Finish::kMinirt) return shade_phong(ray, h);
-    }
-    const Vec3<R> p = ray.origin + ray.dir * h.t;
-    Vec3<R> n;
-    uint32_t mat_index;
+  // ---------------------------------------------------------------- surface
+  // The surface at hit `h` of `ray`. `kUnitPlanes`: the plane normals are
+  // unit as stored (miniRT's reader normalises them); otherwise they are
+  // normalised here, in the tracer's precision.
+  template <bool kUnitPlanes>
+  [[gnu::always_inline]] inline SurfaceHit<R> surface(const Ray<R>& ray, const Hit<R>& h) const {
+    SurfaceHit<R> sh;
+    sh.point = ray.origin + ray.dir * h.t;
+    sh.kind = h.kind;
+    sh.index = h.index;
+    sh.b1 = h.b1;
+    sh.b2 = h.b2;
     switch (h.kind) {
       case HitKind::kSphere: {
         const model::Sphere<R>& sp = s_.spheres[h.index];
-        n = (p - sp.center) / sp.radius;
-        mat_index = sp.material;
+        sh.normal = (sh.point - sp.center) / sp.radius;
+        sh.material = sp.material;
         break;
       }
       case HitKind::kPlane:
-        n = normalize<M>(s_.planes[h.index].normal);
-        mat_index = s_.planes[h.index].material;
-        break;
-      default:
-        n = normalize<M>(s_.triangles[h.index].normal);
-        mat_index = s_.triangles[h.index].material;
-        break;
-    }
-    const model::Material<R>& mat = s_.materials[mat_index];
-    const bool entering = dot(ray.dir, n) < R(0);
-    if (!entering) n = -n;
-    if constexpr ((F & kRoughness) != 0) {
-      if (mat.roughness > R(0)) n = normalize<M>(n + gaussian3<M>(rng) * mat.roughness);
-    }
-    Vec3<R> color = mat.color;
-    if constexpr ((F & kTextures) != 0) {
-      if (mat.texture != model::kNoTexture && h.kind != HitKind::kPlane) color = texel(h, p, mat.texture);
-    }
-
-    const R eps = static_cast<R>(kSecondaryEpsilon);
-    Vec3<R> diffuse{};
-    for (uint32_t i = 0; i < s_.light_count; ++i) {
-      const model::Light<R>& light = s_.lights[i];
-      Vec3<R> dir, energy;
-      R limit = R(3.0e38f);
-      if constexpr ((F & kBulbs) != 0) {
-        if (light.kind == model::LightKind::kBulb) {
-          const Vec3<R> v = light.vector - p;
-          const R dist2 = dot(v, v);
-          const R dist = M::sqrt(dist2);
-          dir = v / dist;
-          energy = light.color / dist2;
-          limit = dist;
+        if constexpr (kUnitPlanes) {
+          sh.normal = s_.planes[h.index].normal;
         } else {
-          dir = light_dirs_[i];
-          energy = light.color;
+          sh.normal = normalize<M>(s_.planes[h.index].normal);
         }
-      } else {
-        dir = light_dirs_[i];
-        energy = light.color;
-      }
-      const R lambert = dot(n, dir);
-      if (!(lambert > R(0))) continue;
-      if (occluded(Ray<R>{p, dir}, eps, limit, i)) continue;
-      diffuse += color * energy * lambert;
-    }
-    if constexpr ((F & kGi) != 0) {
-      if (gi_level < s_.gi_depth) {
-        const Vec3<R> d = normalize<M>(n + in_unit_ball<M>(rng));
-        const R w = weight * max_abs(color);
-        if (!(w < min_weight_)) {
-          CounterRng child = rng.fork(kBranchGi);
-          const Sample<R> g = trace(Ray<R>{p, d}, depth, gi_level + 1, w, eps, child);
-          if (g.hit) diffuse += color * g.color;
+        sh.material = s_.planes[h.index].material;
+        break;
+      case HitKind::kSolid:
+        if constexpr ((F & kSolids) != 0) {
+          sh.normal = solid_normal<M>(s_.solids[h.index], sh.point, h.part);
+          sh.material = s_.solids[h.index].material;
+          break;
         }
-      }
+        [[fallthrough]];
+      default:
+        sh.normal = normalize<M>(s_.triangles[h.index].normal);
+        sh.material = s_.triangles[h.index].material;
+        break;
     }
-    if constexpr ((F & kSecondary) == 0) {
-      return diffuse;
-    } else {
-      // At the depth limit the surface is purely diffuse (SPEC.md 1.3).
-      if (depth >= s_.bounces) return diffuse;
-      const Vec3<R> s = mat.shininess;
-      const Vec3<R> t = mat.transparency;
-      const Vec3<R> one{R(1), R(1), R(1)};
-      const R ni = dot(n, ray.dir);
-      const Vec3<R> reflect_dir = ray.dir - n * (R(2) * ni);
-      Vec3<R> reflected{}, refracted{};
-      const R w_reflect = weight * max_abs(s);
-      if (w_reflect != R(0) && !(w_reflect < min_weight_)) {
-        CounterRng child = rng.fork(kBranchReflect);
-        const Sample<R> r = trace(Ray<R>{p, reflect_dir}, depth + 1, gi_level, w_reflect, eps, child);
-        if (r.hit) reflected = r.color;
-      }
-      const Vec3<R> rest = one - s;
-      const R w_refract = weight * max_abs(rest * t);
-      if (w_refract != R(0) && !(w_refract < min_weight_)) {
-        const R eta = entering ? R(1) / mat.ior : mat.ior;
-        const R k = R(1) - eta * eta * (R(1) - ni * ni);
-        const Vec3<R> dir = k < R(0) ? reflect_dir : ray.dir * eta - n * (eta * ni + M::sqrt(k));
-        CounterRng child = rng.fork(kBranchRefract);
-        const Sample<R> r = trace(Ray<R>{p, dir}, depth + 1, gi_level, w_refract, eps, child);
-        if (r.hit) refracted = r.color;
-      }
-      return s * reflected + rest * (t * refracted + (one - t) * diffuse);
-    }
+    return sh;
   }
 
-  // miniRT's shading (phong_shading.hpp).
-  Vec3<R> shade_phong(const Ray<R>& ray, const Hit<R>& h) const;
-
-  // EASTRAY's visibility and shading (eastray_shading.hpp).
-  struct EastrayHit {
-    R t = R(-1);
-    Vec3<R> normal{};  // unit outward normal at the hit (smoothed on meshes)
-    Vec3<R> geo{};     // the geometric one: which side a new ray starts on
-    int32_t material = model::kNoNode;
-    bool found = false;
-  };
-  EastrayHit eastray_nearest(const Vec3<R>& o, const Vec3<R>& d, R t_min, R t_max, bool shadow) const;
-  [[gnu::always_inline]] inline void eastray_triangle(uint32_t i, const Vec3<R>& o, const Vec3<R>& d, R t_min, R& t_max, EastrayHit& hit,
-                        bool shadow) const;
-  Vec3<R> eastray_shadow(const Vec3<R>& p, const Vec3<R>& l, R dist) const;
-  Vec3<R> eastray_sky(const Vec3<R>& d) const;
-  Vec3<R> eastray_direct(const Vec3<R>& p, const Vec3<R>& start, const Vec3<R>& n, const Vec3<R>& v,
-                         const model::EastrayMaterial<R>& m) const;
-  Vec3<R> eastray_specular(const model::EastrayMaterial<R>& m, const Vec3<R>& n, const Vec3<R>& v,
-                           const Vec3<R>& l, R ndl, R ndv) const;
-
-  // Nearest texel, rounding to the closest one (SPEC.md 1.3), decoded from
-  // sRGB by table.
-  Vec3<R> texel(const Hit<R>& h, const Vec3<R>& p, int32_t id) const {
-    const model::Texture& tex = s_.textures[id];
-    R u, v;
-    if (h.kind == HitKind::kSphere) {
-      const model::Sphere<R>& sp = s_.spheres[h.index];
-      const Vec3<R> q = (p - sp.center) / sp.radius;
-      constexpr R kPi = static_cast<R>(3.14159265358979323846);
-      const R lon = M::atan2(q.x, q.z);
-      const R lat = M::atan2(q.y, M::sqrt(q.x * q.x + q.z * q.z));
-      u = lon / (R(2) * kPi) + R(0.25);
-      v = R(0.5) - lat / kPi;
-    } else {
-      const model::Triangle<R>& tr = s_.triangles[h.index];
-      const R b0 = R(1) - h.b1 - h.b2;
-      u = b0 * tr.u[0] + h.b1 * tr.u[1] + h.b2 * tr.u[2];
-      v = b0 * tr.v[0] + h.b1 * tr.v[1] + h.b2 * tr.v[2];
-    }
-    const int32_t x = wrap(u * M::from_int(tex.width), tex.width);
-    const int32_t y = wrap(v * M::from_int(tex.height), tex.height);
-    const uint8_t* c = tex.rgb + 3 * (static_cast<uint32_t>(y) * static_cast<uint32_t>(tex.width) + static_cast<uint32_t>(x));
-    return {srgb_decode<R>(c[0]), srgb_decode<R>(c[1]), srgb_decode<R>(c[2])};
-  }
-  // round(x) mod n, for any finite x (non-finite gives 0).
-  static int32_t wrap(R x, int32_t n) {
-    R r = M::floor(x + R(0.5));
-    const R nn = M::from_int(n);
-    r = r - M::floor(r / nn) * nn;  // into [0, n)
-    int32_t i = (r >= R(0) && r < nn) ? M::to_int(r) : 0;
-    if (i >= n) i = n - 1;
-    return i;
+  static R max_abs(const Vec3<R>& v) {
+    const R x = v.x < R(0) ? -v.x : v.x, y = v.y < R(0) ? -v.y : v.y, z = v.z < R(0) ? -v.z : v.z;
+    return x > y ? (x > z ? x : z) : (y > z ? y : z);
   }
 
   static constexpr uint32_t kShadowCache = 16;  // lights with a last-blocker cache
@@ -395,6 +261,3 @@ class Tracer {
 };
 
 }  // namespace minrt::general
-
-#include "render/general/eastray_shading.hpp"
-#include "render/general/phong_shading.hpp"

@@ -8,18 +8,13 @@
 #include <string>
 
 #include "format_sides/general_scene.hpp"
-#include "render_driver.hpp"
+#include "cs418_render.hpp"
 #include "render/general/render.hpp"
 #include "test_support.hpp"
 
 namespace {
 
-// A CS418 scene's text rendered in memory by minrt's driver.
-bool render_cs418(const std::string& text, const std::string& name, const std::string& dir,
-                  const minrt::host::DriverOptions& o, minrt::host::RenderedScene& r, std::string& error) {
-  const minrt::host::SceneInput in{name, name, dir, text};
-  return minrt::host::render_in_memory(minrt::formats::format_of(minrt::formats::FormatId::kCs418), in, o, r, error);
-}
+using minrt::test::render_cs418;
 
 minrt::host::RenderedScene render_text(const std::string& text, bool full, minrt::host::Variant v = {}) {
   minrt::host::DriverOptions o;
