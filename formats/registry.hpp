@@ -145,27 +145,69 @@ inline constexpr size_t bom_bytes(const uint8_t* text, size_t n) {
 }
 
 // The start of a text, as recognition needs it: the first word (the bytes
-// up to a blank, at most kWordBytes of them) and the first non-blank byte
-// after it (0 if none).
+// up to a blank, at most kWordBytes of them) after a UTF-8 byte-order mark,
+// blanks and `#` comment lines (a `#` word a format lists, EASTRAY's
+// `#include`, is a word, not a comment), and the first non-blank byte after
+// it (0 if none). Text that is all comments has the word "#". `complete`
+// says whether the bytes given were enough to know: a reader of a stream
+// (the board) gives more until it is.
 struct TextStart {
   static constexpr size_t kWordBytes = 24;
   char word[kWordBytes] = {};
   size_t length = 0;
   char next = 0;
+  bool complete = false;
 };
+
+namespace registry_detail {
+// Whether the `#` word at text[0..n) is one a format lists (a directive).
+inline constexpr bool listed_hash_word(const uint8_t* text, size_t n);
+}  // namespace registry_detail
 
 inline constexpr TextStart text_start(const uint8_t* text, size_t n) {
   TextStart s;
   size_t i = bom_bytes(text, n);
-  while (i < n && registry_detail::blank(text[i])) ++i;
+  bool comment = false;
+  for (;;) {
+    while (i < n && registry_detail::blank(text[i])) ++i;
+    if (i >= n || text[i] != '#') break;
+    size_t end = i;
+    while (end < n && !registry_detail::blank(text[end])) ++end;
+    if (registry_detail::listed_hash_word(text + i, end - i)) break;
+    comment = true;
+    while (i < n && text[i] != '\n') ++i;
+    if (i >= n) {  // the comment may go on
+      s.word[0] = '#';
+      s.length = 1;
+      return s;
+    }
+  }
+  if (i >= n) {  // nothing but blanks and comments so far
+    if (comment) {
+      s.word[0] = '#';
+      s.length = 1;
+    }
+    return s;
+  }
   while (i < n && !registry_detail::blank(text[i])) {
     if (s.length < TextStart::kWordBytes) s.word[s.length++] = static_cast<char>(text[i]);
     ++i;
   }
   while (i < n && registry_detail::blank(text[i])) ++i;
-  if (i < n) s.next = static_cast<char>(text[i]);
+  if (i < n) {
+    s.next = static_cast<char>(text[i]);
+    s.complete = true;
+  }
   return s;
 }
+
+namespace registry_detail {
+inline constexpr bool listed_hash_word(const uint8_t* text, size_t n) {
+  for (const Format& f : kFormats)
+    if (any_of(f.first_words.words, reinterpret_cast<const char*>(text), n, false)) return true;
+  return false;
+}
+}  // namespace registry_detail
 
 // Whether `f` claims a text that starts with `s`.
 inline constexpr bool claims(const Format& f, const TextStart& s) {

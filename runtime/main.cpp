@@ -269,9 +269,12 @@ extern "C" int main(int argc, char** argv) {
   }
   // The format by the registry's rule, from the first word (SLD: a number).
   minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
-  const int kept = text.peek_start(static_cast<int>(minrt::formats::TextStart::kWordBytes));
-  const minrt::formats::Format& format =
-      minrt::formats::format_of_text(minrt::formats::text_start(text.kept(), static_cast<size_t>(kept)));
+  text.first_nonblank();
+  minrt::formats::TextStart start;
+  while (!(start = minrt::formats::text_start(text.kept(), static_cast<size_t>(text.kept_count()))).complete &&
+         text.extend()) {
+  }
+  const minrt::formats::Format& format = minrt::formats::format_of_text(start);
   minrt::RenderStatus status;
   if (format.reply == minrt::formats::ImageKind::kPpm) {
     status = minrt::render_sld<Math>(text.source(), output.sink(), options.render, g_state, arena, error);

@@ -48,38 +48,25 @@ class PeekSource {
     out[n] = 0;
   }
 
-  // Reads as far as recognising a format needs (formats/registry.hpp's
-  // text_start): a UTF-8 byte-order mark, blanks, the first word (up to a
-  // blank, at most `word_cap` bytes), blanks and one more byte; returns how
-  // many bytes are kept, at kept(). Never reads past that byte, so a short
-  // scene is not waited for. The mark is not replayed by source().
-  int peek_start(int word_cap) {
-    int i = 0;
-    auto at = [&](int k) -> int {  // byte k of the input, read when needed
-      while (kept_ <= k && kept_ < kKeep) {
-        const int c = in_.get();
-        if (c < 0) return -1;
-        buf_[kept_++] = static_cast<uint8_t>(c);
-      }
-      return k < kept_ ? buf_[k] : -1;
-    };
-    if (at(0) == 0xEF && at(1) == 0xBB && at(2) == 0xBF) {
-      i = 3;
-      if (pos_ < 3) pos_ = 3;
-    }
-    auto blank = [](int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-    while (blank(at(i))) ++i;
-    for (int n = 0; n < word_cap && at(i) >= 0 && !blank(at(i)); ++n) ++i;
-    while (blank(at(i))) ++i;
-    at(i);
-    return kept_;
+  // One more byte into the kept bytes, for a reader of the start that
+  // needs more (formats/registry.hpp's text_start says when it has enough):
+  // false at the end of the input or when kKeep bytes are kept. A UTF-8
+  // byte-order mark at the very start is kept but not replayed by source().
+  bool extend() {
+    if (kept_ >= kKeep) return false;
+    const int c = in_.get();
+    if (c < 0) return false;
+    buf_[kept_++] = static_cast<uint8_t>(c);
+    if (kept_ == 3 && buf_[0] == 0xEF && buf_[1] == 0xBB && buf_[2] == 0xBF && pos_ < 3) pos_ = 3;
+    return true;
   }
+  int kept_count() const { return kept_; }
   const uint8_t* kept() const { return buf_; }
 
   ByteSource source() { return ByteSource{&read_fn, this}; }
 
  private:
-  static constexpr int kKeep = 256;
+  static constexpr int kKeep = 1024;  // room for a comment header before the first word
   static constexpr int kUnknown = -2;
   static int read_fn(void* ctx) {
     auto* self = static_cast<PeekSource*>(ctx);

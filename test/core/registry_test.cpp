@@ -24,9 +24,11 @@ FormatId host_rule(const char* path, const std::string& text) {
 FormatId board_rule(const std::string& text, std::string* replayed = nullptr) {
   minrt::MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
   minrt::PeekSource peek(mem.source());
-  const int kept = peek.peek_start(static_cast<int>(minrt::formats::TextStart::kWordBytes));
-  const FormatId id =
-      minrt::formats::format_of_text(minrt::formats::text_start(peek.kept(), static_cast<size_t>(kept))).id;
+  minrt::formats::TextStart start;
+  while (!(start = minrt::formats::text_start(peek.kept(), static_cast<size_t>(peek.kept_count()))).complete &&
+         peek.extend()) {
+  }
+  const FormatId id = minrt::formats::format_of_text(start).id;
   if (replayed != nullptr) {
     minrt::ByteSource src = peek.source();
     for (int c; (c = src.get()) >= 0;) replayed->push_back(static_cast<char>(c));
@@ -77,7 +79,8 @@ TEST_CASE("registry: without an extension the first word decides, as on the boar
     FormatId id;
   } cases[] = {
       {"png 4 4 s.png\n", FormatId::kCs418},       {"imWidth: 4\n", FormatId::kJaworski},
-      {"# comment\n", FormatId::kJaworski},        {"A 0.2 255,255,255\n", FormatId::kMinirt},
+      {"# comment\n", FormatId::kJaworski},        {"# a CS418 scene\n#\npng 4 4 s.png\n", FormatId::kCs418},
+      {"# Jaworski\nimWidth 4\n", FormatId::kJaworski}, {"#define R 1\n", FormatId::kEastray},        {"A 0.2 255,255,255\n", FormatId::kMinirt},
       {"sp 0,0,0 1 255,0,0\n", FormatId::kMinirt}, {"/* EASTRAY */ display", FormatId::kEastray},
       {"#include \"a.ray\"\n", FormatId::kEastray}, {"color [ 1 1 1 ]", FormatId::kEastray},
       {"color\n\n  [1 1 1]", FormatId::kEastray},  {"color 1 0 0\n", FormatId::kCs418},
