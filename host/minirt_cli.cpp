@@ -86,7 +86,7 @@ int run_minirt_cli(MinirtCli& cli) {
   cli.options.window = &window;
   GeneralResult result;
   std::string error;
-  if (!render_minirt(text, path, base_dir, width, height, cli.options, result, error)) {
+  if (!render_minirt(text, path, base_dir, width, height, cli.reader, cli.options, result, error)) {
     print_minirt_error(error);
     return kMinirtExitError;
   }

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "formats/minirt/minirt_reader.hpp"
 #include "general_render.hpp"
 #include "posix/output_file.hpp"
 
@@ -23,6 +24,7 @@ struct MinirtCli {
   bool stats = false;
   int width = 0, height = 0;          // 0: the default size
   GeneralOptions options;
+  minirt::ReaderOptions reader;       // --mandatory, --cylinder-base
 };
 
 int run_minirt_cli(MinirtCli& cli);

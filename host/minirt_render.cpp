@@ -20,7 +20,8 @@ namespace {
 
 template <class M>
 bool render_with(const std::string& text, const std::string& name, const std::string& base_dir, int width,
-                 int height, const GeneralOptions& options, GeneralResult& out, std::string& error) {
+                 int height, const minirt::ReaderOptions& reader_options, const GeneralOptions& options,
+                 GeneralResult& out, std::string& error) {
   using R = typename M::real;
   const size_t bytes = general_arena_bytes<R>(text);
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
@@ -30,7 +31,8 @@ bool render_with(const std::string& text, const std::string& name, const std::st
   model::SceneBuilder<R> builder(arena);
   TextureFiles textures(base_dir, &load_minirt_texture, minirt::kMaxTextures, "texture files");
   MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
-  minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, &textures});
+  minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, &textures},
+                           reader_options);
   model::Scene<R> scene;
   minirt::View<R> view;
   Diagnostic d;
@@ -57,10 +59,11 @@ bool render_with(const std::string& text, const std::string& name, const std::st
 }  // namespace
 
 bool render_minirt(const std::string& text, const std::string& name, const std::string& base_dir, int width,
-                   int height, const GeneralOptions& options, GeneralResult& out, std::string& error) {
+                   int height, const minirt::ReaderOptions& reader, const GeneralOptions& options,
+                   GeneralResult& out, std::string& error) {
   bool ok = false;
   if (with_math_policy(options.variant, [&]<class M>() {
-        ok = render_with<M>(text, name, base_dir, width, height, options, out, error);
+        ok = render_with<M>(text, name, base_dir, width, height, reader, options, out, error);
       }))
     return ok;
   error = name + ": this combination of --precision and --shims is not built";

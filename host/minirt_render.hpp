@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "formats/minirt/minirt_reader.hpp"
 #include "general_render.hpp"
 
 namespace minrt::host {
@@ -17,6 +18,7 @@ inline constexpr int kMinirtDefaultHeight = 600;
 // a scene error returns false with `error` set to the explicit line that
 // follows "Error" ("scene.rt:3: sphere diameter \"3abc\" is not a number").
 bool render_minirt(const std::string& text, const std::string& name, const std::string& base_dir, int width,
-                   int height, const GeneralOptions& options, GeneralResult& out, std::string& error);
+                   int height, const minirt::ReaderOptions& reader, const GeneralOptions& options,
+                   GeneralResult& out, std::string& error);
 
 }  // namespace minrt::host

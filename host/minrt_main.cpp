@@ -82,6 +82,10 @@ void print_help(std::FILE* f) {
       "                           1/65536 of the brightest radiance are skipped\n"
       "  --stats                  say which path rendered the scene and how long the\n"
       "                           parse, the BVH and the render took\n"
+      "miniRT:\n"
+      "  --mandatory              the subject's mandatory part only: A, C, L, sp, pl, cy,\n"
+      "                           one L (colour optional, white), ambient and diffuse\n"
+      "  --cylinder-base          a cylinder's point is its base centre, not its centre\n"
       "  -h, --help               this text\n"
       "  --version                version\n"
       "\n"
@@ -128,6 +132,7 @@ int main(int argc, char** argv) {
   bool no_save = false;
   bool show = false;
   bool size_given = false;
+  minrt::minirt::ReaderOptions minirt_reader;  // --mandatory, --cylinder-base
   const char* second_scene = nullptr;
 
   for (int i = 1; i < argc; ++i) {
@@ -196,6 +201,10 @@ int main(int argc, char** argv) {
       general.options.force_full = true;
     } else if (arg == "--full-tree") {
       general.options.full_tree = true;
+    } else if (arg == "--mandatory") {
+      minirt_reader.mandatory = true;
+    } else if (arg == "--cylinder-base") {
+      minirt_reader.cylinder_point = minrt::minirt::CylinderPoint::kBase;
     } else if (arg == "--stats") {
       general.stats = true;
     } else if (arg == "-q" || arg == "--quiet") {
@@ -252,6 +261,9 @@ int main(int argc, char** argv) {
                                       : fmemopen(stdin_text.data(), stdin_text.size(), "rb");
     }
   }
+  if ((minirt_reader.mandatory || minirt_reader.cylinder_point != minrt::minirt::CylinderPoint::kCentre) &&
+      scene_format != minrt::host::SceneFormat::kMinirt)
+    usage_error("--mandatory and --cylinder-base apply to miniRT scenes only");
   if (scene_format == minrt::host::SceneFormat::kJaworski) {
     minrt::host::JaworskiCli j;
     j.scene_path = scene_path != nullptr ? scene_path : "-";
@@ -279,6 +291,7 @@ int main(int argc, char** argv) {
     }
     m.options = general.options;
     m.options.variant = variant;
+    m.reader = minirt_reader;
     return minrt::host::run_minirt_cli(m);
   }
   if (scene_format == minrt::host::SceneFormat::kEastray) {
