@@ -4,6 +4,7 @@
 // for the caller to write.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 
@@ -22,6 +23,9 @@ struct GeneralOptions {
   bool force_full = false;  // take the path with every feature compiled in
   bool full_tree = false;   // trace every secondary ray, however small its weight
   LiveWindow* window = nullptr;  // --show: each finished row goes there too
+  // Set (by the window's thread) when the rows are no longer wanted: the
+  // render threads look after each row and stop; the image is then partial.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct GeneralResult {

@@ -47,6 +47,7 @@ void render_general_rows(general::Renderer<M>& renderer, int width, int height, 
   if (window != nullptr) window->begin(width, height);
   auto work = [&] {
     for (int y; (y = next.fetch_add(1)) < height;) {
+      if (options.cancel != nullptr && options.cancel->load(std::memory_order_acquire)) break;
       uint8_t* row = out.image.rgba.data() + static_cast<std::size_t>(y) * width * 4;
       renderer.render_row(y, row);
       if (window != nullptr) window->row_rgba(y, row);  // --show: as each row is done

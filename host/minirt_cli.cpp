@@ -84,11 +84,18 @@ int run_minirt_cli(MinirtCli& cli) {
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   }
   cli.options.window = &window;
+  // To a window only: closing it (ESC, the close button) ends the program at
+  // once, without finishing the render.
+  if (!write) cli.options.cancel = window.closed_flag();
   GeneralResult result;
   std::string error;
   if (!render_minirt(text, path, base_dir, width, height, cli.reader, cli.options, result, error)) {
     print_minirt_error(error);
     return kMinirtExitError;
+  }
+  if (!write && window.closed()) {
+    window.finish_and_wait(why);
+    return 0;
   }
   if (cli.stats)
     std::fprintf(stderr, "minrt: %s: %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d thread%s\n",
