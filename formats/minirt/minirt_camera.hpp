@@ -20,10 +20,11 @@ namespace minrt::minirt {
 inline constexpr double kMaxRenderedFov = 179.9;
 
 // The camera's right and up for a unit forward f. World up is +y: right =
-// up x f (so +x is on the right of a camera looking along +z, as in most
-// 42 implementations, docs/minirt.md), computed as (f.z, 0, -f.x) scaled by
-// its largest component, exactly, however close f is to vertical: the image
-// turns with the heading and never flips by 90 degrees between two nearby
+// up x f, so +x is on the right of a camera looking along +z (as in four of
+// the five 42 implementations read whose handedness could be told,
+// docs/minirt.md). It is (f.z, 0, -f.x) scaled by its largest component:
+// no cancellation however close f is to vertical, so the image turns with
+// the heading and never flips by 90 degrees between two nearby
 // orientations. Only a camera looking exactly straight up or down has no
 // heading; it gets the limit of a camera tilted from +z (right = +x).
 template <class M>

@@ -267,6 +267,18 @@ TEST_CASE("miniRT invariant: near the vertical the image turns a little, never b
   centroid(a, false, ax, ay);
   centroid(b, false, bx, by);
   CHECK(std::hypot(ax - bx, ay - by) < 3);
+  // Straight down has no heading: it is the limit of a tilt from +z, so
+  // +x is on the right and +z at the top, as with 0,-1,0.01.
+  const RgbaImage down = render(scene("0,-1,0"), n, n);
+  const RgbaImage near = render(scene("0,-1,0.01"), n, n);
+  centroid(down, true, ax, ay);
+  centroid(near, true, bx, by);
+  CHECK(ax > n / 2 + 10);
+  CHECK(std::hypot(ax - bx, ay - by) < 3);
+  centroid(down, false, ax, ay);
+  centroid(near, false, bx, by);
+  CHECK(ay < n / 2 - 10);
+  CHECK(std::hypot(ax - bx, ay - by) < 3);
 }
 
 TEST_CASE("miniRT invariant: --mandatory shades with ambient and diffuse only, the light white", "[minirt][invariant]") {
