@@ -47,6 +47,7 @@ struct Format {
   ImageKind reply;          // the image the board sends back
   int default_width, default_height;  // 0: the scene gives its size
   ErrorStyle errors;
+  const char* const* options;  // minrt's options for this format alone (long names); null-terminated
 };
 
 namespace registry_detail {
@@ -56,6 +57,7 @@ inline constexpr const char* kJaworskiExt[] = {".txt", nullptr};
 inline constexpr const char* kMinirtExt[] = {".rt", nullptr};
 inline constexpr const char* kEastrayExt[] = {".ray", nullptr};
 inline constexpr const char* kNone[] = {nullptr};
+inline constexpr const char* kMinirtOptions[] = {"mandatory", "cylinder-base", nullptr};
 
 inline constexpr const char* kCs418Words[] = {
     "png",   "color", "sphere", "sun",   "expose",    "eye",          "forward", "up",  "fisheye",
@@ -77,19 +79,20 @@ inline constexpr const char* kEastrayPrefixes[] = {"/*", nullptr};
 // `#`), and a CS418 word before a miniRT one. SLD claims no word: numbers.
 inline constexpr Format kFormats[] = {
     {FormatId::kSld, "sld", "min-rt SLD", registry_detail::kSldExt, {registry_detail::kNone, registry_detail::kNone},
-     nullptr, 0, 0, ImageKind::kPpm, limits::kDefaultImageWidth, limits::kDefaultImageHeight, ErrorStyle::kLocated},
+     nullptr, 0, 0, ImageKind::kPpm, limits::kDefaultImageWidth, limits::kDefaultImageHeight, ErrorStyle::kLocated,
+     registry_detail::kNone},
     {FormatId::kCs418, "cs418", "CS418", registry_detail::kCs418Ext,
      {registry_detail::kCs418Words, registry_detail::kNone}, nullptr, 0, 1, ImageKind::kPng, 0, 0,
-     ErrorStyle::kLocated},
+     ErrorStyle::kLocated, registry_detail::kNone},
     {FormatId::kJaworski, "jaworski", "Jaworski", registry_detail::kJaworskiExt,
      {registry_detail::kNone, registry_detail::kJaworskiPrefixes}, nullptr, 0, 2, ImageKind::kBmp, 0, 0,
-     ErrorStyle::kLocated},
+     ErrorStyle::kLocated, registry_detail::kNone},
     {FormatId::kMinirt, "minirt", "42 miniRT", registry_detail::kMinirtExt,
      {registry_detail::kMinirtWords, registry_detail::kNone}, nullptr, 0, 3, ImageKind::kPng, 800, 600,
-     ErrorStyle::kMinirtError},
+     ErrorStyle::kMinirtError, registry_detail::kMinirtOptions},
     {FormatId::kEastray, "eastray", "EASTRAY", registry_detail::kEastrayExt,
      {registry_detail::kEastrayWords, registry_detail::kEastrayPrefixes}, "color", '[', 4, ImageKind::kPng, 0, 0,
-     ErrorStyle::kLocated},
+     ErrorStyle::kLocated, registry_detail::kNone},
 };
 inline constexpr size_t kFormatCount = sizeof kFormats / sizeof kFormats[0];
 inline constexpr uint8_t kUtf8Bom[3] = {0xEF, 0xBB, 0xBF};
@@ -130,6 +133,13 @@ inline constexpr const Format* format_named(const char* name) {
     if (registry_detail::matches(name, n, f.name, false)) return &f;
   }
   return nullptr;
+}
+
+// Whether `option` (a long name, "mandatory") is one of `f`'s own options.
+inline constexpr bool takes_option(const Format& f, const char* option) {
+  size_t n = 0;
+  while (option[n] != 0) ++n;
+  return registry_detail::any_of(f.options, option, n, false);
 }
 
 // The format whose upload carries `tag`, or null.

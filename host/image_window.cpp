@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <future>
 
 #include "sdl_library.hpp"
@@ -43,7 +44,21 @@ uint8_t* LiveWindow::claim(int y) {
 
 void LiveWindow::publish(int y) {
   rows_[y].store(kReady, std::memory_order_release);
+  const int n = ready_rows_.fetch_add(1, std::memory_order_acq_rel) + 1;
+  if (hold_at_half_ && n >= (height_ + 1) / 2 && n < height_) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return partial_done_ || abandoned_; });
+  }
   throttle();
+}
+
+void LiveWindow::release_producers() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (partial_done_) return;
+    partial_done_ = true;
+  }
+  changed_.notify_all();
 }
 
 void LiveWindow::throttle() const {
@@ -100,15 +115,32 @@ bool LiveWindow::finish_and_wait(std::string& why) {
 
 namespace {
 
-bool save_snapshot(const SdlLibrary& sdl, SDL_Renderer* renderer, int w, int h, const char* path) {
+// Writes w x h pixels of `surface` (any format) as a P6 file.
+bool save_snapshot(const SdlLibrary& sdl, SDL_Surface* surface, int w, int h, const char* path) {
   std::vector<uint8_t> rgb(static_cast<size_t>(w) * h * 3);
-  SDL_Rect all{0, 0, w, h};
-  if (sdl.RenderReadPixels(renderer, &all, SDL_PIXELFORMAT_RGB24, rgb.data(), w * 3) != 0) return false;
+  if (sdl.LockSurface(surface) != 0) return false;
+  const int converted = sdl.ConvertPixels(w, h, surface->format->format, surface->pixels, surface->pitch,
+                                          SDL_PIXELFORMAT_RGB24, rgb.data(), w * 3);
+  sdl.UnlockSurface(surface);
+  if (converted != 0) return false;
   std::FILE* f = std::fopen(path, "wb");
   if (f == nullptr) return false;
   std::fprintf(f, "P6\n%d %d\n255\n", w, h);
   const bool ok = std::fwrite(rgb.data(), 1, rgb.size(), f) == rgb.size();
   return std::fclose(f) == 0 && ok;
+}
+
+// The largest rectangle of the image's aspect centred in a window of ww x wh.
+SDL_Rect letterbox(int w, int h, int ww, int wh) {
+  SDL_Rect r{0, 0, ww, wh};
+  if (static_cast<long long>(ww) * h > static_cast<long long>(wh) * w) {
+    r.w = static_cast<int>(static_cast<long long>(wh) * w / h);
+    r.x = (ww - r.w) / 2;
+  } else {
+    r.h = static_cast<int>(static_cast<long long>(ww) * h / w);
+    r.y = (wh - r.h) / 2;
+  }
+  return r;
 }
 
 }  // namespace
@@ -122,6 +154,7 @@ bool LiveWindow::open(const std::string& title, std::string& why) {
   }
   if (load_sdl(why) == nullptr) return false;
   if (const char* d = std::getenv("MINRT_SHOW_ROW_DELAY_MS")) delay_ms_ = std::atoi(d);
+  hold_at_half_ = std::getenv("MINRT_SHOW_PARTIAL_SNAPSHOT") != nullptr;
   auto started = std::make_shared<std::promise<std::string>>();
   std::future<std::string> result = started->get_future();
   thread_ = std::thread(&LiveWindow::run, this, title, started);
@@ -134,11 +167,21 @@ bool LiveWindow::open(const std::string& title, std::string& why) {
 }
 
 void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string>> started) {
+  // However the window ends, producers held for the partial snapshot go on.
+  struct Release {
+    LiveWindow* w;
+    ~Release() { w->release_producers(); }
+  } release{this};
   std::string unused;
   const SdlLibrary& sdl = *load_sdl(unused);  // loaded by open()
   // The render's Ctrl-C must stay the render's (SDL would turn it into a
   // quit event for a window nobody may be looking at).
   sdl.SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+  // The image is blitted onto the window's own surface: without these SDL
+  // backs that surface with an OpenGL texture, and loading Mesa (and its
+  // LLVM) delayed the window by over a second.
+  sdl.SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+  sdl.SetHint(SDL_HINT_RENDER_DRIVER, "software");
   if (sdl.Init(SDL_INIT_VIDEO) != 0) {
     started->set_value(std::string("no display (") + sdl.GetError() + ")");
     return;
@@ -169,27 +212,26 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
   }
   SDL_Window* window =
       sdl.CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, SDL_WINDOW_RESIZABLE);
-  SDL_Renderer* renderer = window != nullptr ? sdl.CreateRenderer(window, -1, SDL_RENDERER_SOFTWARE) : nullptr;
-  SDL_Texture* texture =
-      renderer != nullptr ? sdl.CreateTexture(renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STATIC, w, h) : nullptr;
-  if (texture == nullptr) {
+  // The rows shown so far, black until they come.
+  SDL_Surface* image = window != nullptr ? sdl.CreateRGBSurfaceWithFormat(0, w, h, 24, SDL_PIXELFORMAT_RGB24) : nullptr;
+  if (image == nullptr) {
     const std::string program = title.substr(0, title.find(':'));
     std::fprintf(stderr, "%s: warning: not showing the image: cannot open a window (%s)\n", program.c_str(),
                  sdl.GetError());
-    if (renderer != nullptr) sdl.DestroyRenderer(renderer);
     if (window != nullptr) sdl.DestroyWindow(window);
     sdl.Quit();
     return;
   }
-  {
-    const std::vector<uint8_t> black(static_cast<size_t>(w) * h * 3, 0);
-    sdl.UpdateTexture(texture, nullptr, black.data(), w * 3);
-  }
-  sdl.RenderSetLogicalSize(renderer, w, h);  // keeps the aspect when resized
-  auto draw = [&] {
-    sdl.SetRenderDrawColor(renderer, 0, 0, 0, 255);
-    sdl.RenderClear(renderer);
-    sdl.RenderCopy(renderer, texture, nullptr, nullptr);
+  sdl.FillRect(image, nullptr, 0);
+  // Draws the image onto the window's surface, scaled to fit with its aspect
+  // kept; the surface is asked for each time, as a resize replaces it.
+  auto draw = [&]() -> SDL_Surface* {
+    SDL_Surface* screen = sdl.GetWindowSurface(window);
+    if (screen == nullptr) return nullptr;
+    sdl.FillRect(screen, nullptr, 0);
+    SDL_Rect to = letterbox(w, h, screen->w, screen->h);
+    sdl.UpperBlitScaled(image, nullptr, screen, &to);
+    return screen;
   };
   const char* snapshot = std::getenv("MINRT_SHOW_SNAPSHOT");
   const char* partial = std::getenv("MINRT_SHOW_PARTIAL_SNAPSHOT");
@@ -212,29 +254,33 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
         else if (e.type == SDL_WINDOWEVENT) redraw = true;  // exposed, resized, restored: the image again
       } while (sdl.PollEvent(&e) != 0);
     }
+    if (quit) {
+      // The renderer stops at its next row when the window was its only
+      // output (closed()); the window goes at once either way.
+      closed_.store(true, std::memory_order_release);
+      break;
+    }
     bool finished, abandoned;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       finished = finished_;
       abandoned = abandoned_;
     }
-    if (quit || abandoned) break;
+    if (abandoned) break;
     const auto now = Clock::now();
-    if ((now - last >= period || finished) && shown_rows < h) {
+    // The partial snapshot is due once half the rows are in (publish holds
+    // the producers there).
+    const bool partial_due = partial != nullptr && ready_rows_.load(std::memory_order_acquire) >= (h + 1) / 2;
+    if ((now - last >= period || finished || partial_due) && shown_rows < h) {
       last = now;
-      // Upload the rows that became ready, in runs of neighbours.
-      for (int y = 0; y < h;) {
-        if (shown[y] != 0 || rows_[y].load(std::memory_order_acquire) != kReady) {
-          ++y;
-          continue;
-        }
-        int end = y;
-        while (end < h && shown[end] == 0 && rows_[end].load(std::memory_order_acquire) == kReady) shown[end++] = 1;
-        SDL_Rect rect{0, y, w, end - y};
-        sdl.UpdateTexture(texture, &rect, pixels_.data() + static_cast<size_t>(y) * w * 3, w * 3);
-        shown_rows += end - y;
+      // Copy the rows that became ready.
+      for (int y = 0; y < h; ++y) {
+        if (shown[y] != 0 || rows_[y].load(std::memory_order_acquire) != kReady) continue;
+        shown[y] = 1;
+        std::memcpy(static_cast<uint8_t*>(image->pixels) + static_cast<size_t>(y) * image->pitch,
+                    pixels_.data() + static_cast<size_t>(y) * w * 3, static_cast<size_t>(w) * 3);
+        ++shown_rows;
         redraw = true;
-        y = end;
       }
       if (shown_rows != titled_rows && shown_rows < h) {
         titled_rows = shown_rows;
@@ -248,27 +294,32 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
       sdl.SetWindowTitle(window, title.c_str());
     }
     const bool snap = snapshot != nullptr && complete && finished;
-    if (!redraw && !snap) continue;
+    if (partial != nullptr && complete) partial = nullptr;  // every row came at once: no mid-render frame
+    if (partial == nullptr) release_producers();
+    if (!redraw && !snap && !partial_due) continue;
     redraw = false;
-    draw();
-    if (partial != nullptr && shown_rows > 0 && !complete) {
-      if (!save_snapshot(sdl, renderer, w, h, partial)) {
+    SDL_Surface* screen = draw();
+    // Snapshots read the window's surface back when it has the image's
+    // size (it does until someone resizes it), else the image itself.
+    SDL_Surface* shot = screen != nullptr && screen->w == w && screen->h == h ? screen : image;
+    if (partial_due && !complete) {
+      if (!save_snapshot(sdl, shot, w, h, partial)) {
         snapshot_ok_ = false;
         snapshot_error_ = std::string("cannot save the snapshot ") + partial;
       }
       partial = nullptr;
     }
+    if (partial == nullptr) release_producers();
     if (snap) {
-      if (!save_snapshot(sdl, renderer, w, h, snapshot)) {
+      if (!save_snapshot(sdl, shot, w, h, snapshot)) {
         snapshot_ok_ = false;
         snapshot_error_ = std::string("cannot save the snapshot ") + snapshot;
       }
       break;
     }
-    sdl.RenderPresent(renderer);
+    if (screen != nullptr) sdl.UpdateWindowSurface(window);
   }
-  sdl.DestroyTexture(texture);
-  sdl.DestroyRenderer(renderer);
+  sdl.FreeSurface(image);
   sdl.DestroyWindow(window);
   sdl.Quit();
 }

@@ -1,8 +1,11 @@
 // The --show window (SDL2), live: rows appear as they are rendered or as
 // they arrive from the board, in any order, so a user can watch the image
 // being drawn; once it is complete it stays until closed. ESC, q and the
-// close button close it (the render goes on and the file is still written);
-// resizing, covering or minimising keep the image. Without a display,
+// close button close it at once (the render goes on and the file is still
+// written, unless the window was the only output: closed());
+// resizing, covering or minimising keep the image. The image is blitted
+// onto the window's own surface (no OpenGL: the window appears in a few
+// tens of milliseconds). Without a display,
 // open() says why in one line and the caller goes on without a window.
 //
 // Threads: SDL lives on a thread of its own, which redraws at most
@@ -12,7 +15,9 @@
 //
 // For tests: MINRT_SHOW_SNAPSHOT=FILE.ppm saves what the window shows once
 // the image is complete and closes it; MINRT_SHOW_PARTIAL_SNAPSHOT=FILE.ppm
-// saves the first frame that shows some rows but not all; and
+// saves the frame drawn once half the rows have been handed over, holding
+// the producers there until it is saved (so it never depends on how fast
+// the window opens or the rows come); and
 // MINRT_SHOW_ROW_DELAY_MS=N makes every row hand-over sleep N ms, so that
 // a test can catch the image half drawn.
 #pragma once
@@ -63,12 +68,17 @@ class LiveWindow {
   bool finish_and_wait(std::string& why);
   // Something failed: close the window now.
   void abandon();
+  // The user closed the window (ESC, q or the close button). A renderer
+  // whose only output is the window checks this after each row and stops.
+  bool closed() const { return closed_.load(std::memory_order_acquire); }
+  const std::atomic<bool>* closed_flag() const { return &closed_; }
 
  private:
   void run(std::string title, std::shared_ptr<std::promise<std::string>> started);
   uint8_t* claim(int y);
   void publish(int y);
   void throttle() const;
+  void release_producers();
 
   std::thread thread_;
   std::mutex mutex_;
@@ -79,6 +89,10 @@ class LiveWindow {
   std::vector<uint8_t> pixels_;                   // RGB, top row first
   std::unique_ptr<std::atomic<uint8_t>[]> rows_;  // 0 empty, 1 being written, 2 ready
   int delay_ms_ = 0;
+  std::atomic<bool> closed_{false};
+  std::atomic<int> ready_rows_{0};  // rows handed over
+  bool hold_at_half_ = false;       // MINRT_SHOW_PARTIAL_SNAPSHOT is set
+  bool partial_done_ = false;       // under mutex_: the producers may go on
   bool snapshot_ok_ = true;
   std::string snapshot_error_;
 };

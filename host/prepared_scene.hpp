@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/base/diagnostic.hpp"
 #include "formats/registry.hpp"
@@ -35,6 +36,8 @@ struct DriverOptions {
   bool force_full = false;                  // --all-features
   bool full_tree = false;                   // --full-tree
   bool mandatory = false;                   // miniRT: --mandatory
+  bool cylinder_base = false;               // miniRT: --cylinder-base
+  std::vector<std::string> format_options;  // the format-only options given (formats::Format::options)
   int width = 0, height = 0;                // --size; 0: the format's
   bool p6 = false;                          // SLD: --format p6
 };

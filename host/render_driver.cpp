@@ -93,6 +93,15 @@ int run_driver(const DriverOptions& options) {
   in.text.erase(0, bom);
   const formats::Format& format =
       options.format != nullptr ? *options.format : formats::detect_format(from_stdin ? nullptr : in.path.c_str(), start);
+  for (const std::string& name : options.format_options)
+    if (!formats::takes_option(format, name.c_str())) {
+      std::string owners;
+      for (const formats::Format& f : formats::kFormats)
+        if (formats::takes_option(f, name.c_str())) owners += (owners.empty() ? "" : ", ") + std::string(f.title);
+      print_error(format.errors, "minrt: error: --" + name + " applies to " + owners + " scenes only, not " +
+                                     format.title + " (see minrt --help)");
+      return scene_status(format.errors);
+    }
   const HostFormat& host = host_format(format.id);
   if (host.stream != nullptr) return host.stream(in, options);
 
@@ -136,8 +145,14 @@ int run_driver(const DriverOptions& options) {
 
   RgbaImage image;
   const auto t0 = std::chrono::steady_clock::now();
-  const int threads = render_rows(*scene, options.threads, image, &window);
+  // To a window only: closing it (ESC, the close button) ends the program at
+  // once, without finishing the render.
+  const int threads = render_rows(*scene, options.threads, image, &window, window_only ? window.closed_flag() : nullptr);
   const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (window_only && window.closed()) {
+    window.finish_and_wait(why);
+    return kExitOk;
+  }
   if (options.stats)
     std::fprintf(stderr,
                  "minrt: %s: %s %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d "

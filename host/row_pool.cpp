@@ -19,7 +19,7 @@ int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveW
   std::atomic<int> next{0};
   auto work = [&] {
     for (int y; (y = next.fetch_add(1, std::memory_order_relaxed)) < scene.height;) {
-      if (stop != nullptr && stop->load(std::memory_order_relaxed)) return;
+      if (stop != nullptr && stop->load(std::memory_order_acquire)) return;
       uint8_t* row = image.rgba.data() + static_cast<std::size_t>(y) * scene.width * 4;
       scene.render_row(y, row);
       if (live) window->row_rgba(y, row);

@@ -203,6 +203,21 @@ def run_callgrind(tool, variant, scene):
     return int(m.group(1)) if r.returncode == 0 and m else None
 
 
+def kept_section(path, heading):
+    """The section of the current document that starts at heading, up to the
+    next one (without its trailing newline), or None."""
+    try:
+        with open(path) as f:
+            doc = f.read()
+    except OSError:
+        return None
+    a = doc.find(heading + "\n")
+    if a < 0:
+        return None
+    b = doc.find("\n## ", a + len(heading))
+    return doc[a:b if b >= 0 else len(doc)].rstrip("\n") + "\n"
+
+
 def fmt_psnr(p):
     return "∞" if math.isinf(p) else f"{p:.1f}"
 
@@ -695,6 +710,10 @@ def main():
     w("- huge.sld shows that single precision cannot render scenes with coordinates around 1e6; "
       "nothing in the shims can fix that.\n")
 
+    # This section is bench/accuracy/board_vs_double.py's: kept as it was.
+    board = kept_section(os.path.join(args.root, "docs", "accuracy.md"), "## The board against double")
+    if board:
+        w(board)
     w("## Regenerating\n")
     w("```sh\n" + args.command + "\n```\n")
     reused = [isa for isa, (res, _) in firmware.items() if res and res["cached"]]

@@ -19,15 +19,36 @@ namespace minrt::minirt {
 // range [0, 180] includes it). FOV 0 needs nothing: every ray is the axis.
 inline constexpr double kMaxRenderedFov = 179.9;
 
+// The camera's right and up for a unit forward f. World up is +y: right =
+// up x f, so +x is on the right of a camera looking along +z (as in four of
+// the five 42 implementations read whose handedness could be told,
+// docs/minirt.md). It is (f.z, 0, -f.x) scaled by its largest component:
+// no cancellation however close f is to vertical, so the image turns with
+// the heading and never flips by 90 degrees between two nearby
+// orientations. Only a camera looking exactly straight up or down has no
+// heading; it gets the limit of a camera tilted from +z (right = +x).
+template <class M>
+void camera_basis(const Vec3<typename M::real>& f, Vec3<typename M::real>& right, Vec3<typename M::real>& up) {
+  using R = typename M::real;
+  const R ax = f.x < R(0) ? -f.x : f.x;
+  const R az = f.z < R(0) ? -f.z : f.z;
+  const R m = ax > az ? ax : az;
+  if (m > R(0)) {
+    const R rx = f.z / m, rz = -f.x / m;
+    const R len = M::sqrt(rx * rx + rz * rz);
+    right = Vec3<R>{rx / len, R(0), rz / len};
+  } else {
+    right = Vec3<R>{R(1), R(0), R(0)};
+  }
+  up = cross(f, right);
+}
+
 template <class M>
 model::Camera<typename M::real> place_camera(const View<typename M::real>& view, int32_t width, int32_t height) {
   using R = typename M::real;
   const Vec3<R> f = view.direction;  // unit (the reader normalised it)
-  // World up is +y, or +z when the camera looks (almost) straight up or down.
-  const R fy = f.y < R(0) ? -f.y : f.y;
-  const Vec3<R> world_up = fy > R(0.999) ? Vec3<R>{R(0), R(0), R(1)} : Vec3<R>{R(0), R(1), R(0)};
-  const Vec3<R> right = normalize<M>(cross(f, world_up));
-  const Vec3<R> up = cross(right, f);
+  Vec3<R> right, up;
+  camera_basis<M>(f, right, up);
   R fov = view.fov_degrees;
   if (fov > static_cast<R>(kMaxRenderedFov)) fov = static_cast<R>(kMaxRenderedFov);
   constexpr R kHalfDegree = static_cast<R>(3.14159265358979323846 / 360.0);

@@ -10,8 +10,10 @@
 // last line. Range checks are made on the decimal text itself, exactly, so
 // the double host build and the float board accept the same files.
 // Orientation vectors are range-checked per component, then normalised
-// (the shared scenes use non-unit ones); a cylinder's point is the centre of
-// its base, as the shared scenes assume.
+// (the shared scenes use non-unit ones); a cylinder's point is its centre,
+// as the subject says (ReaderOptions::cylinder_point can make it the base).
+// ReaderOptions::mandatory keeps to the subject's mandatory part: the bonus
+// elements are refused, at most one L, its colour optional and unused.
 //
 // Streaming from a ByteSource, no heap: objects go through SceneBuilder into
 // the arena; texture names go to the platform's TextureResolver.
@@ -48,6 +50,19 @@ struct View {
 
 enum class ReadStatus { kOk, kSceneError, kOutOfMemory };
 
+// Where a cylinder's point lies on its axis. The subject: "the center of
+// the cylinder" (the height extends h/2 either way); the shared scenes were
+// written for the centre of the base.
+enum class CylinderPoint : uint8_t { kCentre, kBase };
+
+struct ReaderOptions {
+  // The subject's mandatory part only (docs/minirt.md, "--mandatory"): A, C,
+  // L, sp, pl, cy; A, C and L at most once; L's colour optional and unused
+  // (white light); no specular term. A, L and objects may be missing.
+  bool mandatory = false;
+  CylinderPoint cylinder_point = CylinderPoint::kCentre;
+};
+
 // The constants of the bonus shading, defined once (SPEC.md 2.1).
 inline constexpr int kMaxConeAngle = 90;  // degrees, exclusive
 
@@ -56,8 +71,8 @@ class Reader {
   using R = typename M::real;
 
  public:
-  Reader(ByteSource in, model::SceneBuilder<R>& builder, TextureResolver textures)
-      : in_(in), builder_(builder), textures_(textures) {}
+  Reader(ByteSource in, model::SceneBuilder<R>& builder, TextureResolver textures, ReaderOptions options = {})
+      : in_(in), builder_(builder), textures_(textures), options_(options) {}
 
   // Reads the whole file. On success the scene's ambient and finish are set
   // and `view` holds the camera; the arrays come from builder.finish().
@@ -66,6 +81,7 @@ class Reader {
     view_ = &view;
     error_ = &error;
     scene.finish = model::Finish::kMinirt;
+    scene.specular = !options_.mandatory;
     bool any_element = false;
     while (next_line()) {
       if (count_ == 0) continue;  // blank or white space only
@@ -74,7 +90,15 @@ class Reader {
     }
     if (status_ != ReadStatus::kOk) return status_;
     error.has_pos = false;
-    if (!any_element) return fail_whole("the scene is empty: it needs A, C, L and at least one object");
+    if (!any_element)
+      return fail_whole(options_.mandatory ? "the scene is empty: it needs at least a camera 'C X,Y,Z NX,NY,NZ FOV'"
+                                           : "the scene is empty: it needs A, C, L and at least one object");
+    if (options_.mandatory) {
+      // The subject bounds A, C and L (at most once) but asks for none of
+      // them, nor for an object; only the camera is needed to make an image.
+      if (camera_line_ == 0) return fail_whole("no camera: the scene needs one 'C X,Y,Z NX,NY,NZ FOV' line");
+      return ReadStatus::kOk;
+    }
     if (ambient_line_ == 0) return fail_whole("no ambient light: the scene needs one 'A RATIO R,G,B' line");
     if (camera_line_ == 0) return fail_whole("no camera: the scene needs one 'C X,Y,Z NX,NY,NZ FOV' line");
     if (builder_.light_count() == 0)
@@ -116,6 +140,7 @@ class Reader {
     int fields;    // required
     int optional;  // may follow
     const char* usage;
+    bool bonus;    // refused by ReaderOptions::mandatory
   };
   static constexpr int kMaxNumberBytes = 64;  // longer tokens are refused as numbers
 
@@ -352,15 +377,15 @@ class Reader {
 
   // ------------------------------------------------------------- elements
   static constexpr Element kElements[] = {
-      {"A", "ambient light", 2, 0, "A RATIO R,G,B"},
-      {"C", "camera", 3, 0, "C X,Y,Z NX,NY,NZ FOV"},
-      {"L", "light", 3, 0, "L X,Y,Z BRIGHTNESS R,G,B"},
-      {"sp", "sphere", 3, 0, "sp X,Y,Z DIAMETER R,G,B"},
-      {"pl", "plane", 3, 0, "pl X,Y,Z NX,NY,NZ R,G,B"},
-      {"cy", "cylinder", 5, 0, "cy X,Y,Z NX,NY,NZ DIAMETER HEIGHT R,G,B"},
-      {"co", "cone", 5, 0, "co X,Y,Z NX,NY,NZ ANGLE HEIGHT R,G,B"},
-      {"plc", "checkered plane", 3, 0, "plc X,Y,Z NX,NY,NZ R,G,B"},
-      {"spt", "textured sphere", 4, 1, "spt X,Y,Z DIAMETER R,G,B TEXTURE.ppm [BUMP.ppm]"},
+      {"A", "ambient light", 2, 0, "A RATIO R,G,B", false},
+      {"C", "camera", 3, 0, "C X,Y,Z NX,NY,NZ FOV", false},
+      {"L", "light", 3, 0, "L X,Y,Z BRIGHTNESS R,G,B", false},
+      {"sp", "sphere", 3, 0, "sp X,Y,Z DIAMETER R,G,B", false},
+      {"pl", "plane", 3, 0, "pl X,Y,Z NX,NY,NZ R,G,B", false},
+      {"cy", "cylinder", 5, 0, "cy X,Y,Z NX,NY,NZ DIAMETER HEIGHT R,G,B", false},
+      {"co", "cone", 5, 0, "co X,Y,Z NX,NY,NZ ANGLE HEIGHT R,G,B", true},
+      {"plc", "checkered plane", 3, 0, "plc X,Y,Z NX,NY,NZ R,G,B", true},
+      {"spt", "textured sphere", 4, 1, "spt X,Y,Z DIAMETER R,G,B TEXTURE.ppm [BUMP.ppm]", true},
   };
 
   bool element() {
@@ -370,17 +395,28 @@ class Reader {
     if (element_ == nullptr) {
       at(0).text("unknown element ");
       quote_word(0);
-      error_->text(" (expected A, C, L, sp, pl, cy, co, plc or spt)");
+      error_->text(options_.mandatory ? " (expected A, C, L, sp, pl or cy)"
+                                      : " (expected A, C, L, sp, pl, cy, co, plc or spt)");
       return false;
     }
+    if (options_.mandatory && element_->bonus) {
+      at(0).text(element_->name).text(" '").text(element_->id).text("' is a bonus element: the mandatory part has ")
+          .text("A, C, L, sp, pl and cy only");
+      return false;
+    }
+    // Mandatory L: the colour is "unused in mandatory part", so it may be left out.
+    const bool bare_light = options_.mandatory && element_->id[0] == 'L';
+    const int fields = bare_light ? element_->fields - 1 : element_->fields;
+    const int optional = bare_light ? element_->optional + 1 : element_->optional;
+    const char* usage = bare_light ? "L X,Y,Z BRIGHTNESS [R,G,B]" : element_->usage;
     const int got = count_ - 1 + too_many_;
-    if (got < element_->fields || got > element_->fields + element_->optional) {
-      const bool extra = got > element_->fields;
-      at(extra ? element_->fields + element_->optional + 1 : 0)
+    if (got < fields || got > fields + optional) {
+      const bool extra = got > fields;
+      at(extra ? fields + optional + 1 : 0)
           .text(element_->name)
           .text(extra ? " has too many fields: " : " has too few fields: ")
           .text("expected '")
-          .text(element_->usage)
+          .text(usage)
           .text("', got ")
           .number(got)
           .text(got == 1 ? " field" : " fields");
@@ -431,11 +467,14 @@ class Reader {
   }
 
   bool light() {
-    Vec3<R> pos, c;
+    if (options_.mandatory && !once(light_line_)) return false;
+    Vec3<R> pos, c{R(1), R(1), R(1)};
     R brightness;
     if (!triple(1, "position", pos, false, false) || !scalar_in(2, "brightness ratio", 0, 1, brightness) ||
-        !colour(3, c))
+        (count_ > 3 && !colour(3, c)))
       return false;
+    // Mandatory: the colour is checked when given, and the light is white.
+    if (options_.mandatory) c = Vec3<R>{R(1), R(1), R(1)};
     model::Light<R> l{};
     l.kind = model::LightKind::kPoint;
     l.vector = pos;
@@ -494,7 +533,7 @@ class Reader {
            memory(builder_.add_plane(n, -dot(n, point)));
   }
 
-  // cy: base centre, axis, diameter, height. co: base centre, axis toward
+  // cy: centre (or base centre), axis, diameter, height. co: base centre, axis toward
   // the tip, half-angle in degrees, height (SPEC.md 2.1). The cone's axis
   // is not range-checked: the shared test_bonus.rt uses 0,1.1,0.
   bool solid(bool cone) {
@@ -515,8 +554,9 @@ class Reader {
     }
     if (!scalar_positive(4, "height", height) || !colour(5, c)) return false;
     model::Solid<R> s{};
-    s.base = base;
     s.axis = unit(axis);
+    s.base = base;
+    if (!cone && options_.cylinder_point == CylinderPoint::kCentre) s.base = base - s.axis * (height / R(2));
     s.height = height;
     if (cone) {
       constexpr R kDegree = static_cast<R>(3.14159265358979323846 / 180.0);
@@ -534,6 +574,7 @@ class Reader {
   ByteSource in_;
   model::SceneBuilder<R>& builder_;
   TextureResolver textures_;
+  ReaderOptions options_;
   model::Scene<R>* scene_ = nullptr;
   View<R>* view_ = nullptr;
   Diagnostic* error_ = nullptr;
@@ -543,6 +584,7 @@ class Reader {
   int line_ = 0;
   int ambient_line_ = 0;
   int camera_line_ = 0;
+  int light_line_ = 0;  // with ReaderOptions::mandatory
   int too_many_ = 0;
   char buf_[kMaxLineBytes];
   int length_ = 0;

@@ -125,6 +125,7 @@ struct Scene {
   R exposure_value = R(0);
   Finish finish = Finish::kCs418;
   Vec3<R> ambient{};  // kMinirt: ratio * colour / 255
+  bool specular = true;  // kMinirt: false for the subject's mandatory part (ambient and Lambert only)
   Camera<R> camera;
 
   const Material<R>* materials = nullptr;

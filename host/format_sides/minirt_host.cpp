@@ -29,7 +29,11 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOp
     scene.textures =
         std::make_unique<TextureFiles>(in.base_dir, &load_minirt_texture, minirt::kMaxTextures, "texture files");
     MemorySource mem{reinterpret_cast<const uint8_t*>(in.text.data()), in.text.size()};
-    minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, scene.textures.get()});
+    minirt::ReaderOptions reader_options;
+    reader_options.mandatory = options.mandatory;
+    if (options.cylinder_base) reader_options.cylinder_point = minirt::CylinderPoint::kBase;
+    minirt::Reader<M> reader(mem.source(), builder, minirt::TextureResolver{&TextureFiles::resolve, scene.textures.get()},
+                             reader_options);
     minirt::View<R> view;
     Diagnostic d;
     const minirt::ReadStatus st = reader.read(scene.model, view, d);

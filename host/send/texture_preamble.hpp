@@ -19,7 +19,7 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
                             std::uint64_t board_bytes, std::string& out, std::string& error);
 
 // The same for a miniRT scene: the PPM files its `spt` lines name, found
-// where minrt finds them (host/minirt_render.hpp).
+// where minrt finds them (host/texture_files.hpp).
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,
                                    const std::string& base_dir,
                                    std::uint64_t board_bytes, std::string& out, std::string& error);

@@ -92,6 +92,7 @@ Vec3<typename M::real> PhongShader<M, F>::shade_phong(const Ray<R>& ray, const H
     // on a plane (room_test2.rt) must not be hidden by that plane.
     if (occluded(Ray<R>{origin, l}, R(0), dist - bias, i)) continue;
     out += color * light.color * lambert;
+    if (!s_.specular) continue;
     const Vec3<R> reflected = n * (R(2) * lambert) - l;
     R spec = dot(reflected, view);
     if (spec > R(0)) {

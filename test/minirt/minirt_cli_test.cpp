@@ -200,3 +200,36 @@ TEST_CASE("minrt miniRT: command-line mistakes give Error too (SPEC.md 2.7)", "[
   CHECK(run_in(dir, "good.rt --size 64x48 -o out.ppm").status == 0);
   CHECK(minrt::test::read_file(dir + "/out.ppm").rfind("P6\n64 48\n255\n", 0) == 0);
 }
+
+TEST_CASE("minrt miniRT --mandatory: the mandatory-only shared scenes render, the bonus ones give Error", "[minirt][errors][mandatory]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  // SPEC.md 2.4's split of the 18 valid scenes.
+  const std::set<std::string> mandatory_only = {"cylinders.rt", "mandatory_basic.rt", "mandatory_shadows.rt",
+                                                "room_test1.rt", "room_test2.rt", "room_test3.rt",
+                                                "spheres.rt", "test.rt"};
+  const std::string out = temp_dir();
+  for (const std::string& file : rt_files(shared_minirt() + "/valid")) {
+    INFO(file);
+    const Run run = run_in(shared_minirt() + "/valid", "--mandatory --size 64x48 " + file + " -o '" + out + "/m.ppm'");
+    if (mandatory_only.count(file) != 0) {
+      CHECK(run.status == 0);
+      CHECK(run.err.empty());
+    } else {
+      // The first bonus element or second light, located.
+      const bool bonus = run.err.find("is a bonus element") != std::string::npos;
+      const bool second = run.err.find("second light 'L'") != std::string::npos;
+      CHECK((bonus || second));
+      check_error(run, file + ":");
+      CHECK_FALSE(exists(out + "/m.ppm"));
+    }
+    std::remove((out + "/m.ppm").c_str());
+  }
+  // The options belong to miniRT: elsewhere they are a usage error.
+  const Run sld = minrt::test::run_in_dir(out, std::string(MINRT_BIN) + " --mandatory '" +
+                                                   minrt::test::shared_dir() + "/scenes/contest.sld' --size 8x8");
+  CHECK(sld.status == 2);
+  CHECK(sld.err.find("--mandatory and --cylinder-base apply to miniRT scenes only") != std::string::npos);
+}

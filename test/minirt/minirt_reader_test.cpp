@@ -1,7 +1,8 @@
 // The miniRT reader on its own: boundary values the subject allows, the
 // lexical freedoms of the shared scenes (CRLF, tabs, trailing blanks, no
-// final newline, any order), normalised orientations, the base-centre
-// cylinder, and the exactness of the range checks in float and double.
+// final newline, any order), normalised orientations, the cylinder's
+// centre, the exactness of the range checks in float and double, and what
+// --mandatory accepts and refuses.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -31,12 +32,13 @@ int32_t no_texture(void*, const char*, minrt::Diagnostic& d) {
 }
 
 template <class M = minrt::LibmDouble>
-std::unique_ptr<Parsed<M>> parse(const std::string& text) {
+std::unique_ptr<Parsed<M>> parse(const std::string& text, minrt::minirt::ReaderOptions options = {}) {
   auto p = std::make_unique<Parsed<M>>();
   minrt::Arena arena(p->storage.data(), p->storage.size());
   minrt::model::SceneBuilder<typename M::real> builder(arena);
   minrt::MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
-  minrt::minirt::Reader<M> reader(mem.source(), builder, minrt::minirt::TextureResolver{&no_texture, nullptr});
+  minrt::minirt::Reader<M> reader(mem.source(), builder, minrt::minirt::TextureResolver{&no_texture, nullptr},
+                                   options);
   minrt::Diagnostic d;
   p->ok = reader.read(p->scene, p->view, d) == minrt::minirt::ReadStatus::kOk && builder.finish(p->scene);
   if (!p->ok) p->error = (d.has_pos ? std::to_string(d.pos.line) + ": " : std::string()) + d.message;
@@ -96,8 +98,8 @@ TEST_CASE("miniRT reader: values land in the model as SPEC.md 2.3 says", "[minir
   REQUIRE(s.sphere_count == 1);
   CHECK(s.spheres[0].radius == 2.0);  // diameter 4
   REQUIRE(s.solid_count == 2);
-  // The cylinder's point is its base centre: it spans y = 0 .. 4.
-  CHECK(s.solids[0].base.y == 0.0);
+  // The cylinder's point is its centre: it spans y = -2 .. 2.
+  CHECK(s.solids[0].base.y == -2.0);
   CHECK(s.solids[0].axis.y == 1.0);
   CHECK(s.solids[0].height == 4.0);
   CHECK(s.solids[0].radius == 1.0);
@@ -138,4 +140,87 @@ TEST_CASE("miniRT reader: the first error in file order wins, then the missing e
   // Messages quote what was found, escaping bytes a terminal would show badly.
   const auto bytes = parse(kA + kC + kL + "sp 0,0,0 2\x1b[31m 255,0,0\n");
   CHECK(bytes->error == "4: sphere diameter \"2\\x1b[31m\" is not a number");
+}
+
+TEST_CASE("miniRT reader: --cylinder-base makes the point the base centre", "[minirt][reader]") {
+  minrt::minirt::ReaderOptions base;
+  base.cylinder_point = minrt::minirt::CylinderPoint::kBase;
+  const std::string text = kA + kC + kL + "cy 1,2,3 0,0,-1 2 4 255,255,255\nco 1,2,3 0,1,0 45 3 1,1,1\n";
+  const auto centre = parse(text);
+  const auto based = parse(text, base);
+  REQUIRE(centre->ok);
+  REQUIRE(based->ok);
+  CHECK(centre->scene.solids[0].base.z == 5.0);  // 3 + 4/2 against the axis 0,0,-1
+  CHECK(based->scene.solids[0].base.z == 3.0);
+  // The cone's point is its base centre either way (SPEC.md 2.1).
+  CHECK(centre->scene.solids[1].base.y == 2.0);
+  CHECK(based->scene.solids[1].base.y == 2.0);
+}
+
+namespace {
+
+minrt::minirt::ReaderOptions mandatory() {
+  minrt::minirt::ReaderOptions o;
+  o.mandatory = true;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("miniRT reader --mandatory: what the subject allows is accepted", "[minirt][reader][mandatory]") {
+  struct Case {
+    const char* why;
+    std::string text;
+  };
+  for (const Case& c : {
+           Case{"A, C, L, sp, pl, cy once each", kA + kC + kL + kSp + "pl 0,0,0 0,1,0 1,2,3\ncy 0,0,0 0,1,0 1 2 3,4,5\n"},
+           Case{"L without its colour (unused in the mandatory part)", kA + kC + "L 0,5,5 0.8\n" + kSp},
+           Case{"no light: A, C and L are bounded to one, not required", kA + kC + kSp},
+           Case{"no ambient light", kC + kL + kSp},
+           Case{"no object: the subject asks for none", kA + kC + kL},
+           Case{"only a camera", kC},
+       }) {
+    INFO(c.why);
+    const auto p = parse(c.text, mandatory());
+    INFO(p->error);
+    CHECK(p->ok);
+  }
+  // The light is white at its brightness whatever colour is written, and
+  // there is no specular term.
+  const auto p = parse(kA + kC + "L 0,5,5 0.5 255,0,0\n" + kSp, mandatory());
+  REQUIRE(p->ok);
+  CHECK(p->scene.lights[0].color.y == 0.5);
+  CHECK(p->scene.lights[0].color.z == 0.5);
+  CHECK_FALSE(p->scene.specular);
+  CHECK(parse(kA + kC + kL + kSp)->scene.specular);
+}
+
+TEST_CASE("miniRT reader --mandatory: what the subject forbids is refused, located", "[minirt][reader][mandatory]") {
+  struct Case {
+    std::string text, error;
+  };
+  const std::string head = kA + kC + kL;
+  for (const Case& c : {
+           Case{head + "co 0,0,0 0,1,0 30 2 1,1,1\n",
+                "4: cone 'co' is a bonus element: the mandatory part has A, C, L, sp, pl and cy only"},
+           Case{head + "plc 0,0,0 0,1,0 1,1,1\n",
+                "4: checkered plane 'plc' is a bonus element: the mandatory part has A, C, L, sp, pl and cy only"},
+           Case{head + "spt 0,0,0 1 1,1,1 earth.ppm\n",
+                "4: textured sphere 'spt' is a bonus element: the mandatory part has A, C, L, sp, pl and cy only"},
+           Case{head + "L 1,1,1 0.5 255,255,255\n",
+                "4: second light 'L': the first is on line 3 and there may be only one"},
+           Case{head + "A 0.1 1,1,1\n", "4: second ambient light 'A': the first is on line 1 and there may be only one"},
+           Case{kA + kC + "L 0,5,5 0.8 300,0,0\n", "3: light colour \"300,0,0\": red \"300\" is outside [0,255]"},
+           Case{kA + kC + "L 0,5,5\n", "3: light has too few fields: expected 'L X,Y,Z BRIGHTNESS [R,G,B]', got 1 field"},
+           Case{kA + kC + "L 0,5,5 0.8 1,1,1 x\n",
+                "3: light has too many fields: expected 'L X,Y,Z BRIGHTNESS [R,G,B]', got 4 fields"},
+           Case{kA + kL + kSp, "no camera: the scene needs one 'C X,Y,Z NX,NY,NZ FOV' line"},
+           Case{"", "the scene is empty: it needs at least a camera 'C X,Y,Z NX,NY,NZ FOV'"},
+           Case{head + "tr 0,0,0 1,1,1 2,2,2 1,1,1\n", "4: unknown element \"tr\" (expected A, C, L, sp, pl or cy)"},
+       }) {
+    INFO(c.text);
+    const auto p = parse(c.text, mandatory());
+    CHECK_FALSE(p->ok);
+    CHECK(p->error == c.error);
+  }
 }
