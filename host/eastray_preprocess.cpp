@@ -1,5 +1,6 @@
 #include "eastray_preprocess.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cstdlib>
 #include <map>
@@ -11,10 +12,18 @@ namespace minrt::host {
 
 namespace {
 
+// The work budget (see eastray_preprocess.hpp): what the preprocessor may
+// copy, in bytes, is kBudgetFactor times the scene file, at least
+// kBudgetFloor and at most kMaxExpandedBytes. Includes and macros that
+// name each other twice double at every level; the budget stops them after
+// a few milliseconds and megabytes instead of hours and gigabytes.
 constexpr int kMaxIncludeDepth = 64;
 constexpr int kMaxMacroDepth = 32;  // a body naming a macro is expanded again, this deep at most
-constexpr std::size_t kMaxExpandedBytes = std::size_t{1} << 29;
+constexpr std::size_t kBudgetFactor = 64;
+constexpr std::size_t kBudgetFloor = std::size_t{1} << 20;
+constexpr std::size_t kMaxExpandedBytes = std::size_t{64} << 20;
 constexpr std::size_t kExpansionCost = 64;  // bytes one macro expansion counts for beyond its body
+constexpr std::size_t kIncludeCost = 1024;  // bytes one #include counts for beyond its file (open, read)
 
 bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
@@ -41,7 +50,10 @@ std::string canonical(const std::string& path) {
 
 class Expander {
  public:
-  explicit Expander(ExpandedEastray& out) : out_(out) {}
+  Expander(ExpandedEastray& out, std::size_t scene_bytes) : out_(out) {
+    budget_ = scene_bytes > kMaxExpandedBytes / kBudgetFactor ? kMaxExpandedBytes : scene_bytes * kBudgetFactor;
+    if (budget_ < kBudgetFloor) budget_ = kBudgetFloor;
+  }
 
   bool file(const std::string& path, const std::string& shown, const std::string& text, int depth) {
     const int index = static_cast<int>(out_.files.size());
@@ -130,10 +142,8 @@ class Expander {
     while (i < one.size() && blank(one[i])) ++i;
     if (i >= one.size() || one[i] != '#') {
       std::string expanded;
-      produced_ = out_.text.size();
       if (!expand(one, expanded, 0, shown, line)) return false;
-      if (out_.text.size() + expanded.size() > kMaxExpandedBytes)
-        return fail(shown, line, 0, "the expanded scene is larger than " + std::to_string(kMaxExpandedBytes) + " bytes");
+      if (!spend(expanded.size() + 1, shown, line, 0)) return false;
       emit(expanded, file, line);
       return true;
     }
@@ -200,9 +210,12 @@ class Expander {
     const std::string canon = canonical(found);
     for (const std::string& open : stack_)
       if (open == canon) return fail(shown, line, name_at, "#include cycle: '" + name + "' is already being read");
+    // Charged before the read, so a file over the rest of the budget is not read.
+    if (!spend(kIncludeCost, shown, line, name_at)) return false;
     std::string text, why;
-    if (!read_whole_file(found, text, why, kMaxSceneBytes))
+    if (!read_whole_file(found, text, why, std::min(kMaxSceneBytes, budget_ - spent_ + 1)))
       return fail(shown, line, name_at, "cannot read include file '" + found + "': " + why);
+    if (!spend(text.size(), shown, line, name_at)) return false;
     emit("", file, line);  // the directive's own line stays, blank
     return this->file(found, found, text, depth + 1);
   }
@@ -227,12 +240,10 @@ class Expander {
           expanding_.pop_back();
           if (!ok) return false;
           // Bodies naming a macro twice double at every level: count what
-          // every level copies, and each expansion as 64 bytes more (its
-          // call), so 2^30 copies of a 1-byte body stop within a second
-          // instead of running out of time or memory.
-          produced_ += body.size() + kExpansionCost;
-          if (produced_ > kMaxExpandedBytes)
-            return fail(shown, line, 0, "macro expansion larger than " + std::to_string(kMaxExpandedBytes) + " bytes");
+          // every level copies, and each expansion as kExpansionCost bytes
+          // more (its call), so 2^30 copies of a 1-byte body stop at the
+          // budget instead of running out of time or memory.
+          if (!spend(body.size() + kExpansionCost, shown, line, i)) return false;
           out += body;
         } else {
           out += name;
@@ -247,11 +258,22 @@ class Expander {
     return true;
   }
 
+  // Charges `bytes` of work; false with a located error once over the budget.
+  bool spend(std::size_t bytes, const std::string& shown, int line, std::size_t col) {
+    spent_ += bytes;
+    if (spent_ <= budget_) return true;
+    return fail(shown, line, col,
+                "the scene expands past " + std::to_string(budget_) +
+                    " bytes (#include and #define copies count; the limit is " + std::to_string(kBudgetFactor) +
+                    " times the scene file, at least " + std::to_string(kBudgetFloor) + ")");
+  }
+
   ExpandedEastray& out_;
   std::map<std::string, std::string> macros_;
   std::vector<std::string> stack_;
   std::vector<std::string> expanding_;
-  std::size_t produced_ = 0;  // bytes of the scene so far plus every copy made expanding this line
+  std::size_t budget_ = kBudgetFloor;
+  std::size_t spent_ = 0;  // every byte emitted, included or copied by an expansion so far
   std::string error_;
 };
 
@@ -274,7 +296,7 @@ std::string ExpandedEastray::at(int line, int col) const {
 bool preprocess_eastray(const std::string& path, const std::string& shown, const std::string& text,
                         ExpandedEastray& out, std::string& error) {
   out = ExpandedEastray{};
-  Expander x(out);
+  Expander x(out, text.size());
   if (!x.file(path == "-" ? std::string() : path, shown, text, 0)) {
     error = x.error();
     return false;

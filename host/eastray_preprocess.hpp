@@ -3,6 +3,13 @@
 // including file's folder, then the current folder), `#include <file>`
 // (the folder in the EASTRAY environment variable), `#define NAME body`
 // (token substitution from that line on). The board gets the expanded text.
+//
+// Bounded: includes nest at most 64 deep, macro bodies 32; and all the work
+// (every byte emitted, every included file plus 1 KiB for opening it,
+// every macro body copied plus 64 bytes for the call) is charged against a
+// budget of 64 times the scene file's size, at least 1 MiB and at most
+// 64 MiB. Past it, or past a depth, the scene is refused with a located
+// error, so self-doubling includes or macros end in milliseconds.
 #pragma once
 
 #include <string>

@@ -4,7 +4,10 @@
 // when the caller asks for it, see Durability), and only onto a regular
 // file or a new name. A FIFO, device or symbolic link is
 // refused unless the caller asks to write through it; "-" is standard
-// output. SIGINT, SIGTERM and SIGHUP remove the temporary file.
+// output. The temporary file has no name until it is complete (O_TMPFILE,
+// linked at commit), so no signal, SIGKILL included, leaves it behind; on a
+// file system without O_TMPFILE it is OUT.partial.XXXXXX (cut to fit
+// NAME_MAX), removed by a handler on every catchable fatal signal.
 #pragma once
 
 #include <cstdio>
@@ -47,8 +50,11 @@ class AtomicOutput {
   void discard();
 
  private:
+  bool link_unnamed(int& err);
+
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
+  bool unnamed_ = false;  // O_TMPFILE: linked to temp_ only at commit
   bool direct_ = false;  // writing to the target itself (stdout or write-through)
   Durability durability_;
 };

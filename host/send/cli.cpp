@@ -132,9 +132,10 @@ void print_help() {
       "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
       "                           maximum channel error, PSNR\n"
       "  --expect-sha256 HEX      refuse the image unless its bytes have this SHA-256\n"
-      "  --check                  raw: require the board's CRC-32 trailer (by default it\n"
-      "                           is asked for and checked when the board announces it)\n"
-      "  --no-check               raw: do not ask for the trailer (plain course bytes)\n"
+      "  --check                  raw, course: require the board's CRC-32 trailer (by\n"
+      "                           default it is asked for and checked when announced)\n"
+      "  --no-check               raw, course: send the scene without its CRC-32 and do\n"
+      "                           not ask for the reply's (the plain protocol bytes)\n"
       "  --first-byte-timeout S   wait for the reply at most S seconds (default 120)\n"
       "  --idle-timeout S         longest silence within the reply (default 30)\n"
       "  --progress               draw the progress line even when stderr is no terminal\n"
@@ -317,8 +318,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
     error = "--program only applies to --protocol course";
     return ParseResult::kError;
   }
-  if (o.protocol != Protocol::kRaw && o.check == RawCheck::kRequire) {
-    error = "--check applies to --protocol raw (framed checks every frame; course has no checksum)";
+  if (o.protocol == Protocol::kFramed && o.check == RawCheck::kRequire) {
+    error = "--check applies to --protocol raw and course (framed checks every frame)";
     return ParseResult::kError;
   }
   if (o.output.empty()) o.output = default_output(o.scene);

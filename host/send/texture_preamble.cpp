@@ -14,12 +14,13 @@ namespace {
 
 using minrt::host::RgbTexture;
 using minrt::host::TextureLoader;
+using minrt::host::TextureProbe;
 
 // `where`: for each name, the "SCENE:LINE:COL: error: " its errors start
 // with (empty: not located).
 bool assemble(const std::vector<std::string>& names, const std::vector<std::string>& where,
-              const std::string& base_dir, TextureLoader load, std::uint64_t board_bytes, std::string& out,
-              std::string& error) {
+              const std::string& base_dir, TextureProbe probe, TextureLoader load, std::uint64_t board_bytes,
+              std::string& out, std::string& error) {
   out.clear();
   if (names.empty()) return true;
   if (names.size() > MINRT_MAX_TEXTURES) {
@@ -33,6 +34,25 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
     const std::string at = k < where.size() ? where[k] : std::string();
     if (name.size() > 255) {
       error = at + "texture name longer than 255 bytes";
+      return false;
+    }
+    // The header's size first: a texture over the side limit or the
+    // board's memory is refused before it is decoded.
+    int width = 0, height = 0;
+    if (!probe(base_dir, name, width, height, error)) {
+      error = at + error;
+      return false;
+    }
+    if (width > MINRT_MAX_TEXTURE_SIDE || height > MINRT_MAX_TEXTURE_SIDE) {
+      error = at + "texture " + name + " is " + std::to_string(width) + "x" + std::to_string(height) +
+              ", larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
+      return false;
+    }
+    if (texel_bytes + static_cast<std::uint64_t>(width) * height * 3 > board_bytes) {
+      error = at + "texture " + name + " (" + std::to_string(width) + "x" + std::to_string(height) + ") needs " +
+              std::to_string(texel_bytes + static_cast<std::uint64_t>(width) * height * 3) +
+              " bytes of the board's memory with the textures before it and at most " + std::to_string(board_bytes) +
+              " are free (firmware-sim: --sim-ram-size to give the simulated board more)";
       return false;
     }
     RgbTexture img;
@@ -82,7 +102,7 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
     const std::size_t col = line.find(name, line.find("texture") + 7) + 1;
     where.push_back(scene_name + ":" + std::to_string(number) + ":" + std::to_string(col) + ": error: ");
   }
-  return assemble(names, where, base_dir, &minrt::host::load_png_texture, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::probe_png_texture, &minrt::host::load_png_texture, board_bytes, out, error);
 }
 
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,
@@ -105,7 +125,7 @@ bool build_minirt_texture_preamble(const std::string& scene, const std::string& 
                       (i == 4 ? "texture" : "bump map") + " \"" + w[i] + "\": ");
     }
   }
-  return assemble(names, where, base_dir, &minrt::host::load_minirt_texture, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::probe_minirt_texture, &minrt::host::load_minirt_texture, board_bytes, out, error);
 }
 
 }  // namespace minrt::send
