@@ -210,7 +210,9 @@ int run_eastray_cli(EastrayCli& cli) {
   const std::string out_path =
       eastray_output_name(cli.output_path != nullptr ? cli.output_path : "", statement, cli.scene_path, tiff, warning);
   if (!warning.empty() && !cli.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
-  if (!check_output_target(out_path, cli.write_through, why)) {
+  const bool named_by_scene = cli.output_path == nullptr && !statement.empty();
+  if ((named_by_scene && !cli.allow_any_output && !scene_named_output_allowed(cli.scene_path, out_path, why)) ||
+      !check_output_target(out_path, cli.write_through, why)) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
   }

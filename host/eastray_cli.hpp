@@ -22,6 +22,7 @@ struct EastrayCli {
   bool save = true;        // -n turns it off
   bool quiet = false;      // -q: no warnings
   bool write_through = false;
+  bool allow_any_output = false;  // the output statement may leave the scene's and working folder
   minrt::host::Durability durability = minrt::host::Durability::kRenameOnly;  // kSynced with --sync
   bool show = false;       // -s: a window that shows the rows as they render
   Variant variant;

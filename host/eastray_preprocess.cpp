@@ -41,16 +41,21 @@ std::size_t text_length(const std::string& text) {
   return ctrl_z == std::string::npos ? text.size() : ctrl_z;
 }
 
-bool exists(const std::string& path) { return ::access(path.c_str(), R_OK) == 0; }
-
-std::string canonical(const std::string& path) {
-  char buf[PATH_MAX];
-  return ::realpath(path.c_str(), buf) != nullptr ? std::string(buf) : path;
-}
+class DiskFiles : public EastrayFiles {
+ public:
+  bool readable(const std::string& path) const override { return ::access(path.c_str(), R_OK) == 0; }
+  std::string canonical(const std::string& path) const override {
+    char buf[PATH_MAX];
+    return ::realpath(path.c_str(), buf) != nullptr ? std::string(buf) : path;
+  }
+  bool read(const std::string& path, std::string& out, std::string& why, std::size_t max_bytes) const override {
+    return read_whole_file(path, out, why, max_bytes);
+  }
+};
 
 class Expander {
  public:
-  Expander(ExpandedEastray& out, std::size_t scene_bytes) : out_(out) {
+  Expander(ExpandedEastray& out, std::size_t scene_bytes, const EastrayFiles& files) : out_(out), files_(files) {
     budget_ = scene_bytes > kMaxExpandedBytes / kBudgetFactor ? kMaxExpandedBytes : scene_bytes * kBudgetFactor;
     if (budget_ < kBudgetFloor) budget_ = kBudgetFloor;
   }
@@ -58,7 +63,7 @@ class Expander {
   bool file(const std::string& path, const std::string& shown, const std::string& text, int depth) {
     const int index = static_cast<int>(out_.files.size());
     out_.files.push_back(shown);
-    const std::string canon = canonical(path);
+    const std::string canon = files_.canonical(path);
     for (const std::string& open : stack_)
       if (open == canon) return false;  // caller reports the cycle
     stack_.push_back(canon);
@@ -190,8 +195,8 @@ class Expander {
     std::string found;
     if (close == '"') {
       const std::string beside = name[0] == '/' ? name : folder_of(path) + name;
-      if (exists(beside)) found = beside;
-      else if (exists(name)) found = name;
+      if (files_.readable(beside)) found = beside;
+      else if (files_.readable(name)) found = name;
       else return fail(shown, line, name_at, "cannot find include file '" + name + "' (looked beside " + shown +
                                                  " and in the current folder)");
     } else {
@@ -203,17 +208,17 @@ class Expander {
         if (c == '\\') c = '/';
       if (dir.back() != '/') dir += '/';
       found = dir + name;
-      if (!exists(found)) return fail(shown, line, name_at, "cannot find include file '" + found + "' (from EASTRAY)");
+      if (!files_.readable(found)) return fail(shown, line, name_at, "cannot find include file '" + found + "' (from EASTRAY)");
     }
     if (depth + 1 > kMaxIncludeDepth)
       return fail(shown, line, name_at, "#include nested deeper than " + std::to_string(kMaxIncludeDepth));
-    const std::string canon = canonical(found);
+    const std::string canon = files_.canonical(found);
     for (const std::string& open : stack_)
       if (open == canon) return fail(shown, line, name_at, "#include cycle: '" + name + "' is already being read");
     // Charged before the read, so a file over the rest of the budget is not read.
     if (!spend(kIncludeCost, shown, line, name_at)) return false;
     std::string text, why;
-    if (!read_whole_file(found, text, why, std::min(kMaxSceneBytes, budget_ - spent_ + 1)))
+    if (!files_.read(found, text, why, std::min(kMaxSceneBytes, budget_ - spent_ + 1)))
       return fail(shown, line, name_at, "cannot read include file '" + found + "': " + why);
     if (!spend(text.size(), shown, line, name_at)) return false;
     emit("", file, line);  // the directive's own line stays, blank
@@ -269,6 +274,7 @@ class Expander {
   }
 
   ExpandedEastray& out_;
+  const EastrayFiles& files_;
   std::map<std::string, std::string> macros_;
   std::vector<std::string> stack_;
   std::vector<std::string> expanding_;
@@ -293,10 +299,20 @@ std::string ExpandedEastray::at(int line, int col) const {
   return where(line) + ":" + std::to_string(end_col);
 }
 
+const EastrayFiles& eastray_files() {
+  static const DiskFiles files;
+  return files;
+}
+
 bool preprocess_eastray(const std::string& path, const std::string& shown, const std::string& text,
                         ExpandedEastray& out, std::string& error) {
+  return preprocess_eastray(path, shown, text, out, error, eastray_files());
+}
+
+bool preprocess_eastray(const std::string& path, const std::string& shown, const std::string& text,
+                        ExpandedEastray& out, std::string& error, const EastrayFiles& files) {
   out = ExpandedEastray{};
-  Expander x(out, text.size());
+  Expander x(out, text.size(), files);
   if (!x.file(path == "-" ? std::string() : path, shown, text, 0)) {
     error = x.error();
     return false;

@@ -27,8 +27,9 @@ int open_regular_file(const std::string& path, std::string& error) {
     return -1;
   }
   struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    error = ::fstat(fd, &st) != 0 ? std::strerror(errno) : kind_of(st.st_mode);
+  const bool stat_ok = ::fstat(fd, &st) == 0;
+  if (!stat_ok || !S_ISREG(st.st_mode)) {
+    error = stat_ok ? kind_of(st.st_mode) : std::strerror(errno);
     ::close(fd);
     return -1;
   }

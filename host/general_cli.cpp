@@ -69,7 +69,9 @@ int run_cs418_cli(GeneralCli& cli) {
   std::string out_path = cli.output_path != nullptr ? cli.output_path : cs418_output_name(cli.scene_text);
   if (!out_path.empty()) {
     std::string why;
-    if (!check_output_target(out_path, cli.write_through, why)) {
+    if ((cli.output_path == nullptr && !cli.allow_any_output &&
+         !scene_named_output_allowed(cli.scene_path, out_path, why)) ||
+        !check_output_target(out_path, cli.write_through, why)) {
       std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
       return kExitIoError;
     }

@@ -15,6 +15,7 @@ struct GeneralCli {
   std::string scene_text;      // already read when scene_path is "-"
   const char* output_path = nullptr;  // -o, else the name in the scene
   bool write_through = false;
+  bool allow_any_output = false;  // the png line's name may leave the scene's and working folder
   minrt::host::Durability durability = minrt::host::Durability::kRenameOnly;  // kSynced with --sync
   bool quiet = false;
   bool stats = false;  // print the path and features on standard error

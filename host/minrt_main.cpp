@@ -63,6 +63,8 @@ void print_help(std::FILE* f) {
       "  -o, --output FILE        write the image to FILE (complete or not at all; a\n"
       "                           FIFO, device or symbolic link is refused; - is stdout)\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
+      "  --allow-any-output       let a scene's own output name (CS418 png line, EASTRAY\n"
+      "                           output) leave the scene's and the working folder\n"
       "  --sync                   make the -o file durable (fsync) before exiting; without\n"
       "                           it the file is still replaced whole or not at all\n"
       "  -q, --quiet              no warnings on standard error\n"
@@ -122,6 +124,7 @@ int main(int argc, char** argv) {
   const char* output_path = nullptr;
   bool quiet = false;
   bool write_through = false;
+  bool allow_any_output = false;
   bool sync = false;
   minrt::host::SceneFormat scene_format = minrt::host::SceneFormat::kAuto;
   minrt::host::GeneralCli general;
@@ -168,6 +171,8 @@ int main(int argc, char** argv) {
       output_path = value("--output");
     } else if (arg == "--write-through") {
       write_through = true;
+    } else if (arg == "--allow-any-output") {
+      allow_any_output = true;
     } else if (arg == "--sync") {
       sync = true;
     } else if (arg == "--scene-format") {
@@ -289,6 +294,7 @@ int main(int argc, char** argv) {
     e.save = !no_save;
     e.quiet = quiet;
     e.write_through = write_through;
+    e.allow_any_output = allow_any_output;
     e.durability = durability;
     e.variant = variant;
     e.show = show;
@@ -299,6 +305,7 @@ int main(int argc, char** argv) {
     general.scene_text = std::move(stdin_text);
     general.output_path = output_path;
     general.write_through = write_through;
+    general.allow_any_output = allow_any_output;
     general.durability = durability;
     general.quiet = quiet;
     general.options.variant = variant;

@@ -6,12 +6,14 @@
 #include <unistd.h>
 
 #include <climits>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
 
 #include <cerrno>
 #include <cstring>
+#include <vector>
 
 namespace minrt::host {
 namespace {
@@ -92,6 +94,31 @@ bool sync_folder(const std::string& path, int& err) {
 }
 
 }  // namespace
+
+namespace {
+// The resolved folder, with a trailing slash; empty when it cannot be resolved.
+std::string resolved_folder(const std::string& folder) {
+  char buf[PATH_MAX];
+  if (::realpath(folder.c_str(), buf) == nullptr) return "";
+  std::string out = buf;
+  if (out.back() != '/') out += '/';
+  return out;
+}
+}  // namespace
+
+bool scene_named_output_allowed(const std::string& scene_path, const std::string& named, std::string& error) {
+  if (named.empty() || named == "-") return true;
+  const std::string target = resolved_folder(folder_of(named));
+  if (target.empty()) return true;  // a missing folder: check_output_target says so
+  std::vector<std::string> allowed{resolved_folder(".")};
+  if (scene_path != "-") allowed.push_back(resolved_folder(folder_of(scene_path)));
+  for (const std::string& a : allowed)
+    if (!a.empty() && target.compare(0, a.size(), a) == 0) return true;
+  error = "refusing to write " + named +
+          ", named by the scene: it is outside the scene's folder and the working folder (-o names the output; "
+          "--allow-any-output lets the scene choose)";
+  return false;
+}
 
 bool check_output_target(const std::string& path, bool write_through, std::string& error) {
   if (path == "-") return true;

@@ -20,6 +20,14 @@ namespace minrt::host {
 // target is a directory, or a special file without `write_through`.
 bool check_output_target(const std::string& path, bool write_through, std::string& error);
 
+// An output name a scene chose (CS418's png line, EASTRAY's output
+// statement) must stay inside the scene's folder or the working folder: a
+// scene from elsewhere must not replace ../x.png or /abs/path. False with
+// one line naming the path when it leaves both (the folder it would land
+// in is resolved, so `..` and symbolic links count). `scene_path` "-" (a
+// scene on standard input) has only the working folder.
+bool scene_named_output_allowed(const std::string& scene_path, const std::string& named, std::string& error);
+
 // Whether commit() makes the file durable: kSynced fsyncs the file before
 // the rename and its folder after it. With kRenameOnly the rename still
 // gives readers, other runs and a killed process only the old or the whole

@@ -34,6 +34,11 @@
 namespace minrt::send::scene_check {
 
 inline constexpr size_t kRawHeaderSize = 9;       // request byte, count, CRC
+// After a checked upload the host sends this many MINRT_END_OF_INPUT bytes,
+// which the board does not read when the count arrived whole: when the
+// line dropped up to this many bytes, they complete the count and the CRC
+// refuses the upload at once instead of after the idle timeout.
+inline constexpr size_t kPaddingBytes = 16;
 inline constexpr size_t kCourseHeaderSize = 12;   // marker, count, CRC
 inline constexpr uint32_t kCheckedSceneMarker = 0x7FF4434B;  // a NaN, like the text-scene marker
 static_assert(MINRT_PROGRAM_MAX_SIZE <= course::kProgramLengthMask, "a checked program's length has 24 bits");

@@ -127,6 +127,8 @@ void print_help() {
       "                           written only when complete and valid; a FIFO, device\n"
       "                           or symbolic link is refused\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
+      "  --allow-any-output       let a scene's own output name (CS418 png line, EASTRAY\n"
+      "                           output) leave the scene's and the working folder\n"
       "  --as-received            write a PNG as the board sent it (stored deflate); by\n"
       "                           default it is compressed, with the same pixels\n"
       "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
@@ -259,6 +261,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
     } else if (a == "-o" || a == "--output") {
       if (!value(o.output)) return ParseResult::kError;
       o.output_given = true;
+    } else if (a == "--allow-any-output") {
+      o.allow_any_output = true;
     } else if (a == "--write-through") {
       o.write_through = true;
     } else if (a == "--as-received") {
@@ -336,6 +340,7 @@ int run(const Options& options) {
 
   Options o = options;
   std::string scene, why;
+  bool scene_named_output = false;  // o.output comes from the scene (png line, output statement)
   if (!minrt::host::read_whole_file(o.scene, scene, why, minrt::host::kMaxSceneBytes))
     return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
   // A CS418 scene (the first word decides, as in minrt): the board answers
@@ -395,6 +400,7 @@ int run(const Options& options) {
     std::string warning;
     const std::string name = minrt::host::eastray_output_name("", statement, o.scene, tiff, warning);
     if (!o.output_given) {
+      scene_named_output = !statement.empty();
       o.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;  // the board sends PNG
       if (!warning.empty() || tiff)
         std::fprintf(stderr, "host-send: warning: the board sends PNG; writing %s\n", o.output.c_str());
@@ -418,7 +424,10 @@ int run(const Options& options) {
         located = o.scene + ":1:1: error: the first line must be 'png WIDTH HEIGHT FILE.png' (1..4096 each)";
       return fail(kExitFirmware, "scene rejected before sending: " + located);
     }
-    if (!o.output_given) o.output = name;
+    if (!o.output_given) {
+      o.output = name;
+      scene_named_output = true;
+    }
     // The textures it names go first, decoded here (the board has no PNG
     // decoder); they must fit in the board's RAM next to the firmware.
     const std::size_t slash = o.scene.rfind('/');
@@ -430,6 +439,8 @@ int run(const Options& options) {
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   }
   // The output is checked before the transfer, not after minutes of it.
+  if (scene_named_output && !o.allow_any_output && !minrt::host::scene_named_output_allowed(o.scene, o.output, why))
+    return fail(kExitUsage, why);
   if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
   // (0x04) as the end of the scene: a scene with that byte inside would be

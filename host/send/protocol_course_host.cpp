@@ -101,6 +101,9 @@ TransferResult run_course_words(Exchange& ex, const std::string& words, const st
     course::put_u32(sum, crc32(reinterpret_cast<const std::uint8_t*>(program.data()), program.size()), endian);
     out.append(reinterpret_cast<const char*>(sum), 4);
   }
+  // No padding after the program: the board answers 0xaa next and reads the
+  // scene after it, so stray bytes would shift the scene; a dropped program
+  // byte shows as the scene's first word taken for the program's CRC.
   if (!send_program(ex, out, r)) return r;
   CheckedReply<Receiver> reply(rx, ex.check);
   if (ex.live != nullptr)
@@ -114,7 +117,10 @@ TransferResult run_course_words(Exchange& ex, const std::string& words, const st
     scene_check::encode_course_header(static_cast<uint32_t>(words.size()),
                                       crc32(reinterpret_cast<const std::uint8_t*>(words.data()), words.size()),
                                       endian, header);
-    r = exchange(ex, std::string(reinterpret_cast<const char*>(header), sizeof header) + words, reply);
+    r = exchange(ex,
+                 std::string(reinterpret_cast<const char*>(header), sizeof header) + words +
+                     std::string(scene_check::kPaddingBytes, static_cast<char>(MINRT_END_OF_INPUT)),
+                 reply);
   } else {
     r = exchange(ex, words, reply);
   }

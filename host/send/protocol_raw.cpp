@@ -152,6 +152,10 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
 template TransferResult exchange<PpmReceiver>(Exchange&, const std::string&, PpmReceiver&);
 template TransferResult exchange<PngReceiver>(Exchange&, const std::string&, PngReceiver&);
 template TransferResult exchange<BmpReceiver>(Exchange&, const std::string&, BmpReceiver&);
+// The course protocol's checked reply (protocol_course_host.cpp).
+template TransferResult exchange<CheckedReply<PpmReceiver>>(Exchange&, const std::string&, CheckedReply<PpmReceiver>&);
+template TransferResult exchange<CheckedReply<PngReceiver>>(Exchange&, const std::string&, CheckedReply<PngReceiver>&);
+template TransferResult exchange<CheckedReply<BmpReceiver>>(Exchange&, const std::string&, CheckedReply<BmpReceiver>&);
 
 std::string checked_raw_upload(const std::string& scene) {
   const auto* p = reinterpret_cast<const std::uint8_t*>(scene.data());
@@ -159,6 +163,7 @@ std::string checked_raw_upload(const std::string& scene) {
   scene_check::encode_raw_header(static_cast<std::uint32_t>(scene.size()), crc32(p, scene.size()), header);
   std::string out(reinterpret_cast<const char*>(header), sizeof header);
   out += scene;
+  out.append(scene_check::kPaddingBytes, static_cast<char>(MINRT_END_OF_INPUT));
   return out;
 }
 
