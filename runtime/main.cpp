@@ -336,7 +336,7 @@ extern "C" int main(int argc, char** argv) {
     }
     first = after_textures.first_nonblank();
   }
-  minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
+  minrt::PeekSource& text = textures != nullptr && !upload.received() ? after_textures : scene;
   char word[16];
   text.first_word(word, sizeof word);
   const RawFormat* format = find_raw_format(first, word);

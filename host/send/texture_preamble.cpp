@@ -27,7 +27,8 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
     error = "more than " + std::to_string(MINRT_MAX_TEXTURES) + " textures";
     return false;
   }
-  std::string body;
+  // The headers' sizes first: a texture over the side limit, or textures
+  // over the board's memory, are refused before any is decoded.
   std::uint64_t texel_bytes = 0;
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& name = names[k];
@@ -36,8 +37,6 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       error = at + "texture name longer than 255 bytes";
       return false;
     }
-    // The header's size first: a texture over the side limit or the
-    // board's memory is refused before it is decoded.
     int width = 0, height = 0;
     if (!probe(base_dir, name, width, height, error)) {
       error = at + error;
@@ -48,13 +47,17 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
               ", larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
       return false;
     }
-    if (texel_bytes + static_cast<std::uint64_t>(width) * height * 3 > board_bytes) {
-      error = at + "texture " + name + " (" + std::to_string(width) + "x" + std::to_string(height) + ") needs " +
-              std::to_string(texel_bytes + static_cast<std::uint64_t>(width) * height * 3) +
-              " bytes of the board's memory with the textures before it and at most " + std::to_string(board_bytes) +
-              " are free (firmware-sim: --sim-ram-size to give the simulated board more)";
-      return false;
-    }
+    texel_bytes += static_cast<std::uint64_t>(width) * height * 3;
+  }
+  if (texel_bytes > board_bytes) {
+    error = "the textures need " + std::to_string(texel_bytes) + " bytes of the board's memory and at most " +
+            std::to_string(board_bytes) + " are free (firmware-sim: --sim-ram-size to give the simulated board more)";
+    return false;
+  }
+  std::string body;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string& name = names[k];
+    const std::string at = k < where.size() ? where[k] : std::string();
     RgbTexture img;
     if (!load(base_dir, name, img, error)) {
       error = at + error;
@@ -64,7 +67,6 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       error = at + "texture " + name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
       return false;
     }
-    texel_bytes += static_cast<std::uint64_t>(img.width) * img.height * 3;
     body.push_back(static_cast<char>(name.size()));
     body += name;
     for (int v : {img.width, img.height}) {
@@ -72,11 +74,6 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       body.push_back(static_cast<char>(v >> 8));
     }
     body.append(reinterpret_cast<const char*>(img.rgb.data()), img.rgb.size());
-  }
-  if (texel_bytes > board_bytes) {
-    error = "the textures need " + std::to_string(texel_bytes) + " bytes of the board's memory and at most " +
-            std::to_string(board_bytes) + " are free (firmware-sim: --sim-ram-size to give the simulated board more)";
-    return false;
   }
   out.push_back(static_cast<char>(MINRT_TEXTURES_MARKER));
   out.push_back(static_cast<char>(names.size()));

@@ -1,7 +1,8 @@
-// The fault matrix (issue 17): drop, duplicate, flip and stall, three seeds
-// each, on the line between host-send and the firmware in firmware-sim
-// (tools/fault_relay), for raw P3, raw P6 and framed, plus raw P6 without the
-// CRC-32 trailer. The rule for every run: status 0 only with the exact
+// The fault matrix: drop, duplicate, flip and stall, three seeds each, on
+// the line between host-send and the firmware in firmware-sim
+// (tools/fault_relay), for raw P3, raw P6, course P6 and framed, plus raw P6
+// without the CRC-32 trailer; and drop, duplicate and flip on the upload
+// (host->board) for raw, course and framed. The rule for every run: status 0 only with the exact
 // image, anything else status 1 and no file. Raw with the trailer must
 // refuse every run the relay damaged; framed must deliver every run; raw
 // without the trailer may pass a flipped bit (the blind spot the docs name)
@@ -9,6 +10,9 @@
 // host_send_tests "[matrix]") for docs/reliability.md.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -105,7 +109,10 @@ void run_column(const Column& col) {
         else CHECK(r.status == 1);
         CHECK_FALSE(hs_test::file_exists(out));
       }
-      if (col.protocol == "framed") CHECK(r.status == 0);
+      // Framed repairs board->host damage; a damaged upload is sent again
+      // at most 8 times, so at this rate (most S frames hit) it may end in
+      // a clean failure instead.
+      if (col.protocol == "framed" && !col.to_board) CHECK(r.status == 0);
       // Checked, raw and course refuse every run the relay damaged.
       if (col.protocol != "framed" && !col.no_check && !stall && n > 0) CHECK(r.status != 0);
     }
@@ -170,4 +177,54 @@ TEST_CASE("one flipped bit in the uploaded scene is refused by the board, raw an
 TEST_CASE("fault matrix: raw P6 --no-check passes only flipped bits", "[fault][matrix][firmware]") {
   HS_NEEDS_FIRMWARE();
   run_column({"raw P6 --no-check", "raw", "p6", true});
+}
+
+// The whole matrix at fixed rates, both directions, one seed each: hidden
+// from the default run (tag [.full], about 15 minutes on 2 shared cores);
+// `host_send_tests "[full]"` prints the table docs/reliability.md shows.
+// Every run must end with the exact image (status 0) or a clean failure
+// (status 1 or 3, no file), within 120 s.
+TEST_CASE("fault matrix, full: raw, course and framed x drop, dup, flip, stall x 0.1/0.5/5% x both ways",
+          "[.full][fault][firmware]") {
+  HS_NEEDS_FIRMWARE();
+  const std::string scene = hs_test::shared_dir() + "/scenes/ball.sld";
+  const std::string ref = hs_test::reference_image(scene, kSize, "p6");
+  REQUIRE(!ref.empty());
+  hs_test::TempDir dir;
+  std::printf("| protocol | direction | fault | 0.1%% | 0.5%% | 5%% |\n|---|---|---|---|---|---|\n");
+  for (const std::string protocol : {"raw", "course", "framed"}) {
+    for (const bool to_board : {false, true}) {
+      for (const std::string fault : {"drop", "dup", "flip", "stall"}) {
+        std::string cells;
+        for (const char* rate : {"0.001", "0.005", "0.05"}) {
+          std::vector<std::string> relay{"--seed", "1", "--" + fault, rate};
+          if (fault == "stall") relay.insert(relay.end(), {"--stall-ms", "100"});
+          if (to_board) relay.push_back("--to-board");
+          hs_test::DamagedLine line(hs_test::Board::kFirmware, protocol, relay, kSize, "p6");
+          const std::string out = dir.file(protocol + fault + rate + ".ppm");
+          const auto t0 = std::chrono::steady_clock::now();
+          const hs_test::RunResult r =
+              hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", protocol, "--size", kSize, "--format",
+                            "p6", scene, "-o", out, "--idle-timeout", protocol == "framed" ? "20" : "1",
+                            "--first-byte-timeout", "30"},
+                           150);
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          const std::string report = line.report();
+          INFO(protocol << (to_board ? " host->board " : " board->host ") << fault << " " << rate << "\n"
+                        << r.err << report);
+          const bool exact = r.status == 0 && hs_test::read_file(out) == ref;
+          CHECK((exact || ((r.status == 1 || r.status == 3) && !hs_test::file_exists(out))));
+          CHECK(seconds < 120);
+          char cell[64];
+          std::snprintf(cell, sizeof cell, " %s %.0f s |", exact ? "exact" : r.status == 0 ? "WRONG" : "refused",
+                        seconds);
+          cells += cell;
+          ::unlink(out.c_str());
+        }
+        std::printf("| %s | %s | %s |%s\n", protocol.c_str(), to_board ? "host->board" : "board->host", fault.c_str(),
+                    cells.c_str());
+        std::fflush(stdout);
+      }
+    }
+  }
 }
