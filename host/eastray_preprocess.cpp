@@ -218,8 +218,18 @@ class Expander {
     // Charged before the read, so a file over the rest of the budget is not read.
     if (!spend(kIncludeCost, shown, line, name_at)) return false;
     std::string text, why;
-    if (!files_.read(found, text, why, std::min(kMaxSceneBytes, budget_ - spent_ + 1)))
+    const std::size_t room = budget_ - spent_;
+    if (!files_.read(found, text, why, std::min(kMaxSceneBytes, room + 1))) {
+      // Over what is left of the budget (read no further than that):
+      // the budget's message, naming the file.
+      if (room < kMaxSceneBytes && why.rfind("larger than", 0) == 0)
+        return fail(shown, line, name_at,
+                    "include file '" + found + "' is larger than the " + std::to_string(room) +
+                        " bytes left of the scene's budget of " + std::to_string(budget_) + " bytes (" +
+                        std::to_string(kBudgetFactor) + " times the scene file, at least " +
+                        std::to_string(kBudgetFloor) + ")");
       return fail(shown, line, name_at, "cannot read include file '" + found + "': " + why);
+    }
     if (!spend(text.size(), shown, line, name_at)) return false;
     emit("", file, line);  // the directive's own line stays, blank
     return this->file(found, found, text, depth + 1);
