@@ -1,5 +1,6 @@
 #include "eastray_preprocess.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cstdlib>
 #include <map>
@@ -11,10 +12,18 @@ namespace minrt::host {
 
 namespace {
 
+// The work budget (see eastray_preprocess.hpp): what the preprocessor may
+// copy, in bytes, is kBudgetFactor times the scene file, at least
+// kBudgetFloor and at most kMaxExpandedBytes. Includes and macros that
+// name each other twice double at every level; the budget stops them after
+// a few milliseconds and megabytes instead of hours and gigabytes.
 constexpr int kMaxIncludeDepth = 64;
 constexpr int kMaxMacroDepth = 32;  // a body naming a macro is expanded again, this deep at most
-constexpr std::size_t kMaxExpandedBytes = std::size_t{1} << 29;
+constexpr std::size_t kBudgetFactor = 64;
+constexpr std::size_t kBudgetFloor = std::size_t{1} << 20;
+constexpr std::size_t kMaxExpandedBytes = std::size_t{64} << 20;
 constexpr std::size_t kExpansionCost = 64;  // bytes one macro expansion counts for beyond its body
+constexpr std::size_t kIncludeCost = 1024;  // bytes one #include counts for beyond its file (open, read)
 
 bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
@@ -32,21 +41,29 @@ std::size_t text_length(const std::string& text) {
   return ctrl_z == std::string::npos ? text.size() : ctrl_z;
 }
 
-bool exists(const std::string& path) { return ::access(path.c_str(), R_OK) == 0; }
-
-std::string canonical(const std::string& path) {
-  char buf[PATH_MAX];
-  return ::realpath(path.c_str(), buf) != nullptr ? std::string(buf) : path;
-}
+class DiskFiles : public EastrayFiles {
+ public:
+  bool readable(const std::string& path) const override { return ::access(path.c_str(), R_OK) == 0; }
+  std::string canonical(const std::string& path) const override {
+    char buf[PATH_MAX];
+    return ::realpath(path.c_str(), buf) != nullptr ? std::string(buf) : path;
+  }
+  bool read(const std::string& path, std::string& out, std::string& why, std::size_t max_bytes) const override {
+    return read_whole_file(path, out, why, max_bytes);
+  }
+};
 
 class Expander {
  public:
-  explicit Expander(ExpandedEastray& out) : out_(out) {}
+  Expander(ExpandedEastray& out, std::size_t scene_bytes, const EastrayFiles& files) : out_(out), files_(files) {
+    budget_ = scene_bytes > kMaxExpandedBytes / kBudgetFactor ? kMaxExpandedBytes : scene_bytes * kBudgetFactor;
+    if (budget_ < kBudgetFloor) budget_ = kBudgetFloor;
+  }
 
   bool file(const std::string& path, const std::string& shown, const std::string& text, int depth) {
     const int index = static_cast<int>(out_.files.size());
     out_.files.push_back(shown);
-    const std::string canon = canonical(path);
+    const std::string canon = files_.canonical(path);
     for (const std::string& open : stack_)
       if (open == canon) return false;  // caller reports the cycle
     stack_.push_back(canon);
@@ -130,10 +147,8 @@ class Expander {
     while (i < one.size() && blank(one[i])) ++i;
     if (i >= one.size() || one[i] != '#') {
       std::string expanded;
-      produced_ = out_.text.size();
       if (!expand(one, expanded, 0, shown, line)) return false;
-      if (out_.text.size() + expanded.size() > kMaxExpandedBytes)
-        return fail(shown, line, 0, "the expanded scene is larger than " + std::to_string(kMaxExpandedBytes) + " bytes");
+      if (!spend(expanded.size() + 1, shown, line, 0)) return false;
       emit(expanded, file, line);
       return true;
     }
@@ -180,8 +195,8 @@ class Expander {
     std::string found;
     if (close == '"') {
       const std::string beside = name[0] == '/' ? name : folder_of(path) + name;
-      if (exists(beside)) found = beside;
-      else if (exists(name)) found = name;
+      if (files_.readable(beside)) found = beside;
+      else if (files_.readable(name)) found = name;
       else return fail(shown, line, name_at, "cannot find include file '" + name + "' (looked beside " + shown +
                                                  " and in the current folder)");
     } else {
@@ -193,16 +208,29 @@ class Expander {
         if (c == '\\') c = '/';
       if (dir.back() != '/') dir += '/';
       found = dir + name;
-      if (!exists(found)) return fail(shown, line, name_at, "cannot find include file '" + found + "' (from EASTRAY)");
+      if (!files_.readable(found)) return fail(shown, line, name_at, "cannot find include file '" + found + "' (from EASTRAY)");
     }
     if (depth + 1 > kMaxIncludeDepth)
       return fail(shown, line, name_at, "#include nested deeper than " + std::to_string(kMaxIncludeDepth));
-    const std::string canon = canonical(found);
+    const std::string canon = files_.canonical(found);
     for (const std::string& open : stack_)
       if (open == canon) return fail(shown, line, name_at, "#include cycle: '" + name + "' is already being read");
+    // Charged before the read, so a file over the rest of the budget is not read.
+    if (!spend(kIncludeCost, shown, line, name_at)) return false;
     std::string text, why;
-    if (!read_whole_file(found, text, why, kMaxSceneBytes))
+    const std::size_t room = budget_ - spent_;
+    if (!files_.read(found, text, why, std::min(kMaxSceneBytes, room + 1))) {
+      // Over what is left of the budget (read no further than that):
+      // the budget's message, naming the file.
+      if (room < kMaxSceneBytes && why.rfind("larger than", 0) == 0)
+        return fail(shown, line, name_at,
+                    "include file '" + found + "' is larger than the " + std::to_string(room) +
+                        " bytes left of the scene's budget of " + std::to_string(budget_) + " bytes (" +
+                        std::to_string(kBudgetFactor) + " times the scene file, at least " +
+                        std::to_string(kBudgetFloor) + ")");
       return fail(shown, line, name_at, "cannot read include file '" + found + "': " + why);
+    }
+    if (!spend(text.size(), shown, line, name_at)) return false;
     emit("", file, line);  // the directive's own line stays, blank
     return this->file(found, found, text, depth + 1);
   }
@@ -227,12 +255,10 @@ class Expander {
           expanding_.pop_back();
           if (!ok) return false;
           // Bodies naming a macro twice double at every level: count what
-          // every level copies, and each expansion as 64 bytes more (its
-          // call), so 2^30 copies of a 1-byte body stop within a second
-          // instead of running out of time or memory.
-          produced_ += body.size() + kExpansionCost;
-          if (produced_ > kMaxExpandedBytes)
-            return fail(shown, line, 0, "macro expansion larger than " + std::to_string(kMaxExpandedBytes) + " bytes");
+          // every level copies, and each expansion as kExpansionCost bytes
+          // more (its call), so 2^30 copies of a 1-byte body stop at the
+          // budget instead of running out of time or memory.
+          if (!spend(body.size() + kExpansionCost, shown, line, i)) return false;
           out += body;
         } else {
           out += name;
@@ -247,11 +273,23 @@ class Expander {
     return true;
   }
 
+  // Charges `bytes` of work; false with a located error once over the budget.
+  bool spend(std::size_t bytes, const std::string& shown, int line, std::size_t col) {
+    spent_ += bytes;
+    if (spent_ <= budget_) return true;
+    return fail(shown, line, col,
+                "the scene expands past " + std::to_string(budget_) +
+                    " bytes (#include and #define copies count; the limit is " + std::to_string(kBudgetFactor) +
+                    " times the scene file, at least " + std::to_string(kBudgetFloor) + ")");
+  }
+
   ExpandedEastray& out_;
+  const EastrayFiles& files_;
   std::map<std::string, std::string> macros_;
   std::vector<std::string> stack_;
   std::vector<std::string> expanding_;
-  std::size_t produced_ = 0;  // bytes of the scene so far plus every copy made expanding this line
+  std::size_t budget_ = kBudgetFloor;
+  std::size_t spent_ = 0;  // every byte emitted, included or copied by an expansion so far
   std::string error_;
 };
 
@@ -271,10 +309,20 @@ std::string ExpandedEastray::at(int line, int col) const {
   return where(line) + ":" + std::to_string(end_col);
 }
 
+const EastrayFiles& eastray_files() {
+  static const DiskFiles files;
+  return files;
+}
+
 bool preprocess_eastray(const std::string& path, const std::string& shown, const std::string& text,
                         ExpandedEastray& out, std::string& error) {
+  return preprocess_eastray(path, shown, text, out, error, eastray_files());
+}
+
+bool preprocess_eastray(const std::string& path, const std::string& shown, const std::string& text,
+                        ExpandedEastray& out, std::string& error, const EastrayFiles& files) {
   out = ExpandedEastray{};
-  Expander x(out);
+  Expander x(out, text.size(), files);
   if (!x.file(path == "-" ? std::string() : path, shown, text, 0)) {
     error = x.error();
     return false;

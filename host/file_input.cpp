@@ -10,13 +10,38 @@
 
 namespace minrt::host {
 
-bool read_whole_file(const std::string& path, std::string& out, std::string& error, std::size_t max_bytes) {
-  out.clear();
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+namespace {
+const char* kind_of(mode_t m) {
+  if (S_ISDIR(m)) return std::strerror(EISDIR);
+  if (S_ISFIFO(m)) return "not a regular file (a FIFO)";
+  if (S_ISCHR(m) || S_ISBLK(m)) return "not a regular file (a device)";
+  if (S_ISSOCK(m)) return "not a regular file (a socket)";
+  return "not a regular file";
+}
+}  // namespace
+
+int open_regular_file(const std::string& path, std::string& error) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
   if (fd < 0) {
     error = std::strerror(errno);
-    return false;
+    return -1;
   }
+  struct stat st {};
+  const bool stat_ok = ::fstat(fd, &st) == 0;
+  if (!stat_ok || !S_ISREG(st.st_mode)) {
+    error = stat_ok ? kind_of(st.st_mode) : std::strerror(errno);
+    ::close(fd);
+    return -1;
+  }
+  const int flags = ::fcntl(fd, F_GETFL);
+  if (flags >= 0) ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+  return fd;
+}
+
+bool read_whole_file(const std::string& path, std::string& out, std::string& error, std::size_t max_bytes) {
+  out.clear();
+  const int fd = open_regular_file(path, error);
+  if (fd < 0) return false;
   const bool ok = read_whole_fd(fd, out, error, max_bytes);
   ::close(fd);
   return ok;

@@ -17,7 +17,13 @@ namespace minrt::host {
 // file at once with "larger than N bytes" rather than filling the memory.
 inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
 
-// Reads `path` into `out`. False with `error` set to the reason ("Is a
+// Opens `path` for reading without blocking (a FIFO with no writer would
+// block open() forever) and keeps it only when it is a regular file: -1
+// with the reason ("not a regular file (a FIFO)", the system's error)
+// otherwise. The descriptor is blocking again when returned.
+int open_regular_file(const std::string& path, std::string& error);
+
+// Reads `path` into `out` (a regular file only: open_regular_file). False with `error` set to the reason ("Is a
 // directory", "No such file or directory", "larger than N bytes", ...) when
 // it cannot; `max_bytes` bounds what is read (every caller names its bound).
 bool read_whole_file(const std::string& path, std::string& out, std::string& error, std::size_t max_bytes);

@@ -39,6 +39,9 @@ const std::vector<Option>& options_table() {
        "its extension picks the kind: .png, .ppm, .bmp, .tif,\n"
        "else the format's own"},
       {"write-through", 0, nullptr, "write into a FIFO, device or link given to -o"},
+      {"allow-any-output", 0, nullptr,
+       "let a scene's own output name (CS418's png line,\n"
+       "EASTRAY's output) leave the scene's and the working folder"},
       {"sync", 0, nullptr, "make the -o file durable (fsync) before exiting;\nwithout it the file is still replaced whole or not at all"},
       {"quiet", 'q', nullptr, "no warnings on standard error"},
       {"no-save", 'n', nullptr, "render without saving the image"},
@@ -140,6 +143,7 @@ int run(int argc, char** argv) {
           else return "bad --shims '" + v + "': expected libm, portable, portable-fast or portable-min";
         } else if (name == "output") o.output_path = v;
         else if (name == "write-through") o.write_through = true;
+        else if (name == "allow-any-output") o.allow_any_output = true;
         else if (name == "sync") sync = true;
         else if (name == "scene-format") {
           o.format = minrt::formats::format_named(v.c_str());

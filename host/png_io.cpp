@@ -1,11 +1,14 @@
 #include "png_io.hpp"
 
 #include <png.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <csetjmp>
 #include <cstdlib>
 #include <cstring>
+
+#include "file_input.hpp"
 
 namespace minrt::host {
 
@@ -25,16 +28,50 @@ void on_warning(png_structp, png_const_charp) {}
 
 }  // namespace
 
-bool read_png(const std::string& path, RgbaImage& out, std::string& error) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
+bool read_png(const std::string& path, RgbaImage& out, std::string& error, std::uint64_t max_pixels) {
+  const int fd = open_regular_file(path, error);
+  if (fd < 0) return false;
+  std::FILE* f = ::fdopen(fd, "rb");
   if (f == nullptr) {
     error = std::strerror(errno);
+    ::close(fd);
     return false;
   }
-  return read_png(f, out, error);
+  return read_png(f, out, error, max_pixels);
 }
 
-bool read_png(std::FILE* f, RgbaImage& out, std::string& error) {
+bool png_header_size(const std::string& path, int& width, int& height, std::string& error) {
+  const int fd = open_regular_file(path, error);
+  if (fd < 0) return false;
+  // Signature (8), IHDR length and type (8), width and height (4 each).
+  unsigned char head[24] = {};
+  std::size_t got = 0;
+  while (got < sizeof head) {
+    const ssize_t n = ::read(fd, head + got, sizeof head - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  if (got < sizeof head || png_sig_cmp(head, 0, 8) != 0 || std::memcmp(head + 12, "IHDR", 4) != 0) {
+    error = "not a PNG file";
+    return false;
+  }
+  auto be32 = [&](int at) {
+    return static_cast<std::uint32_t>(head[at]) << 24 | static_cast<std::uint32_t>(head[at + 1]) << 16 |
+           static_cast<std::uint32_t>(head[at + 2]) << 8 | head[at + 3];
+  };
+  const std::uint32_t w = be32(16), h = be32(20);
+  if (w == 0 || h == 0 || w > 0x7fffffff || h > 0x7fffffff) {
+    error = "bad PNG: bad image size in the header";
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  return true;
+}
+
+bool read_png(std::FILE* f, RgbaImage& out, std::string& error, std::uint64_t max_pixels) {
   unsigned char sig[8] = {};
   if (std::fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
     error = std::ferror(f) != 0 ? std::strerror(errno) : "not a PNG file";
@@ -61,6 +98,17 @@ bool read_png(std::FILE* f, RgbaImage& out, std::string& error) {
   png_set_sig_bytes(png, 8);
   png_set_user_limits(png, 32768, 32768);
   png_read_info(png, info);
+  {
+    // Before any pixel is inflated: the header's size against the bound.
+    const std::uint64_t w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+    if (w * h > max_pixels) {
+      png_destroy_read_struct(&png, &info, nullptr);
+      std::fclose(f);
+      error = "PNG of " + std::to_string(w) + "x" + std::to_string(h) + " pixels is larger than the " +
+              std::to_string(max_pixels) + " pixels allowed (read from its header; nothing decoded)";
+      return false;
+    }
+  }
   png_set_expand(png);
   png_set_strip_16(png);
   png_set_gray_to_rgb(png);

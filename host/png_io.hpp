@@ -10,6 +10,10 @@
 
 namespace minrt::host {
 
+// The most pixels read_png decodes by default: 2^25 (8192 x 4096), 128 MiB
+// of RGBA.
+inline constexpr std::uint64_t kMaxPngPixels = std::uint64_t{1} << 25;
+
 struct RgbaImage {
   int width = 0;
   int height = 0;
@@ -19,9 +23,17 @@ struct RgbaImage {
 // Decodes any PNG (palette, grey, 16-bit, interlaced, ...) to 8-bit RGBA.
 // False with the reason ("not a PNG file", libpng's message, the system's
 // error) when it cannot.
-bool read_png(const std::string& path, RgbaImage& out, std::string& error);
+// `max_pixels` bounds width x height, checked on the header before any
+// pixel is decoded (a small file may inflate to gigabytes). The file must
+// be a regular file (file_input.hpp's open_regular_file).
+bool read_png(const std::string& path, RgbaImage& out, std::string& error,
+              std::uint64_t max_pixels = kMaxPngPixels);
 // The same from an open stream, which it closes.
-bool read_png(std::FILE* f, RgbaImage& out, std::string& error);
+bool read_png(std::FILE* f, RgbaImage& out, std::string& error, std::uint64_t max_pixels = kMaxPngPixels);
+
+// Width and height from a PNG file's header (signature and IHDR), without
+// decoding; false with the reason.
+bool png_header_size(const std::string& path, int& width, int& height, std::string& error);
 
 // Writes 8-bit RGBA, compressed. False with the reason.
 bool write_png(std::FILE* f, const RgbaImage& image, std::string& error);

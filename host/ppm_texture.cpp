@@ -1,5 +1,9 @@
 #include "ppm_texture.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
+
 #include <minrt/limits.hpp>
 
 #include "file_input.hpp"
@@ -55,6 +59,12 @@ bool decode_ppm(const std::string& bytes, RgbTexture& out, std::string& error) {
     return false;
   }
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3;
+  // Too few bytes for the pixels the header claims (P6: one a sample, P3: a
+  // digit and a blank): refused before the pixels are allocated.
+  if (bytes.size() - i < (binary ? n : 2 * n - 1)) {
+    error = binary ? "truncated pixel data" : "truncated or bad pixel data";
+    return false;
+  }
   out.width = static_cast<int>(w);
   out.height = static_cast<int>(h);
   out.rgb.assign(n, 0);
@@ -91,6 +101,34 @@ bool decode_ppm(const std::string& bytes, RgbTexture& out, std::string& error) {
     }
     out.rgb[k] = scaled(v);
   }
+  return true;
+}
+
+bool ppm_header_size(const std::string& path, int& width, int& height, std::string& error) {
+  const int fd = open_regular_file(path, error);
+  if (fd < 0) return false;
+  std::string head(4096, '\0');
+  std::size_t got = 0;
+  while (got < head.size()) {
+    const ssize_t n = ::read(fd, head.data() + got, head.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  head.resize(got);
+  std::size_t i = 2;
+  long w = 0, h = 0;
+  if (head.size() < 2 || head[0] != 'P' || (head[1] != '6' && head[1] != '3')) {
+    error = "not a PPM file (expected P6 or P3)";
+    return false;
+  }
+  if (!header_number(head, i, w) || !header_number(head, i, h) || w < 1 || h < 1) {
+    error = "bad PPM header";
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
   return true;
 }
 

@@ -19,6 +19,9 @@ struct RgbTexture {
 // pixel data", ...).
 bool decode_ppm(const std::string& bytes, RgbTexture& out, std::string& error);
 
+// Width and height from a PPM file's header alone; false with the reason.
+bool ppm_header_size(const std::string& path, int& width, int& height, std::string& error);
+
 // Reads and decodes a file; false with the reason.
 bool read_ppm(const std::string& path, RgbTexture& out, std::string& error);
 

@@ -29,6 +29,7 @@ struct DriverOptions {
   bool quiet = false;                       // -q: no warnings
   bool stats = false;                       // --stats
   bool write_through = false;
+  bool allow_any_output = false;            // a scene's own output name may leave its and the working folder
   Durability durability = Durability::kRenameOnly;
   Variant variant;
   int threads = 0;                          // 0: every core

@@ -125,6 +125,13 @@ int run_driver(const DriverOptions& options) {
     print_error(style, "minrt: error: the output " + options.output_path + " must end in " + kImageExtensions);
     return io_status(style);
   }
+  // A name the scene gives (CS418's png line, EASTRAY's output) stays in the
+  // scene's or the working folder unless allowed; -o is the user's own.
+  const bool named_by_scene = options.output_path.empty() && !out_path.empty() && out_path != "-";
+  if (named_by_scene && !options.allow_any_output && !scene_named_output_allowed(in.path, out_path, why)) {
+    print_error(style, "minrt: error: " + why);
+    return io_status(style);
+  }
   if (!out_path.empty() && !check_output_target(out_path, options.write_through, why)) {
     print_error(style, "minrt: error: " + why);
     return io_status(style);

@@ -23,6 +23,28 @@ bool load_png_texture(const std::string& base_dir, const std::string& name, RgbT
   return true;
 }
 
+bool probe_png_texture(const std::string& base_dir, const std::string& name, int& width, int& height,
+                       std::string& error) {
+  const std::string path = !name.empty() && name[0] == '/' ? name : base_dir + name;
+  std::string why;
+  if (png_header_size(path, width, height, why)) return true;
+  error = "texture " + path + ": " + why;
+  return false;
+}
+
+bool probe_minirt_texture(const std::string& base_dir, const std::string& name, int& width, int& height,
+                          std::string& error) {
+  error.clear();
+  for (const std::string& path : minirt_texture_candidates(base_dir, name)) {
+    std::string reason;
+    if (ppm_header_size(path, width, height, reason)) return true;
+    const bool missing = reason.find("No such file") != std::string::npos;
+    if (error.empty() || !missing) error = path + ": " + reason;
+    if (!missing) break;
+  }
+  return false;
+}
+
 std::vector<std::string> minirt_texture_candidates(const std::string& base_dir, const std::string& name) {
   if (!name.empty() && name[0] == '/') return {name};
   std::vector<std::string> c{base_dir + name};

@@ -38,6 +38,16 @@ std::vector<std::string> minirt_texture_candidates(const std::string& base_dir, 
 // missing one.
 bool load_minirt_texture(const std::string& base_dir, const std::string& name, RgbTexture& out, std::string& error);
 
+// The size a loader above would decode, from the file's header alone (the
+// same file the loader picks): host-send weighs it against the board's
+// memory before decoding anything.
+using TextureProbe = bool (*)(const std::string& base_dir, const std::string& name, int& width, int& height,
+                              std::string& error);
+bool probe_png_texture(const std::string& base_dir, const std::string& name, int& width, int& height,
+                       std::string& error);
+bool probe_minirt_texture(const std::string& base_dir, const std::string& name, int& width, int& height,
+                          std::string& error);
+
 class TextureFiles {
  public:
   // At most `max_count` distinct names; one more is refused with "more than

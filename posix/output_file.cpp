@@ -5,8 +5,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <climits>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+
 #include <cerrno>
 #include <cstring>
+#include <vector>
 
 namespace minrt::host {
 namespace {
@@ -22,10 +29,16 @@ void remove_temp_and_die(int sig) {
   ::raise(sig);
 }
 
+// Every signal whose default action ends the process and that a handler
+// can catch (SIGKILL and SIGSTOP cannot be: O_TMPFILE covers SIGKILL, below).
+constexpr int kFatalSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGUSR1, SIGUSR2,   SIGALRM, SIGPIPE,
+                                 SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGABRT, SIGSEGV, SIGBUS, SIGILL,
+                                 SIGFPE,  SIGSYS,  SIGTRAP};
+
 void register_temp(const std::string& temp) {
   static bool installed = false;
   if (!installed) {
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    for (int sig : kFatalSignals) {
       struct sigaction old {};
       ::sigaction(sig, nullptr, &old);
       if (old.sa_handler == SIG_DFL) ::signal(sig, remove_temp_and_die);  // leave a tool's own handler be
@@ -39,6 +52,18 @@ void register_temp(const std::string& temp) {
 }
 
 void unregister_temp() { g_have_temp = 0; }
+
+// OUT.partial.XXXXXX beside OUT, its last component cut so that the name
+// fits NAME_MAX (a 254-byte OUT is a valid name; its temporary must be too).
+std::string temp_pattern(const std::string& path) {
+  static constexpr char kSuffix[] = ".partial.XXXXXX";
+  constexpr std::size_t kSuffixLen = sizeof kSuffix - 1;
+  const std::size_t slash = path.rfind('/');
+  const std::size_t base_at = slash == std::string::npos ? 0 : slash + 1;
+  std::string base = path.substr(base_at);
+  if (base.size() + kSuffixLen > NAME_MAX) base.resize(NAME_MAX - kSuffixLen);
+  return path.substr(0, base_at) + base + kSuffix;
+}
 
 std::string folder_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
@@ -69,6 +94,31 @@ bool sync_folder(const std::string& path, int& err) {
 }
 
 }  // namespace
+
+namespace {
+// The resolved folder, with a trailing slash; empty when it cannot be resolved.
+std::string resolved_folder(const std::string& folder) {
+  char buf[PATH_MAX];
+  if (::realpath(folder.c_str(), buf) == nullptr) return "";
+  std::string out = buf;
+  if (out.back() != '/') out += '/';
+  return out;
+}
+}  // namespace
+
+bool scene_named_output_allowed(const std::string& scene_path, const std::string& named, std::string& error) {
+  if (named.empty() || named == "-") return true;
+  const std::string target = resolved_folder(folder_of(named));
+  if (target.empty()) return true;  // a missing folder: check_output_target says so
+  std::vector<std::string> allowed{resolved_folder(".")};
+  if (scene_path != "-") allowed.push_back(resolved_folder(folder_of(scene_path)));
+  for (const std::string& a : allowed)
+    if (!a.empty() && target.compare(0, a.size(), a) == 0) return true;
+  error = "refusing to write " + named +
+          ", named by the scene: it is outside the scene's folder and the working folder (-o names the output; "
+          "--allow-any-output lets the scene choose)";
+  return false;
+}
 
 bool check_output_target(const std::string& path, bool write_through, std::string& error) {
   if (path == "-") return true;
@@ -114,8 +164,22 @@ bool AtomicOutput::open(const std::string& path, bool write_through, std::string
     direct_ = true;
     return true;
   }
-  // Unique per run: two runs writing the same target never share a file.
-  std::string temp = path + ".partial.XXXXXX";
+  // Unnamed first (O_TMPFILE): nothing exists under any name until commit
+  // links it, so even SIGKILL leaves nothing behind. File systems without
+  // it get a named temporary, removed by a handler on every catchable
+  // fatal signal. Either way unique per run: two runs never share a file.
+  const int tmp_fd = ::open(folder_of(path).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (tmp_fd >= 0) {
+    file_ = ::fdopen(tmp_fd, "wb");
+    if (file_ == nullptr) {
+      error = "cannot write next to " + path + ": " + std::strerror(errno);
+      ::close(tmp_fd);
+      return false;
+    }
+    unnamed_ = true;
+    return true;
+  }
+  std::string temp = temp_pattern(path);
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) {
     error = "cannot create a temporary file next to " + path + ": " + std::strerror(errno);
@@ -136,6 +200,35 @@ bool AtomicOutput::open(const std::string& path, bool write_through, std::string
   return true;
 }
 
+// The unnamed file gets a unique temporary name beside the target (linkat
+// cannot replace a name), which the caller then renames over the target.
+bool AtomicOutput::link_unnamed(int& err) {
+  char proc[64];
+  std::snprintf(proc, sizeof proc, "/proc/self/fd/%d", fileno(file_));
+  const std::string pattern = temp_pattern(path_);
+  static const char kChars[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+  unsigned long long seed = static_cast<unsigned long long>(::getpid()) * 2654435761u ^
+                            static_cast<unsigned long long>(std::time(nullptr)) ^ reinterpret_cast<uintptr_t>(this);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::string name = pattern;
+    for (std::size_t i = name.size() - 6; i < name.size(); ++i) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      name[i] = kChars[(seed >> 33) % (sizeof kChars - 1)];
+    }
+    // Registered first: a signal between the link and the rename removes it.
+    register_temp(name);
+    if (::linkat(AT_FDCWD, proc, AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0 ||
+        ::linkat(fileno(file_), "", AT_FDCWD, name.c_str(), AT_EMPTY_PATH) == 0) {
+      temp_ = name;
+      return true;
+    }
+    err = errno;
+    unregister_temp();
+    if (err != EEXIST) return false;
+  }
+  return false;
+}
+
 bool AtomicOutput::commit(std::string& error) {
   if (file_ == nullptr) return false;
   bool ok = std::fflush(file_) == 0 && !std::ferror(file_);
@@ -144,6 +237,7 @@ bool AtomicOutput::commit(std::string& error) {
     ok = false;
     err = errno;
   }
+  if (ok && unnamed_ && !link_unnamed(err)) ok = false;
   if (file_ != stdout && std::fclose(file_) != 0 && ok) {
     ok = false;
     err = errno;
@@ -182,7 +276,7 @@ bool write_file_atomically(const std::string& path, const std::string& bytes, bo
 }
 
 void AtomicOutput::discard() {
-  if (file_ != nullptr && file_ != stdout) std::fclose(file_);
+  if (file_ != nullptr && file_ != stdout) std::fclose(file_);  // an unnamed file vanishes with it
   file_ = nullptr;
   if (!temp_.empty()) ::unlink(temp_.c_str());
   unregister_temp();

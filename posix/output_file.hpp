@@ -4,7 +4,10 @@
 // when the caller asks for it, see Durability), and only onto a regular
 // file or a new name. A FIFO, device or symbolic link is
 // refused unless the caller asks to write through it; "-" is standard
-// output. SIGINT, SIGTERM and SIGHUP remove the temporary file.
+// output. The temporary file has no name until it is complete (O_TMPFILE,
+// linked at commit), so no signal, SIGKILL included, leaves it behind; on a
+// file system without O_TMPFILE it is OUT.partial.XXXXXX (cut to fit
+// NAME_MAX), removed by a handler on every catchable fatal signal.
 #pragma once
 
 #include <cstdio>
@@ -16,6 +19,14 @@ namespace minrt::host {
 // false with the reason when the folder is missing or not writable, the
 // target is a directory, or a special file without `write_through`.
 bool check_output_target(const std::string& path, bool write_through, std::string& error);
+
+// An output name a scene chose (CS418's png line, EASTRAY's output
+// statement) must stay inside the scene's folder or the working folder: a
+// scene from elsewhere must not replace ../x.png or /abs/path. False with
+// one line naming the path when it leaves both (the folder it would land
+// in is resolved, so `..` and symbolic links count). `scene_path` "-" (a
+// scene on standard input) has only the working folder.
+bool scene_named_output_allowed(const std::string& scene_path, const std::string& named, std::string& error);
 
 // Whether commit() makes the file durable: kSynced fsyncs the file before
 // the rename and its folder after it. With kRenameOnly the rename still
@@ -47,8 +58,11 @@ class AtomicOutput {
   void discard();
 
  private:
+  bool link_unnamed(int& err);
+
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
+  bool unnamed_ = false;  // O_TMPFILE: linked to temp_ only at commit
   bool direct_ = false;  // writing to the target itself (stdout or write-through)
   Durability durability_;
 };

@@ -50,6 +50,10 @@ class CheckedSink {
 
   ByteSink sink() { return requested_ ? ByteSink{&write_fn, this} : out_; }
 
+  // The host asked after construction (the course protocol's checked scene,
+  // scene_check.hpp); before the first image byte.
+  void request() { requested_ = true; }
+
   // After a complete image: the trailer (nothing when not requested or when
   // no image byte was written, as for an error line sent elsewhere).
   void end() {

@@ -28,6 +28,7 @@
 #include "protocol/protocol_course_board.hpp"
 #include "protocol/protocol_framed_board.hpp"
 #include "protocol/raw_check.hpp"
+#include "protocol/scene_check.hpp"
 #include "render/sld/render.hpp"
 #include "serial_stream.hpp"
 
@@ -74,13 +75,14 @@ minrt::fw::BoardScene board_scene(minrt::Arena& arena, const minrt::fw::Firmware
 }
 
 // Course protocol, a text-format scene after its marker word: the bytes
-// into the arena, the format's image (PNG, BMP) back as in raw.
-minrt::RenderStatus serve_course_text(minrt::ByteSource in, minrt::send::course::Endian endian, minrt::ByteSink out,
+// into the arena (or in place in a checked upload), the format's image
+// (PNG, BMP) back as in raw.
+minrt::RenderStatus serve_course_text(minrt::send::scene_check::CourseScene& upload, minrt::ByteSink out,
                                       const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
                                       minrt::Diagnostic& error) {
   minrt::send::text::TextScene scene;
   bool too_large = false;
-  if (!minrt::send::text::read_course(in, endian, arena, scene, too_large, error))
+  if (!upload.text_scene(arena, scene, too_large, error))
     return too_large ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
   return status_of(minrt::fw::stream_uploaded_image(scene, board_scene(arena, options, error), out));
 }
@@ -110,25 +112,28 @@ int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw
     if (length > 0) minrt::fw::start_program(argc, argv, big);
   }
   minrt::fw::SerialOutput image(uart, options.footprint);
+  minrt::send::raw_check::CheckedSink reply(image.sink(), false);
   minrt::RenderStatus status = minrt::RenderStatus::kOk;
   const bool ok = serve_scene(
       in, out,
       [&](minrt::ByteSource words) {
-        // The first word tells a text-format upload (text_scene_upload.hpp)
-        // from SLD words; for SLD it is handed back to the reader.
-        uint8_t first[4];
-        int got = 0;
-        for (int c; got < 4 && (c = words.get()) >= 0;) first[got++] = static_cast<uint8_t>(c);
-        if (got == 4 && minrt::send::text::is_marker(first, endian)) {
-          status = serve_course_text(words, endian, image.sink(), options, arena, error);
+        // A checked upload is held and checked first; then the first word
+        // tells a text-format upload from SLD words (scene_check.hpp).
+        minrt::send::scene_check::CourseScene scene;
+        if (!scene.begin(words, endian, arena, reply, error)) {
+          status = scene.too_large() ? minrt::RenderStatus::kOutOfMemory : minrt::RenderStatus::kSceneError;
+          return false;
+        }
+        if (scene.is_text()) {
+          status = serve_course_text(scene, reply.sink(), options, arena, error);
           return status == minrt::RenderStatus::kOk;
         }
-        minrt::send::text::PrefixSource replay(first, got, words);
-        status = minrt::render_sld_values<Math>(CourseWordValues<Math::real>(replay.source(), endian), image.sink(),
+        status = minrt::render_sld_values<Math>(CourseWordValues<Math::real>(scene.words(), endian), reply.sink(),
                                                 options.render, g_state, arena, error);
         return status == minrt::RenderStatus::kOk;
       },
       error);
+  if (ok) reply.end();
   if (!ok) return status_of(status);
   if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), image.bytes());
   return MINRT_STATUS_OK;
@@ -251,12 +256,32 @@ extern "C" int main(int argc, char** argv) {
   minrt::fw::SerialOutput uart_out(uart, options.footprint);
   // The host's request for the CRC-32 trailer comes first (protocol/raw_check.hpp).
   minrt::PeekSource request(input.source());
-  const bool checked = request.first_nonblank() == MINRT_CHECK_REQUEST;
+  const int lead = request.first_nonblank();
+  // A checked upload is held whole and checked before anything reads it
+  // (protocol/scene_check.hpp); its textures are read in place.
+  minrt::send::scene_check::CheckedUpload upload;
+  minrt::send::textures::Table* textures = nullptr;
+  if (lead == MINRT_SCENE_CHECK_REQUEST) {
+    minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
+    const auto r = upload.receive_raw(binary.source(), arena, error);
+    bool present = false;
+    if (r == minrt::send::scene_check::Result::kOk) {
+      textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
+      if (textures == nullptr) error.text("no room for the texture table");
+    }
+    if (r != minrt::send::scene_check::Result::kOk || textures == nullptr ||
+        !upload.view_textures(*textures, present, error)) {
+      send_error(uart, error);
+      return r == minrt::send::scene_check::Result::kTooLarge || textures == nullptr ? MINRT_STATUS_OUT_OF_MEMORY
+                                                                                  : MINRT_STATUS_SCENE_ERROR;
+    }
+    if (!present) textures = nullptr;
+  }
+  const bool checked = lead == MINRT_CHECK_REQUEST || upload.received();
   minrt::send::raw_check::CheckedSink output(uart_out.sink(), checked);
-  minrt::PeekSource scene(checked ? input.source() : request.source());
+  minrt::PeekSource scene(upload.received() ? upload.text() : checked ? input.source() : request.source());
   const int first = scene.first_nonblank();
   // A CS418 scene's textures, decoded by host-send, come first.
-  minrt::send::textures::Table* textures = nullptr;
   minrt::PeekSource after_textures(input.source());
   if (first == MINRT_TEXTURES_MARKER) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
@@ -268,7 +293,7 @@ extern "C" int main(int argc, char** argv) {
     }
   }
   // The format by the registry's rule, from the first word (SLD: a number).
-  minrt::PeekSource& text = textures != nullptr ? after_textures : scene;
+  minrt::PeekSource& text = textures != nullptr && !upload.received() ? after_textures : scene;
   text.first_nonblank();
   minrt::formats::TextStart start;
   while (!(start = minrt::formats::text_start(text.kept(), static_cast<size_t>(text.kept_count()))).complete &&

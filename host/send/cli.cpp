@@ -121,14 +121,17 @@ void print_help() {
       "                           written only when complete and valid; a FIFO, device\n"
       "                           or symbolic link is refused\n"
       "  --write-through          write into a FIFO, device or link given to -o\n"
+      "  --allow-any-output       let a scene's own output name (CS418 png line, EASTRAY\n"
+      "                           output) leave the scene's and the working folder\n"
       "  --as-received            write a PNG as the board sent it (stored deflate); by\n"
       "                           default it is compressed, with the same pixels\n"
       "  --verify REF.ppm         compare with a P3 or P6 reference: differing pixels,\n"
       "                           maximum channel error, PSNR\n"
       "  --expect-sha256 HEX      refuse the image unless its bytes have this SHA-256\n"
-      "  --check                  raw: require the board's CRC-32 trailer (by default it\n"
-      "                           is asked for and checked when the board announces it)\n"
-      "  --no-check               raw: do not ask for the trailer (plain course bytes)\n"
+      "  --check                  raw, course: require the board's CRC-32 trailer (by\n"
+      "                           default it is asked for and checked when announced)\n"
+      "  --no-check               raw, course: send the scene without its CRC-32 and do\n"
+      "                           not ask for the reply's (the plain protocol bytes)\n"
       "  --first-byte-timeout S   wait for the reply at most S seconds (default 120)\n"
       "  --idle-timeout S         longest silence within the reply (default 30)\n"
       "  --progress               draw the progress line even when stderr is no terminal\n"
@@ -252,6 +255,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
     } else if (a == "-o" || a == "--output") {
       if (!value(o.output)) return ParseResult::kError;
       o.output_given = true;
+    } else if (a == "--allow-any-output") {
+      o.allow_any_output = true;
     } else if (a == "--write-through") {
       o.write_through = true;
     } else if (a == "--as-received") {
@@ -311,8 +316,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
     error = "--program only applies to --protocol course";
     return ParseResult::kError;
   }
-  if (o.protocol != Protocol::kRaw && o.check == RawCheck::kRequire) {
-    error = "--check applies to --protocol raw (framed checks every frame; course has no checksum)";
+  if (o.protocol == Protocol::kFramed && o.check == RawCheck::kRequire) {
+    error = "--check applies to --protocol raw and course (framed checks every frame)";
     return ParseResult::kError;
   }
   if (o.output.empty()) o.output = default_output(o.scene);
@@ -329,6 +334,7 @@ int run(const Options& options) {
 
   Options o = options;
   std::string scene, why;
+  bool scene_named_output = false;  // o.output comes from the scene (png line, output statement)
   if (!minrt::host::read_whole_file(o.scene, scene, why, minrt::host::kMaxSceneBytes))
     return fail(kExitUsage, "cannot read " + o.scene + ": " + why);
   // The format, as minrt recognises it (formats/registry.hpp); its upload
@@ -358,6 +364,7 @@ int run(const Options& options) {
   if (!o.output_given) {
     if (!upload.output.empty()) {
       o.output = upload.output;
+      scene_named_output = true;
     } else if (png_reply) {
       o.output = default_output(o.scene);
       o.output.replace(o.output.size() - 4, 4, ".png");
@@ -367,6 +374,8 @@ int run(const Options& options) {
   if (text_format && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
     return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   // The output is checked before the transfer, not after minutes of it.
+  if (scene_named_output && !o.allow_any_output && !minrt::host::scene_named_output_allowed(o.scene, o.output, why))
+    return fail(kExitUsage, why);
   if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
   // (0x04) as the end of the scene: a scene with that byte inside would be

@@ -26,6 +26,7 @@ struct Options {
   std::string scene;
   std::string output;        // -o; default SCENE's stem + ".ppm" (CS418: the png line's name)
   bool output_given = false;
+  bool allow_any_output = false;  // --allow-any-output: the scene's own output name may go anywhere
   bool write_through = false;  // --write-through: into a FIFO, device or link given to -o
   bool as_received = false;    // --as-received: a PNG as the board streamed it (stored deflate)
   double first_byte_timeout = 120;

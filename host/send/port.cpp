@@ -26,7 +26,20 @@ volatile int g_interrupted = 0;
 
 namespace {
 
-void on_signal(int) { g_interrupted = 1; }
+// Set while a port is open: only then has a signal something to undo (the
+// port's settings, its lock, the simulator's orderly stop), and the transfer
+// loops see g_interrupted. Before that host-send is reading the scene,
+// preprocessing it or decoding its textures, which keep no state worth an
+// orderly stop: the signal ends the process at once with its own status.
+volatile sig_atomic_t g_port_open = 0;
+
+void on_signal(int sig) {
+  g_interrupted = 1;
+  if (g_port_open == 0) {
+    ::signal(sig, SIG_DFL);
+    ::raise(sig);
+  }
+}
 
 std::string read_small_file(const std::string& path) {
   std::string out;
@@ -143,6 +156,7 @@ void SerialPort::open(const std::string& device, const PortSettings& settings) {
   std::memcpy(saved_, &t, sizeof t);
   saved_valid_ = true;
   fd_ = fd;
+  g_port_open = 1;
 
   make_raw(t);
   t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | CRTSCTS | CBAUD | (CBAUD << IBSHIFT));
@@ -188,6 +202,7 @@ void SerialPort::close() {
   ::flock(fd_, LOCK_UN);
   ::close(fd_);
   fd_ = -1;
+  g_port_open = 0;
 }
 
 bool SerialPort::write_all(const void* data, std::size_t size, int deadline_ms) {

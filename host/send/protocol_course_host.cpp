@@ -11,7 +11,9 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "protocol/protocol_course.hpp"
+#include "core/base/crc32.hpp"
+#include "protocol/protocol_course_board.hpp"
+#include "protocol/scene_check.hpp"
 
 namespace minrt::send {
 
@@ -85,12 +87,43 @@ TransferResult run_course_words(Exchange& ex, const std::string& words, const st
   TransferResult r;
   const course::Endian endian = options.big_endian ? course::Endian::kBig : course::Endian::kLittle;
   if (!wait_for(ex, course::kProgramRequest, options.handshake_timeout_ms, rx, r, "0x99 (program request)")) return r;
+  // Checked (unless --no-check): the program's length word carries the tag
+  // and its CRC-32 follows it; the scene words go behind their byte count and
+  // CRC-32 and the reply comes with raw's trailer (protocol/scene_check.hpp).
+  const bool checked = ex.check != RawCheck::kOff;
   std::string out(4, '\0');
-  course::put_u32(reinterpret_cast<uint8_t*>(out.data()), static_cast<uint32_t>(program.size()), endian);
+  const auto size = static_cast<uint32_t>(program.size());
+  course::put_u32(reinterpret_cast<uint8_t*>(out.data()), checked ? size | course::kCheckedProgramTag << 24 : size,
+                  endian);
   out += program;
+  if (checked) {
+    std::uint8_t sum[4];
+    course::put_u32(sum, crc32(reinterpret_cast<const std::uint8_t*>(program.data()), program.size()), endian);
+    out.append(reinterpret_cast<const char*>(sum), 4);
+  }
+  // No padding after the program: the board answers 0xaa next and reads the
+  // scene after it, so stray bytes would shift the scene; a dropped program
+  // byte shows as the scene's first word taken for the program's CRC.
   if (!send_program(ex, out, r)) return r;
-  if (!wait_for(ex, course::kSceneRequest, options.handshake_timeout_ms, rx, r, "0xaa (scene request)")) return r;
-  r = exchange(ex, words, rx);
+  CheckedReply<Receiver> reply(rx, ex.check);
+  if (ex.live != nullptr)
+    reply.follow(ByteSink{[](void* c, const std::uint8_t* p, std::size_t n) {
+                            static_cast<minrt::host::ImageStreamDecoder*>(c)->feed(p, n);
+                          },
+                          ex.live});
+  if (!wait_for(ex, course::kSceneRequest, options.handshake_timeout_ms, reply, r, "0xaa (scene request)")) return r;
+  if (checked) {
+    std::uint8_t header[scene_check::kCourseHeaderSize];
+    scene_check::encode_course_header(static_cast<uint32_t>(words.size()),
+                                      crc32(reinterpret_cast<const std::uint8_t*>(words.data()), words.size()),
+                                      endian, header);
+    r = exchange(ex,
+                 std::string(reinterpret_cast<const char*>(header), sizeof header) + words +
+                     std::string(scene_check::kPaddingBytes, static_cast<char>(MINRT_END_OF_INPUT)),
+                 reply);
+  } else {
+    r = exchange(ex, words, reply);
+  }
   r.sent += out.size();
   return r;
 }

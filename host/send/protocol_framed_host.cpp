@@ -82,6 +82,11 @@ std::string framed_rgba_image(FramedImage kind, int width, int height, const std
 
 namespace {
 
+// The repair phase's shortest deadline and the longest pause between
+// requests for missing rows.
+constexpr long long kRepairFloorMs = 20000;
+constexpr int kMaxRetryMs = 8000;
+
 // The conversation for every kind of image: PPM rows (RGB, the size known
 // from --size) or a text-format scene's RGBA rows (the size from H when
 // `spec` gives none).
@@ -128,6 +133,19 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
     out += bytes;
   };
   int max_row_seen = -1;
+  // Deadlines (docs/reliability.md): no new row for the idle timeout ends
+  // the transfer, however many damaged frames still arrive; and once the
+  // board has sent every row once (its first Z), the repairs get
+  // repair_deadline_ms in all: 8 times the image's time on the line at the
+  // port's baud rate, at least kRepairFloorMs.
+  Clock::time_point last_new_row = t0, repair_start = t0;
+  bool repairing = false;
+  auto repair_deadline_ms = [&]() -> long long {
+    const std::uint32_t baud = ex.port.applied_baud() != 0 ? ex.port.applied_baud() : 115200;
+    const double image_bytes = static_cast<double>(height) * (static_cast<double>(row_bytes) + framed::kOverhead);
+    const double line_ms = image_bytes * 10.0 * 1000.0 / baud;
+    return std::max<long long>(kRepairFloorMs, static_cast<long long>(8 * line_ms));
+  };
   // Z received: ask for every missing row. Silence: ask only for the holes
   // below the last row seen (the rest may still be rendering); an empty
   // request just asks the board for a Z once it is done.
@@ -224,6 +242,7 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
               rows[row].assign(parser.payload(), parser.payload() + parser.length());
               have[row] = true;
               ++have_count;
+              last_new_row = Clock::now();
               if (last_request != t0) ++r.retransmitted_rows;
             }
             if (ex.progress) ex.progress->update(received, have_count);
@@ -246,6 +265,10 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
               r.received = received;
               return r;
             }
+            if (!repairing) {
+              repairing = true;
+              repair_start = Clock::now();
+            }
             request_missing(true);
             break;
           default:
@@ -265,8 +288,17 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
         ms_since(last_request) > retry_interval) {
       parser.reset();
       request_missing(false);
-      retry_interval = std::min(retry_interval * 2, 30000);
+      retry_interval = std::min(retry_interval * 2, kMaxRetryMs);
     }
+    if (max_row_seen >= 0 && have_count < height && ms_since(last_new_row) > ex.timeouts.idle_ms)
+      return fail(TransferResult::Status::kLinkError,
+                  "no new row for " + std::to_string(ex.timeouts.idle_ms / 1000) + " s: " +
+                      std::to_string(have_count) + " of " + std::to_string(height) +
+                      " rows arrived whole (the line damages every frame)");
+    if (repairing && ms_since(repair_start) > repair_deadline_ms())
+      return fail(TransferResult::Status::kLinkError,
+                  "rows still missing " + std::to_string(repair_deadline_ms() / 1000) + " s after the board sent them: " +
+                      std::to_string(have_count) + " of " + std::to_string(height) + " rows arrived whole");
     const int silence = ms_since(last_rx);
     if (acked && silence > ex.timeouts.idle_ms)
       return fail(TransferResult::Status::kLinkError, "line idle for " + std::to_string(ex.timeouts.idle_ms / 1000) +

@@ -9,6 +9,9 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "core/base/crc32.hpp"
+#include "protocol/scene_check.hpp"
+
 namespace minrt::send {
 
 namespace {
@@ -149,17 +152,35 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
 template TransferResult exchange<PpmReceiver>(Exchange&, const std::string&, PpmReceiver&);
 template TransferResult exchange<PngReceiver>(Exchange&, const std::string&, PngReceiver&);
 template TransferResult exchange<BmpReceiver>(Exchange&, const std::string&, BmpReceiver&);
+// The course protocol's checked reply (protocol_course_host.cpp).
+template TransferResult exchange<CheckedReply<PpmReceiver>>(Exchange&, const std::string&, CheckedReply<PpmReceiver>&);
+template TransferResult exchange<CheckedReply<PngReceiver>>(Exchange&, const std::string&, CheckedReply<PngReceiver>&);
+template TransferResult exchange<CheckedReply<BmpReceiver>>(Exchange&, const std::string&, CheckedReply<BmpReceiver>&);
+
+std::string checked_raw_upload(const std::string& scene) {
+  const auto* p = reinterpret_cast<const std::uint8_t*>(scene.data());
+  std::uint8_t header[scene_check::kRawHeaderSize];
+  scene_check::encode_raw_header(static_cast<std::uint32_t>(scene.size()), crc32(p, scene.size()), header);
+  std::string out(reinterpret_cast<const char*>(header), sizeof header);
+  out += scene;
+  out.append(scene_check::kPaddingBytes, static_cast<char>(MINRT_END_OF_INPUT));
+  return out;
+}
 
 namespace {
-// The raw upload: the trailer request unless --no-check, the scene (with
-// any texture preamble), the end-of-input byte; the reply through
-// CheckedReply around the format's receiver.
+// The raw upload: unless --no-check the checked upload (byte count and
+// CRC-32 ahead of the scene with any texture preamble, which also asks for
+// the reply's trailer), otherwise the scene and the end-of-input byte; the
+// reply through CheckedReply around the format's receiver.
 template <class Receiver>
 TransferResult raw_exchange(Exchange& ex, const std::string& scene, Receiver& inner) {
   std::string out;
-  if (ex.check != RawCheck::kOff) out.push_back(static_cast<char>(MINRT_CHECK_REQUEST));
-  out += scene;
-  out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
+  if (ex.check != RawCheck::kOff) {
+    out = checked_raw_upload(scene);
+  } else {
+    out = scene;
+    out.push_back(static_cast<char>(MINRT_END_OF_INPUT));
+  }
   CheckedReply<Receiver> rx(inner, ex.check);
   if (ex.live != nullptr)
     rx.follow(ByteSink{[](void* c, const std::uint8_t* p, std::size_t n) {

@@ -54,6 +54,10 @@ struct Exchange {
 template <class Receiver>
 TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx);
 
+// The raw protocol's checked upload of `scene` (texture preamble and text):
+// the request byte, byte count and CRC-32 (protocol/scene_check.hpp), the bytes.
+std::string checked_raw_upload(const std::string& scene);
+
 TransferResult run_raw(Exchange& ex, const std::string& scene, const ImageSpec& spec);
 
 // A CS418 scene: the reply is a PNG stream of WIDTH x HEIGHT (the scene's

@@ -59,6 +59,15 @@
 #define MINRT_CHECK_TRAILER_MAGIC "\003CRC" /* ETX, then "CRC" */
 #define MINRT_CHECK_TRAILER_SIZE 12
 
+/* Raw protocol, checked upload (host-send's default): MINRT_SCENE_CHECK_REQUEST
+ * as the very first byte, then the upload's byte count and CRC-32 (4 bytes
+ * each, little-endian), then the bytes (texture preamble and scene text; no
+ * end-of-input byte). The board holds the upload whole, refuses it with an
+ * error line when the CRC-32 differs, and answers as to MINRT_CHECK_REQUEST
+ * (announce byte, image, trailer). protocol/scene_check.hpp has both ends and
+ * the course protocol's form. */
+#define MINRT_SCENE_CHECK_REQUEST 0x05 /* ASCII ENQ: no scene format starts with it */
+
 /* ASCII EOT (Ctrl-D): optional end-of-input byte after the scene. */
 #define MINRT_END_OF_INPUT 0x04
 

@@ -14,11 +14,13 @@
 #include <cstring>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <minrt/serial_protocol.h>
 
 #include "core/base/peek_source.hpp"
 #include "protocol/raw_check.hpp"
+#include "protocol/scene_check.hpp"
 #include "render_variants.hpp"
 #include "standin_protocols.hpp"
 
@@ -79,6 +81,10 @@ struct Board {
     }
   }
   static int read_fn(void* ctx) { return static_cast<Board*>(ctx)->get(); }
+  static int read_binary_fn(void* ctx) {
+    unsigned char c = 0;
+    return static_cast<Board*>(ctx)->read_exact(&c, 1) ? c : -1;
+  }
   static void write_fn(void* ctx, const uint8_t* d, size_t n) { static_cast<Board*>(ctx)->put(d, n); }
 };
 
@@ -173,9 +179,23 @@ int main(int argc, char** argv) {
     // The CRC-32 trailer when the host asks for it, as the firmware does.
     const minrt::ByteSource line{&Board::read_fn, &board};
     minrt::PeekSource request(line);
-    const bool checked = request.first_nonblank() == MINRT_CHECK_REQUEST;
+    const int lead = request.first_nonblank();
+    // A checked upload is held and checked first (protocol/scene_check.hpp).
+    std::vector<uint8_t> memory(64 * 1024 * 1024);
+    minrt::Arena arena(memory.data(), memory.size());
+    minrt::send::scene_check::CheckedUpload upload;
+    if (lead == MINRT_SCENE_CHECK_REQUEST) {
+      const minrt::ByteSource binary{&Board::read_binary_fn, &board};
+      if (upload.receive_raw(binary, arena, error) != minrt::send::scene_check::Result::kOk) {
+        send_error();
+        wait_for_hangup(board.fd);
+        ::close(board.fd);
+        return 2;
+      }
+    }
+    const bool checked = lead == MINRT_CHECK_REQUEST || upload.received();
     minrt::send::raw_check::CheckedSink out(sink, checked);
-    st = render_from(checked ? line : request.source(), out.sink());
+    st = render_from(upload.received() ? upload.text() : checked ? line : request.source(), out.sink());
     if (st != minrt::RenderStatus::kOk) send_error();
     else out.end();
   } else {

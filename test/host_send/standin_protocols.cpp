@@ -6,6 +6,7 @@
 
 #include "protocol/protocol_course_board.hpp"
 #include "protocol/protocol_framed_board.hpp"
+#include "protocol/scene_check.hpp"
 
 namespace standin {
 
@@ -39,7 +40,21 @@ bool serve_course(Link& link, const CourseRenderFn& render, bool big_endian) {
   uint32_t length = 0;
   if (receive_program(in, out, endian, nullptr, MINRT_PROGRAM_MAX_SIZE, length, error) != ProgramResult::kReceived)
     return false;
-  return serve_scene(in, out, [&](minrt::ByteSource words) { return render(words, out, error); }, error);
+  // A checked scene is held and checked first, and the reply gets the
+  // trailer, as on the firmware (protocol/scene_check.hpp).
+  std::vector<uint8_t> memory(16 * 1024 * 1024);
+  minrt::Arena arena(memory.data(), memory.size());
+  minrt::send::raw_check::CheckedSink reply(out, false);
+  const bool ok = serve_scene(
+      in, out,
+      [&](minrt::ByteSource words) {
+        minrt::send::scene_check::CourseScene scene;
+        if (!scene.begin(words, endian, arena, reply, error)) return false;
+        return render(scene.words(), reply.sink(), error);
+      },
+      error);
+  if (ok) reply.end();
+  return ok;
 }
 
 bool serve_framed(Link& link, const minrt::RenderOptions& options, const RowRenderFn& render) {

@@ -6,7 +6,7 @@
 // Opens BOARD_TTY (e.g. the pty firmware-sim announced), creates a new pty
 // for the host, prints "fault-relay: uart on /dev/pts/N" on stderr and
 // relays bytes both ways. Faults hit the board->host direction, and the
-// host->board direction too with --both-ways. At the end it prints what it
+// host->board direction too with --both-ways, or only with --to-board. At the end it prints what it
 // did ("fault-relay: ... dropped, ... flipped ...").
 #include <fcntl.h>
 #include <poll.h>
@@ -50,6 +50,9 @@ void print_help() {
       "  --dup-at N        send board->host byte N twice\n"
       "  --flip-at N       flip the lowest bit of board->host byte N\n"
       "  --both-ways       damage host->board bytes too (own seed + 1)\n"
+      "  --to-board        damage host->board bytes only (own seed + 1)\n"
+      "  --to-board-drop-at N, --to-board-dup-at N, --to-board-flip-at N\n"
+      "                    the same single-byte faults on host->board byte N\n"
       "  -h, --help        this text\n"
       "  --version         version\n"
       "\n"
@@ -101,7 +104,8 @@ bool forward(int to, const std::uint8_t* p, size_t n, fault_relay::FaultModel* m
 int main(int argc, char** argv) {
   fault_relay::FaultRates rates;
   unsigned long long seed = 1;
-  bool both = false;
+  bool both = false, to_board_only = false;
+  std::int64_t up_drop_at = -1, up_dup_at = -1, up_flip_at = -1;
   const char* board_path = nullptr;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -128,6 +132,10 @@ int main(int argc, char** argv) {
     else if (a == "--dup-at") { num(v); rates.dup_at = static_cast<std::int64_t>(v); }
     else if (a == "--flip-at") { num(v); rates.flip_at = static_cast<std::int64_t>(v); }
     else if (a == "--both-ways") both = true;
+    else if (a == "--to-board") both = to_board_only = true;
+    else if (a == "--to-board-drop-at") { num(v); up_drop_at = static_cast<std::int64_t>(v); both = true; }
+    else if (a == "--to-board-dup-at") { num(v); up_dup_at = static_cast<std::int64_t>(v); both = true; }
+    else if (a == "--to-board-flip-at") { num(v); up_flip_at = static_cast<std::int64_t>(v); both = true; }
     else if (a == "-h" || a == "--help") { print_help(); return 0; }
     else if (a == "--version") { std::printf("fault-relay %s\n", MINRT_VERSION); return 0; }
     else if (!a.empty() && a[0] == '-') usage_error("unknown option '" + a + "'");
@@ -156,9 +164,21 @@ int main(int argc, char** argv) {
     if (!(p.revents & POLLHUP)) break;
     ::usleep(10000);
   }
-  fault_relay::FaultRates up_rates = rates;  // the single-byte faults are board->host only
-  up_rates.drop_at = up_rates.dup_at = up_rates.flip_at = -1;
-  fault_relay::FaultModel down(seed, rates), up(seed + 1, up_rates);
+  fault_relay::FaultRates up_rates = rates;  // --drop-at and the like are board->host only
+  up_rates.drop_at = up_drop_at;
+  up_rates.dup_at = up_dup_at;
+  up_rates.flip_at = up_flip_at;
+  if (up_drop_at >= 0 || up_dup_at >= 0 || up_flip_at >= 0) {
+    if (!to_board_only) up_rates.drop = up_rates.flip = up_rates.dup = up_rates.delay = up_rates.stall = 0;
+  }
+  fault_relay::FaultRates down_rates = rates;
+  if (to_board_only) {
+    down_rates = fault_relay::FaultRates{};
+    down_rates.drop_at = rates.drop_at;
+    down_rates.dup_at = rates.dup_at;
+    down_rates.flip_at = rates.flip_at;
+  }
+  fault_relay::FaultModel down(seed, down_rates), up(seed + 1, up_rates);
   std::uint8_t buf[4096];
   bool board_open = true;
   for (;;) {
