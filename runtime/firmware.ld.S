@@ -14,8 +14,14 @@
 #include "firmware_layout.h"
 
 
+/* The Cortex-M port (runtime/cortex-m/) links with this script too. */
+#ifdef MINRT_LINK_ARM
+OUTPUT_ARCH(arm)
+ENTRY(minrt_reset)
+#else
 OUTPUT_ARCH(riscv)
 ENTRY(_start)
+#endif
 
 #ifdef MINRT_LINK_PROGRAM
 #define MINRT_IMAGE_BASE MINRT_PROGRAM_LOAD_ADDR
@@ -89,5 +95,5 @@ SECTIONS
   ASSERT(MINRT_PROGRAM_LOAD_ADDR + MINRT_PROGRAM_MAX_SIZE <= __stack_bottom, "the program region reaches the stack")
 #endif
 
-  /DISCARD/ : { *(.eh_frame .eh_frame_hdr .comment .note .note.*) }
+  /DISCARD/ : { *(.eh_frame .eh_frame_hdr .comment .note .note.* .ARM.exidx .ARM.exidx.* .ARM.extab .ARM.extab.*) }
 }

@@ -19,6 +19,8 @@
 #include "uart_sifive.hpp"
 #elif MINRT_BOARD_UART == MINRT_UART_KIND_GENERIC
 #include "uart_generic.hpp"
+#elif MINRT_BOARD_UART == MINRT_UART_KIND_CMSDK
+#include "cortex-m/uart_cmsdk.hpp"
 #else
 #error "minrt/board.h names no known UART kind"
 #endif
@@ -31,6 +33,8 @@ using UartDriver = Ns16550;
 using UartDriver = LitexUart;
 #elif MINRT_BOARD_UART == MINRT_UART_KIND_SIFIVE
 using UartDriver = SifiveUart;
+#elif MINRT_BOARD_UART == MINRT_UART_KIND_CMSDK
+using UartDriver = CmsdkUart;
 #else
 using UartDriver = GenericUart;
 #endif

@@ -21,6 +21,9 @@
 #define MINRT_HALT_KIND_ECALL 2
 #define MINRT_HALT_KIND_STORE 3
 #define MINRT_HALT_KIND_LOOP 4
+/* The Cortex-M port's (runtime/cortex-m/minrt/board.h), no board-file kinds. */
+#define MINRT_UART_KIND_CMSDK 5
+#define MINRT_HALT_KIND_SEMIHOSTING 5
 
 #include <minrt/board.h>
 
