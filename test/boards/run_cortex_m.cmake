@@ -1,11 +1,10 @@
 # The Cortex-M4 port in qemu-system-arm -M mps2-an386 renders SCENE at its
 # built-in size to the bytes of `minrt --precision float --shims portable`
-# at SIZE, and exits 0 through semihosting. Without qemu-system-arm the test
-# is skipped (status 77) with a message.
+# at SIZE, and exits 0 through semihosting. Without qemu-system-arm it stops
+# with a message the test's SKIP_REGULAR_EXPRESSION turns into "skipped".
 #   cmake -DQEMU=... -DHOST=minrt -DELF=... -DSCENE=... -DSIZE=32x32 -DWORK=dir -P run_cortex_m.cmake
 if(NOT QEMU)
-  message("qemu-system-arm not found: install it (scripts/setup.sh) to run the Cortex-M port")
-  cmake_language(EXIT 77)
+  message(FATAL_ERROR "qemu-system-arm not found: install it (scripts/setup.sh) to run the Cortex-M port")
 endif()
 file(MAKE_DIRECTORY "${WORK}")
 get_filename_component(name "${SCENE}" NAME_WE)
