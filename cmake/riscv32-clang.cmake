@@ -2,16 +2,16 @@
 #
 #   cmake -S runtime/firmware -B build-rv \
 #     -DCMAKE_TOOLCHAIN_FILE=cmake/riscv32-clang.cmake \
-#     [-DMINRT_RV_MARCH=rv32im -DMINRT_RV_MABI=ilp32]
+#     [-DMINRT_BOARD=$PWD/boards/murax.board] [-DMINRT_FW_ISA=rv32im]
 #
-# MINRT_RV_MARCH/MINRT_RV_MABI choose the ISA (default rv32imf/ilp32f, the
-# reference CPU; rv32im/ilp32 for a CPU without FPU, with soft float).
-# MINRT_CLANG and MINRT_LLD may name the tools; otherwise they are searched.
+# The ISA flags (-march/-mabi) come from the board file, in
+# runtime/firmware/CMakeLists.txt, so that a reconfigure with another board
+# takes effect (flags set here stay as the build directory's first configure
+# left them). MINRT_CLANG and MINRT_LLD may name the tools; otherwise they
+# are searched.
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR riscv32)
 
-set(MINRT_RV_MARCH "rv32imf" CACHE STRING "RISC-V -march for the firmware")
-set(MINRT_RV_MABI "ilp32f" CACHE STRING "RISC-V -mabi for the firmware")
 find_program(MINRT_CLANG NAMES clang clang-14 REQUIRED)
 find_program(MINRT_LLD NAMES ld.lld ld.lld-14 REQUIRED)
 get_filename_component(_minrt_clang_dir "${MINRT_CLANG}" DIRECTORY)
@@ -29,7 +29,7 @@ set(CMAKE_ASM_COMPILER_TARGET ${_minrt_target})
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
 set(_minrt_common
-    "-march=${MINRT_RV_MARCH} -mabi=${MINRT_RV_MABI} -mcmodel=medany -ffreestanding -nostdlib -ffp-contract=off -ffunction-sections -fdata-sections")
+    "-mcmodel=medany -ffreestanding -nostdlib -ffp-contract=off -ffunction-sections -fdata-sections")
 set(CMAKE_C_FLAGS_INIT "${_minrt_common}")
 set(CMAKE_ASM_FLAGS_INIT "${_minrt_common}")
 set(CMAKE_CXX_FLAGS_INIT "${_minrt_common} -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")

@@ -13,6 +13,7 @@
   .globl _start
   .type _start, @function
 _start:
+#if MINRT_BOARD_ZICSR
   la t0, minrt_trap_entry
   csrw mtvec, t0
 #ifdef __riscv_flen
@@ -20,6 +21,9 @@ _start:
   csrs mstatus, t0
   fscsr zero             /* round to nearest even, no flags */
 #endif
+#endif
+  /* Without Zicsr (board file: zicsr = no) there is no trap vector to set:
+   * a CPU exception goes wherever the core sends it. */
 
   /* Handoff from the course boot loader (memory_map.h): a5 when a4 holds
    * the magic, kept in s4 until .bss is cleared. */

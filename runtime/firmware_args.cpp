@@ -21,8 +21,14 @@ Diagnostic& bad_value(Diagnostic& error, const char* option, const char* value) 
 
 }  // namespace
 
+// A port whose UART receives slower than the firmware polls (QEMU's
+// one-byte CMSDK UART) builds with 0: wait for the scene's own end.
+#ifndef MINRT_FW_DEFAULT_IDLE_POLLS
+#define MINRT_FW_DEFAULT_IDLE_POLLS MINRT_IDLE_POLLS_DEFAULT
+#endif
+
 bool parse_arguments(int argc, char** argv, FirmwareOptions& options, Diagnostic& error) {
-  options.idle_polls = MINRT_IDLE_POLLS_DEFAULT;
+  options.idle_polls = MINRT_FW_DEFAULT_IDLE_POLLS;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     const bool takes_value =

@@ -37,7 +37,7 @@ size_t stack_high_water() {
   return span(p, top);
 }
 
-void line(Ns16550 uart, const char* name, size_t bytes) {
+void line(Uart uart, const char* name, size_t bytes) {
   Diagnostic text;
   text.text(name).text(" ").number(static_cast<int64_t>(bytes)).text("\n");
   uart.write(text.message);
@@ -47,7 +47,7 @@ void line(Ns16550 uart, const char* name, size_t bytes) {
 
 ArenaRegion arena_region() { return {__arena_start, span(__arena_start, __arena_end)}; }
 
-void print_footprint(Ns16550 uart, size_t arena_used, size_t image_bytes) {
+void print_footprint(Uart uart, size_t arena_used, size_t image_bytes) {
   // Measured first, before the printing below uses stack of its own.
   const size_t high_water = stack_high_water();
   line(uart, "text", span(__text_start, __text_end));

@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-#include "ns16550.hpp"
+#include "uart.hpp"
 
 namespace minrt::fw {
 
@@ -19,6 +19,6 @@ ArenaRegion arena_region();
 
 // Prints "name bytes" lines: text, rodata, data, bss, arena, arena_used,
 // stack, stack_high_water, image_bytes.
-void print_footprint(Ns16550 uart, size_t arena_used, size_t image_bytes);
+void print_footprint(Uart uart, size_t arena_used, size_t image_bytes);
 
 }  // namespace minrt::fw

@@ -23,7 +23,7 @@
 #include "firmware_layout.h"
 #include "footprint.hpp"
 #include "board_math.hpp"
-#include "ns16550.hpp"
+#include "uart.hpp"
 #include "program_loader.hpp"
 #include "protocol/protocol_course_board.hpp"
 #include "protocol/protocol_framed_board.hpp"
@@ -40,7 +40,7 @@ using Math = minrt::fw::Math;  // board_math.hpp
 minrt::RenderState<Math> g_state;
 
 // The raw protocol's error line (the course protocol's too).
-void send_error(minrt::fw::Ns16550 uart, const minrt::Diagnostic& error) {
+void send_error(minrt::fw::Uart uart, const minrt::Diagnostic& error) {
   minrt::fw::SerialOutput link(uart, false);
   minrt::send::course::write_error_line(link.sink(), error);
 }
@@ -93,7 +93,7 @@ minrt::RenderStatus serve_course_text(minrt::send::scene_check::CourseScene& upl
 // started there (program_loader.hpp); a program started that way (this
 // renderer linked for the region, say) finds the handoff and skips stage 1.
 // Stage 2: 0xaa, then the scene words, rendered as in the raw protocol.
-int serve_course(minrt::fw::Ns16550 uart, int argc, char** argv, const minrt::fw::FirmwareOptions& options,
+int serve_course(minrt::fw::Uart uart, int argc, char** argv, const minrt::fw::FirmwareOptions& options,
                  minrt::Arena& arena, minrt::Diagnostic& error) {
   using namespace minrt::send::course;
   const uint32_t handoff = minrt::fw::program_handoff();
@@ -162,7 +162,7 @@ struct StoreOnBegin {
   void end() { framer.end(); }
 };
 
-int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
+int serve_framed(minrt::fw::Uart uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
                  minrt::Diagnostic& error) {
   using namespace minrt::send::framed;
   const uint32_t idle = options.idle_polls > UINT32_MAX / MINRT_FRAMED_IDLE_FACTOR
@@ -225,7 +225,7 @@ int serve_framed(minrt::fw::Ns16550 uart, const minrt::fw::FirmwareOptions& opti
 // Called by crt0; extern "C" because freestanding C++ does not treat main
 // specially (it would be mangled).
 extern "C" int main(int argc, char** argv) {
-  minrt::fw::Ns16550 uart = minrt::fw::console_uart();
+  minrt::fw::Uart uart = minrt::fw::console_uart();
   uart.init();
 
   minrt::fw::FirmwareOptions options;

@@ -7,7 +7,7 @@
 #include <minrt/memory_map.h>
 
 #include "core/base/diagnostic.hpp"
-#include "ns16550.hpp"
+#include "uart.hpp"
 #include "program_loader.hpp"
 
 namespace {
@@ -24,7 +24,7 @@ void hex(minrt::Diagnostic& d, uint32_t v) {
 }  // namespace
 
 extern "C" int main(int argc, char** argv) {
-  minrt::fw::Ns16550 uart = minrt::fw::console_uart();
+  minrt::fw::Uart uart = minrt::fw::console_uart();
   uart.init();
   uintptr_t pc;
   asm volatile("auipc %0, 0" : "=r"(pc));  // where this code really runs

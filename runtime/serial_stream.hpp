@@ -10,7 +10,7 @@
 #include <stdint.h>
 
 #include "core/base/byte_io.hpp"
-#include "ns16550.hpp"
+#include "uart.hpp"
 
 namespace minrt::fw {
 
@@ -18,7 +18,7 @@ class SerialInput {
  public:
   // `binary`: MINRT_END_OF_INPUT is an ordinary byte (course words, framed
   // frames); only the idle count ends the input.
-  SerialInput(Ns16550 uart, uint32_t idle_polls, bool binary = false)
+  SerialInput(Uart uart, uint32_t idle_polls, bool binary = false)
       : uart_(uart), idle_polls_(idle_polls), binary_(binary) {}
 
   ByteSource source() { return ByteSource{&read_fn, this}; }
@@ -28,7 +28,7 @@ class SerialInput {
   static int read_fn(void* ctx);
   int next();
 
-  Ns16550 uart_;
+  Uart uart_;
   uint32_t idle_polls_;
   bool binary_;
   bool ended_ = false;
@@ -37,7 +37,7 @@ class SerialInput {
 // Sends everything to the UART, or with `discard` only counts it.
 class SerialOutput {
  public:
-  SerialOutput(Ns16550 uart, bool discard) : uart_(uart), discard_(discard) {}
+  SerialOutput(Uart uart, bool discard) : uart_(uart), discard_(discard) {}
 
   ByteSink sink() { return ByteSink{&write_fn, this}; }
   size_t bytes() const { return bytes_; }
@@ -45,7 +45,7 @@ class SerialOutput {
  private:
   static void write_fn(void* ctx, const uint8_t* data, size_t size);
 
-  Ns16550 uart_;
+  Uart uart_;
   bool discard_;
   size_t bytes_ = 0;
 };

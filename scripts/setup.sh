@@ -25,6 +25,7 @@ packages=(
   gdb-multiarch             # the simulator's GDB stub test
   help2man man-db           # man pages
   qemu-user qemu-system-misc gcc-riscv64-unknown-elf
+  qemu-system-arm           # the Cortex-M port's test (runtime/cortex-m)
   valgrind
   strace                    # the minrt --sync test counts fsync calls
   time                      # GNU time: CPU seconds in bench/host/contest_speed.sh

@@ -1,12 +1,31 @@
-/* Memory map of the reference RV32IMF board, shared by the firmware (runtime/),
- * its linker script (preprocessed with this header) and firmware-sim.
- * Laid out like QEMU's "virt" machine so qemu-system-riscv32 -M virt runs the
- * same ELF. Plain #defines so the linker script can use them too. */
+/* Memory map of the board the firmware is built for, shared by the firmware
+ * (runtime/), its linker script (preprocessed with this header), firmware-sim
+ * and the host tools. The board's own values (RAM, UART, halt device) come
+ * from <minrt/board.h>, generated from a boards/NAME.board file by
+ * cmake/minrt_board.cmake: the firmware build puts its board's header ahead
+ * of include/ on the include path; everything else gets include/minrt/board.h,
+ * the reference board's (boards/qemu-virt.board, laid out like QEMU's "virt"
+ * machine so qemu-system-riscv32 -M virt runs the same ELF). This file holds
+ * what is the same on every board. Plain #defines so the linker script can
+ * use them too. */
 #ifndef MINRT_MEMORY_MAP_H
 #define MINRT_MEMORY_MAP_H
 
-#define MINRT_RAM_BASE 0x80000000
-#define MINRT_RAM_DEFAULT_SIZE 0x00400000 /* 4 MiB: the course machine's SRAM */
+/* Kinds of UART and of halt device a board file names (MINRT_BOARD_UART,
+ * MINRT_BOARD_HALT in board.h). */
+#define MINRT_UART_KIND_NS16550 1
+#define MINRT_UART_KIND_LITEX 2
+#define MINRT_UART_KIND_SIFIVE 3
+#define MINRT_UART_KIND_GENERIC 4
+#define MINRT_HALT_KIND_FINISHER 1
+#define MINRT_HALT_KIND_ECALL 2
+#define MINRT_HALT_KIND_STORE 3
+#define MINRT_HALT_KIND_LOOP 4
+/* The Cortex-M port's (runtime/cortex-m/minrt/board.h), no board-file kinds. */
+#define MINRT_UART_KIND_CMSDK 5
+#define MINRT_HALT_KIND_SEMIHOSTING 5
+
+#include <minrt/board.h>
 
 /* Program region of the course protocol's boot stage (runtime/program_loader.*):
  * a program uploaded after 0x99 is a flat binary (code and data, entry at its
@@ -15,8 +34,15 @@
  * block at the top. The resident firmware keeps its own image (code, data,
  * .bss) below the region; its render arena may overlap the region, which
  * holds a program only when the built-in renderer does not run. */
-#define MINRT_PROGRAM_LOAD_ADDR 0x80100000
+#if MINRT_RAM_DEFAULT_SIZE >= 0x00400000
+#define MINRT_PROGRAM_LOAD_ADDR (MINRT_RAM_BASE + 0x00100000)
 #define MINRT_PROGRAM_MAX_SIZE 0x00100000 /* 1 MiB of code and data */
+#else
+/* Less than 4 MiB of RAM: no room for a second image, every upload is
+ * refused as too large. */
+#define MINRT_PROGRAM_LOAD_ADDR MINRT_RAM_BASE
+#define MINRT_PROGRAM_MAX_SIZE 0
+#endif
 
 /* Registers at the program's entry (runtime/program_start.S):
  *   a0, a1, a3, sp   argc, argv, MINRT_BOOT_MAGIC and the stack as the boot
@@ -31,7 +57,6 @@
 #define MINRT_PROGRAM_BIG_ENDIAN 0x2
 
 /* NS16550A-compatible UART, byte-wide registers. */
-#define MINRT_UART_BASE 0x10000000
 #define MINRT_UART_REG_DATA 0 /* RBR on read, THR on write */
 #define MINRT_UART_REG_LSR 5  /* line status */
 #define MINRT_UART_LSR_DATA_READY 0x01
@@ -40,7 +65,9 @@
 
 /* SiFive test finisher: write 0x5555 to stop with status 0,
  * (code << 16) | 0x3333 to stop with status `code`. */
-#define MINRT_FINISHER_BASE 0x00100000
+#if MINRT_BOARD_HALT == MINRT_HALT_KIND_FINISHER
+#define MINRT_FINISHER_BASE MINRT_BOARD_HALT_ADDR
+#endif
 #define MINRT_FINISHER_PASS 0x5555
 #define MINRT_FINISHER_FAIL 0x3333
 #define MINRT_FINISHER_SIZE 0x1000

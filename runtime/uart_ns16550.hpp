@@ -1,5 +1,5 @@
-// Polling driver for the board's NS16550A-compatible UART (memory_map.h).
-// The registers are one byte wide and one byte apart; the driver never uses
+// Polling driver for an NS16550A-compatible UART (uart = ns16550). The
+// registers are one byte wide and one byte apart; the driver never uses
 // interrupts and never changes the FIFO setup (which on QEMU would discard
 // bytes already received).
 #pragma once
@@ -30,26 +30,18 @@ class Ns16550 {
  public:
   explicit Ns16550(uintptr_t base) : regs_(reinterpret_cast<Ns16550Registers*>(base)) {}
 
-  // 8 data bits, no parity, 1 stop bit, interrupts off. The baud rate is
-  // whatever the board set (emulators ignore it).
+  // 8 data bits, no parity, 1 stop bit, interrupts off; the baud divisor
+  // when the board file gives one (emulators ignore it).
   void init();
-
   bool rx_ready() const { return (regs_->lsr & MINRT_UART_LSR_DATA_READY) != 0; }
-  // The received byte; only valid when rx_ready().
   uint8_t rx() { return regs_->data; }
-
-  // Waits until the transmitter takes the byte.
-  void tx(uint8_t byte);
-  void write(const uint8_t* data, size_t size);
-  void write(const char* text);
-  // Waits until every written byte has left the transmitter.
-  void drain() const;
+  bool tx_ready() const { return (regs_->lsr & MINRT_UART_LSR_THR_EMPTY) != 0; }
+  void put(uint8_t byte) { regs_->data = byte; }
+  bool tx_idle() const { return (regs_->lsr & kLsrTransmitterEmpty) != 0; }
 
  private:
+  static constexpr uint8_t kLsrTransmitterEmpty = 0x40;  // THR and shift register empty
   Ns16550Registers* regs_;
 };
-
-// The board's UART at MINRT_UART_BASE (the driver holds no other state).
-inline Ns16550 console_uart() { return Ns16550(MINRT_UART_BASE); }
 
 }  // namespace minrt::fw
