@@ -10,6 +10,7 @@
 #include "core/base/arena.hpp"
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "eastray_maps.hpp"
 #include "eastray_preprocess.hpp"
 #include "file_input.hpp"
 #include "formats/eastray/eastray_reader.hpp"
@@ -57,7 +58,7 @@ void print_warning(void* ctx, const Diagnostic& d) {
 }
 
 template <class M>
-bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::vector<uint8_t>& rgb,
+bool render(const std::string& path, const ExpandedEastray& x, bool quiet, int& width, int& height, std::vector<uint8_t>& rgb,
             std::string& output_statement, std::string& error, LiveWindow* window) {
   using R = typename M::real;
   using Scene = eastray::Scene<R>;
@@ -90,6 +91,14 @@ bool render(const ExpandedEastray& x, bool quiet, int& width, int& height, std::
   model::EastrayShading<R> shading;
   model::Scene<R> model;
   eastray::to_model(scene, shading, model);
+  EastrayMaps maps(path);
+  int bad = 0;
+  if (!maps.load(scene.map_files, scene.map_file_count, bad, error)) {
+    error = x.at(scene.map_files[bad].line, scene.map_files[bad].col) + ": error: " + error;
+    return false;
+  }
+  shading.map_images = maps.table();
+  shading.map_image_count = maps.count();
   general::Renderer<M> renderer;
   if (!renderer.setup(model, arena, 1)) {
     error = "error: scene does not fit in memory";
@@ -145,11 +154,11 @@ bool render_eastray(const std::string& path, const std::string& shown, const std
   int& height = out.height;
   std::vector<uint8_t>& rgb = out.rgb;
   std::string& statement = out.output_statement;
-  if (v.precision == Precision::kDouble) return render<LibmDouble>(x, quiet, width, height, rgb, statement, error, window);
-  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(x, quiet, width, height, rgb, statement, error, window);
-  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(x, quiet, width, height, rgb, statement, error, window);
-  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(x, quiet, width, height, rgb, statement, error, window);
-  return render<PortableFloat>(x, quiet, width, height, rgb, statement, error, window);
+  if (v.precision == Precision::kDouble) return render<LibmDouble>(path, x, quiet, width, height, rgb, statement, error, window);
+  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(path, x, quiet, width, height, rgb, statement, error, window);
+  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(path, x, quiet, width, height, rgb, statement, error, window);
+  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(path, x, quiet, width, height, rgb, statement, error, window);
+  return render<PortableFloat>(path, x, quiet, width, height, rgb, statement, error, window);
 }
 
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,

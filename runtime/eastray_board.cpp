@@ -12,7 +12,7 @@ namespace {
 
 // Items of each kind a scene may have on the board: about 1 MB of arena in
 // float, the rest for the text, the BVH and the rows.
-constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096, 4096, 4096};
+constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096, 4096, 4096, 16, 256, 256};
 
 }  // namespace
 

@@ -9,8 +9,11 @@
 #include <stdint.h>
 
 #include "core/math/vec3.hpp"
+#include "formats/model/eastray_mapping.hpp"
 
 namespace minrt::model {
+
+struct Texture;  // scene.hpp
 
 inline constexpr int kColorNameBytes = 32;
 
@@ -38,9 +41,13 @@ struct EastrayMaterial {
   R ior, half_distance, bump;
   Specular specular;
   // kBlinn: p[0] intensity, p[1] exponent. kBlinnGauss: rgb, p[3] spread,
-  // p[4] Fresnel constant. kCookTorrance: rgb, p[3] ratio, p[4] spread 1,
-  // p[5] spread 2. kConstant: color1 p[0..2], color2 p[3..5], p[6] k.
-  R p[8];
+  // p[4] Fresnel constant. kAniso1: rgb, p[3..5] circle centre, p[6..8]
+  // circle normal, p[9..11] A B C. kAniso2: rgb, p[3..5] scratch
+  // direction, p[6..8] A B C. kCookTorrance: rgb, p[3] ratio, p[4]
+  // spread 1, p[5] spread 2. kConstant: color1 p[0..2], color2 p[3..5], p[6] k.
+  R p[kSpecularParams];
+  // The first mapping entry of each parameter (EastrayMapSlot), or kNoMapping.
+  int32_t map[kMapSlots];
 };
 
 // The scene-wide statements, with the manual's defaults (docs/eastray.md).
@@ -75,6 +82,12 @@ struct EastrayShading : EastraySettings<R> {
   int32_t material_count = 0;
   const EastrayLight<R>* lights = nullptr;
   int32_t light_count = 0;
+  // Mapping (eastray_mapping.hpp): a surface's material at or above
+  // material_count names mapped_objects[material - material_count].
+  const EastrayMapping<R>* mappings = nullptr;
+  const EastrayMappedObject<R>* mapped_objects = nullptr;
+  const Texture* map_images = nullptr;  // one per map_data entry, 3 bytes a texel (linear 0..255)
+  int32_t map_image_count = 0;
 };
 
 }  // namespace minrt::model

@@ -13,6 +13,7 @@
 // a later one (CS418's rule, Hit::offer, is the later object).
 #pragma once
 
+#include "render/general/eastray_mapping.hpp"
 #include "render/general/tracer.hpp"
 
 namespace minrt::general {
@@ -163,7 +164,9 @@ Vec3<typename M::real> Tracer<M, F>::eastray_shadow(const Vec3<R>& p, const Vec3
   for (int layer = 0; layer < kMaxShadowLayers; ++layer) {
     const EastrayHit h = eastray_nearest(o, l, e.eps, remaining, true);
     if (!h.found) return f;
-    const model::EastrayMaterial<R>& m = e.materials[h.material];
+    model::EastrayMaterial<R> scratch;
+    V n = h.normal;
+    const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, o + l * h.t, n, scratch);
     if (maxc(m.transmit) <= R(0)) return V{};
     f = f * m.transmit;
     o = offset(o + l * h.t, dot(h.normal, l) > R(0) ? h.normal : -h.normal);
@@ -304,10 +307,12 @@ Vec3<typename M::real> Tracer<M, F>::eastray_radiance(const Vec3<R>& o, const Ve
   // never meets the surface it starts on.
   const EastrayHit h = eastray_nearest(o, d, depth == 0 ? R(0) : e.eps, R(1e30), false);
   if (!h.found) return eastray_sky(d);
-  const model::EastrayMaterial<R>& m = e.materials[h.material];
   const V p = o + d * h.t;
+  model::EastrayMaterial<R> scratch;
+  V mapped_normal = h.normal;
+  const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, p, mapped_normal, scratch);
   const bool from_inside = dot(h.geo, d) > R(0);
-  const V n = from_inside ? -h.normal : h.normal;  // toward the viewer
+  const V n = from_inside ? -mapped_normal : mapped_normal;  // toward the viewer
   const V g = from_inside ? -h.geo : h.geo;
   const V v = -d;
   const V above = offset(p, g), below = offset(p, -g);
