@@ -12,6 +12,7 @@
 #include "core/math/math_portable.hpp"
 #include "eastray_maps.hpp"
 #include "eastray_preprocess.hpp"
+#include "image_merge.hpp"
 #include "file_input.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "posix/output_file.hpp"
@@ -58,8 +59,11 @@ void print_warning(void* ctx, const Diagnostic& d) {
 }
 
 template <class M>
-bool render(const std::string& path, const ExpandedEastray& x, bool quiet, int& width, int& height, std::vector<uint8_t>& rgb,
-            std::string& output_statement, std::string& error, LiveWindow* window) {
+bool render(const std::string& path, const ExpandedEastray& x, bool quiet, EastrayImage& out, std::string& error,
+            LiveWindow* window) {
+  int& width = out.width;
+  int& height = out.height;
+  std::vector<uint8_t>& rgb = out.rgb;
   using R = typename M::real;
   using Scene = eastray::Scene<R>;
   const typename Scene::Capacities caps = Scene::Capacities::for_text(x.text.size());
@@ -84,9 +88,10 @@ bool render(const std::string& path, const ExpandedEastray& x, bool quiet, int& 
     error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
     return false;
   }
-  output_statement = scene.output;
+  out.output_statement = scene.output;
   width = scene.width;
   height = scene.height;
+  out.x0 = scene.x0, out.y0 = scene.y0, out.x1 = scene.x1, out.y1 = scene.y1;
   // Drawn by the general tracer with EASTRAY's finish.
   model::EastrayShading<R> shading;
   model::Scene<R> model;
@@ -150,19 +155,16 @@ bool render_eastray(const std::string& path, const std::string& shown, const std
                     bool quiet, EastrayImage& out, std::string& error, LiveWindow* window) {
   ExpandedEastray x;
   if (!preprocess_eastray(path, shown, text, x, error)) return false;
-  int& width = out.width;
-  int& height = out.height;
-  std::vector<uint8_t>& rgb = out.rgb;
-  std::string& statement = out.output_statement;
-  if (v.precision == Precision::kDouble) return render<LibmDouble>(path, x, quiet, width, height, rgb, statement, error, window);
-  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(path, x, quiet, width, height, rgb, statement, error, window);
-  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(path, x, quiet, width, height, rgb, statement, error, window);
-  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(path, x, quiet, width, height, rgb, statement, error, window);
-  return render<PortableFloat>(path, x, quiet, width, height, rgb, statement, error, window);
+  if (v.precision == Precision::kDouble) return render<LibmDouble>(path, x, quiet, out, error, window);
+  if (v.shims == ShimSet::kLibm) return render<LibmFloat>(path, x, quiet, out, error, window);
+  if (v.shims == ShimSet::kPortableFast) return render<PortableFloatFast>(path, x, quiet, out, error, window);
+  if (v.shims == ShimSet::kPortableMin) return render<PortableFloatMin>(path, x, quiet, out, error, window);
+  return render<PortableFloat>(path, x, quiet, out, error, window);
 }
 
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
-                        int& height, std::string& output_statement, std::string& error) {
+                        int& height, std::string& output_statement, std::string& error,
+                        std::vector<std::pair<std::string, std::string>>* maps) {
   ExpandedEastray x;
   if (!preprocess_eastray(path, path, text, x, error)) return false;
   using M = PortableFloat;
@@ -187,6 +189,11 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   width = scene.width;
   height = scene.height;
   output_statement = scene.output;
+  if (maps != nullptr) {
+    maps->clear();
+    for (int32_t i = 0; i < scene.map_file_count; ++i)
+      maps->emplace_back(scene.map_files[i].file, x.at(scene.map_files[i].line, scene.map_files[i].col) + ": error: ");
+  }
   board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
   return true;
 }
@@ -223,20 +230,28 @@ int run_eastray_cli(EastrayCli& cli) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
     return kExitIoError;
   }
+  // An existing file of the same format and size keeps its pixels outside
+  // the display window (line 180); any other is replaced, black outside it.
+  std::vector<uint8_t> merged = rgb;
+  const MergeOutcome merge = merge_outside_window(out_path, tiff, width, height,
+                                                  PixelWindow{img.x0, img.y0, img.x1, img.y1}, merged, why);
+  if (merge == MergeOutcome::kReplaced && !cli.quiet)
+    std::fprintf(stderr, "minrt: warning: %s: replaced, black outside the display window (line 180)\n", why.c_str());
+  why.clear();
   AtomicOutput output(cli.durability);
   bool written = output.open(out_path, cli.write_through, why);
   if (written) {
     if (tiff) {
-      written = write_tiff_rgb(output.file(), width, height, rgb, why);
+      written = write_tiff_rgb(output.file(), width, height, merged, why);
     } else {
       RgbaImage image;
       image.width = width;
       image.height = height;
       image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
       for (std::size_t i = 0, n = static_cast<std::size_t>(width) * height; i < n; ++i) {
-        image.rgba[i * 4] = rgb[i * 3];
-        image.rgba[i * 4 + 1] = rgb[i * 3 + 1];
-        image.rgba[i * 4 + 2] = rgb[i * 3 + 2];
+        image.rgba[i * 4] = merged[i * 3];
+        image.rgba[i * 4 + 1] = merged[i * 3 + 1];
+        image.rgba[i * 4 + 2] = merged[i * 3 + 2];
         image.rgba[i * 4 + 3] = 255;
       }
       written = write_png(output.file(), image, why);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "posix/output_file.hpp"
@@ -33,6 +34,7 @@ struct EastrayImage {
   int width = 0, height = 0;
   std::vector<uint8_t> rgb;      // 3 bytes a pixel, top row first
   std::string output_statement;  // the scene's `output` name, if any
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // the display window: the pixels computed
 };
 
 // Preprocesses `text` (read from `path`, shown as `shown`; includes are
@@ -51,8 +53,11 @@ std::string eastray_output_name(const std::string& option, const std::string& st
 // What host-send sends the board: the scene preprocessed and checked here
 // with the board's reader and arithmetic (so a bad scene is refused with its
 // located message before sending), behind the `/* EASTRAY */` marker the
-// firmware recognises. Also the image size and the output statement.
+// firmware recognises. Also the image size and the output statement, and
+// (when `maps` is given) the map_data file names as written, each with the
+// "FILE:LINE:COL: error: " its load errors start with.
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
-                        int& height, std::string& output_statement, std::string& error);
+                        int& height, std::string& output_statement, std::string& error,
+                        std::vector<std::pair<std::string, std::string>>* maps = nullptr);
 
 }  // namespace minrt::host

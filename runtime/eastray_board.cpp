@@ -18,7 +18,8 @@ constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096,
 
 bool is_eastray_start(int first_byte) { return first_byte == '/'; }
 
-SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena,
+                                const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   eastray::Scene<R> scene;
   if (!scene.allocate(arena, kCapacity)) {
@@ -38,6 +39,31 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
   model::EastrayShading<R> shading;
   model::Scene<R> model;
   eastray::to_model(scene, shading, model);
+  // The map_data images, found by their names as written among those
+  // host-send decoded and sent ahead (host/eastray_maps.cpp reads them).
+  if (scene.map_file_count > 0) {
+    model::Texture* maps = arena.alloc_zeroed<model::Texture>(static_cast<size_t>(scene.map_file_count));
+    if (maps == nullptr) {
+      error.text("no room for the map table");
+      return SceneResult::kOutOfMemory;
+    }
+    for (int32_t i = 0; i < scene.map_file_count; ++i) {
+      const model::EastrayMapFile& f = scene.map_files[i];
+      const int32_t t = textures != nullptr ? textures->find(f.file) : -1;
+      if (t < 0) {
+        error.pos.line = f.line;
+        error.pos.col = f.col;
+        error.has_pos = true;
+        error.text("map_data image ").text(f.file).text(" was not sent ahead of the scene (host-send sends the ones it names)");
+        return SceneResult::kSceneError;
+      }
+      maps[i].width = textures->items[t].width;
+      maps[i].height = textures->items[t].height;
+      maps[i].rgb = textures->items[t].rgb;
+    }
+    shading.map_images = maps;
+    shading.map_image_count = scene.map_file_count;
+  }
   general::Renderer<Math> renderer;
   if (!renderer.setup(model, arena, 1)) {
     error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
@@ -48,7 +74,8 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
   return SceneResult::kOk;
 }
 
-SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, const send::textures::Table* textures,
+                           Diagnostic& error) {
   // The text, whole, at the arena's top: parts are read again at every
   // call. Room is left below it for the scene, the reader's part table and
   // the rows.
@@ -78,7 +105,7 @@ SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic
   for (size_t i = size; i-- > 0;) kept[i] = text[i];  // kept >= text: from the end
   text = kept;
   PngStoredWriter png(out);
-  return render_eastray_rows(text, size, rgba_row_sink_of(png), arena, error);
+  return render_eastray_rows(text, size, rgba_row_sink_of(png), arena, textures, error);
 }
 
 }  // namespace minrt::fw

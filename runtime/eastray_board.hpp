@@ -10,15 +10,19 @@
 #include "core/base/byte_io.hpp"
 #include "core/base/diagnostic.hpp"
 #include "core/image/row_sink.hpp"
+#include "protocol/texture_blobs.hpp"
 #include "scene_result.hpp"
 
 namespace minrt::fw {
 
-SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, Diagnostic& error);
+// `textures`: the map_data images host-send sent ahead of the scene (null: none).
+SceneResult render_eastray(ByteSource in, ByteSink out, Arena& arena, const send::textures::Table* textures,
+                           Diagnostic& error);
 
 // The same from text already in memory (course and framed uploads) into an
 // RGBA row sink.
-SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error);
+SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena,
+                                const send::textures::Table* textures, Diagnostic& error);
 
 // True when the scene's first byte is host-send's `/*` marker (no other
 // format the board reads starts with '/').

@@ -233,7 +233,7 @@ struct RawFormat {
 // starts with a letter is CS418.
 constexpr RawFormat kRawFormats[] = {
     {[](int first, const char*) { return minrt::fw::is_eastray_start(first); },
-     [](const RawScene& s) { return status_of(minrt::fw::render_eastray(s.text, s.out, s.arena, s.error)); }},
+     [](const RawScene& s) { return status_of(minrt::fw::render_eastray(s.text, s.out, s.arena, s.textures, s.error)); }},
     {[](int first, const char* word) { return minrt::fw::is_jaworski_start(first, word); },
      [](const RawScene& s) { return status_of(minrt::fw::render_jaworski(s.text, s.out, s.arena, s.error)); }},
     {[](int, const char* word) { return minrt::fw::is_minirt_start(word); },

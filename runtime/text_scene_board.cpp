@@ -18,9 +18,7 @@ SceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaRowSi
     MemorySource text{scene.bytes, scene.size};
     return render_jaworski_rows(text.source(), rows, arena, error);
   }
-  if (scene.format == MINRT_SCENE_FORMAT_EASTRAY)
-    return render_eastray_rows(reinterpret_cast<const char*>(scene.bytes), scene.size, rows, arena, error);
-  // CS418, miniRT: the textures, when the scene names any, come first (the preamble
+  // CS418, miniRT, EASTRAY: the textures, when the scene names any, come first (the preamble
   // the raw protocol sends too), read where they lie.
   send::textures::Table* textures = nullptr;
   size_t at = 0;
@@ -35,6 +33,9 @@ SceneResult render_text_scene_rows(const send::text::TextScene& scene, RgbaRowSi
       return SceneResult::kSceneError;
     at = 1 + used;
   }
+  if (scene.format == MINRT_SCENE_FORMAT_EASTRAY)
+    return render_eastray_rows(reinterpret_cast<const char*>(scene.bytes + at), scene.size - at, rows, arena, textures,
+                               error);
   MemorySource text{scene.bytes + at, scene.size - at};
   if (scene.format == MINRT_SCENE_FORMAT_MINIRT)
     return render_minirt_rows(text.source(), rows, arena, width, height, all_features, textures, error);

@@ -62,6 +62,7 @@ class Reader {
     while (!tok_.end()) {
       if (!statement()) return false;
     }
+    first_walk_ = false;
     if (tok_.bad_comment) return fail_here("unterminated comment (no '*/' before the end of the scene)");
     if (main_count_ == 0) return fail_here("no main object: the scene needs an 'obj [ ... ]' without a name");
     // Walk 2: names and recursion, part by part.
@@ -328,7 +329,9 @@ class Reader {
   // mapped.
   bool surface_material(int32_t mat, int32_t number_map, const Affine<R>& m, const SourcePos& at, int32_t& out) {
     out = mat;
-    bool mapped = number_map != kNone;
+    // The anisotropic models' scratches are in the object's frame too.
+    const Specular spec = scene_.materials[mat].specular;
+    bool mapped = number_map != kNone || spec == Specular::kAniso1 || spec == Specular::kAniso2;
     for (int i = 0; i < model::kMapSlots && !mapped; ++i) mapped = scene_.materials[mat].map[i] != kNone;
     if (!mapped) return true;
     model::EastrayMappedObject<R> o{};
@@ -742,7 +745,8 @@ class Reader {
         for (int c = 0; c < 3; ++c) x.m[r * 3 + c] = a[r * 4 + c];
       }
       x.t = V{a[3], a[7], a[11]};
-      if (a[12] != R(0) || a[13] != R(0) || a[14] != R(0) || a[15] != R(1))
+      // Once per :mtx written: the later walks over the same text stay quiet.
+      if (first_walk_ && (a[12] != R(0) || a[13] != R(0) || a[14] != R(0) || a[15] != R(1)))
         warn("warning: the :mtx bottom row is taken as 0 0 0 1 (affine moves only)");
     } else {
       fail_at(t.pos, "unknown move command ");
@@ -1368,6 +1372,7 @@ class Reader {
   Diagnostic* error_ = nullptr;
   bool ok_ = true;
   bool mapping_warned_ = false;
+  bool first_walk_ = true;       // walk 1: the text is read for the first time
   bool collect_maps_ = false;     // reading a colour: number() keeps mappings
   int32_t last_map_ = kNone;      // the chain read since take_map()
   bool in_polygon_ = false;

@@ -386,7 +386,14 @@ int run(const Options& options) {
     // The scene is checked first, so a bad one gets its located message
     // whatever protocol was asked for.
     std::string expanded, statement;
-    if (!minrt::host::eastray_board_text(o.scene, scene, expanded, png_width, png_height, statement, why))
+    std::vector<std::pair<std::string, std::string>> maps;
+    if (!minrt::host::eastray_board_text(o.scene, scene, expanded, png_width, png_height, statement, why, &maps))
+      return fail(kExitFirmware, "scene rejected before sending: " + why);
+    // Its map_data images go first, decoded here, as a CS418 scene's textures.
+    const std::size_t slash = o.scene.rfind('/');
+    const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
+    if (!build_eastray_texture_preamble(maps, slash == std::string::npos ? "" : o.scene.substr(0, slash + 1),
+                                        ram - kFirmwareReserve, texture_preamble, why))
       return fail(kExitFirmware, "scene rejected before sending: " + why);
     if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
     scene = expanded;
@@ -518,7 +525,7 @@ int run(const Options& options) {
     // Course and framed carry these formats as text behind a header
     // (protocol/text_scene_upload.hpp), the bytes raw would send; the image
     // is the format's own.
-    const std::string bytes = texture_preamble + scene;  // no preamble: Jaworski, EASTRAY, untextured
+    const std::string bytes = texture_preamble + scene;  // no preamble: Jaworski, untextured
     const std::uint32_t tag = cs418      ? MINRT_SCENE_FORMAT_CS418
                               : minirt   ? MINRT_SCENE_FORMAT_MINIRT
                               : eastray  ? MINRT_SCENE_FORMAT_EASTRAY

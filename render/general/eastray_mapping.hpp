@@ -197,7 +197,7 @@ const model::EastrayMaterial<typename M::real>& eastray_surface(const model::Eas
     const int32_t head = m.map[model::kMapSpecular + i];
     if (head == model::kNoMapping || !eastray_map_chain<M>(e, head, po, no, false, v)) continue;
     // A colour's three take the colour; every other parameter the mean.
-    const bool colour = i == 0 || (i == 3 && m.specular == model::Specular::kConstant);
+    const bool colour = (i == 0 && m.specular != model::Specular::kBlinn) || (i == 3 && m.specular == model::Specular::kConstant);
     if (colour) m.p[i] = v.x, m.p[i + 1] = v.y, m.p[i + 2] = v.z;
     else m.p[i] = mono(v);
   }
@@ -221,6 +221,22 @@ const model::EastrayMaterial<typename M::real>& eastray_surface(const model::Eas
     V nw = o.to_object.transposed(bent);
     const R wl = dot(nw, nw);
     if (wl > R(0)) n = nw / M::sqrt(wl);
+  }
+  if (m.specular == model::Specular::kAniso1 || m.specular == model::Specular::kAniso2) {
+    // The scratches' direction at the hit, in the world (eastray_specular
+    // reads it from p[3..5] and A B C from p[6..8]): model 2's circles
+    // run around the axis p[6..8] through the centre p[3..5]; model 3's
+    // lines along p[3..5]; both in the object's frame.
+    V dir;
+    if (m.specular == model::Specular::kAniso1) {
+      const V axis{m.p[6], m.p[7], m.p[8]}, centre{m.p[3], m.p[4], m.p[5]};
+      dir = cross(axis, po - centre);
+      m.p[6] = m.p[9], m.p[7] = m.p[10], m.p[8] = m.p[11];
+    } else {
+      dir = V{m.p[3], m.p[4], m.p[5]};
+    }
+    const V w = o.to_world.vector(dir);
+    m.p[3] = w.x, m.p[4] = w.y, m.p[5] = w.z;
   }
   return m;
 }

@@ -292,6 +292,30 @@ Vec3<typename M::real> Tracer<M, F>::eastray_specular(const model::EastrayMateri
       const V f = f0 + (V{R(1), R(1), R(1)} - f0) * w;
       return f * (dist * g / (R(4) * ndv));
     }
+    case model::Specular::kAniso1:
+    case model::Specular::kAniso2: {
+      // Ward's anisotropic Gaussian (the manual names the models, lines
+      // 573-584, but gives no formula): the scratches' direction t (p[3..5],
+      // set at the hit by eastray_surface) laid into the surface, B the
+      // roughness along them, A across them (B < A: the highlight streaks
+      // across the scratches), C the strength; times n.l like the diffuse.
+      if (!(ndv > R(0))) return V{};
+      V t{m.p[3], m.p[4], m.p[5]};
+      t = t - n * dot(t, n);
+      R tl = dot(t, t);
+      const R a = m.p[6], b = m.p[7], strength = m.p[8];
+      if (!(a > R(0)) || !(b > R(0))) return V{};
+      if (!(tl > R(0))) {  // a circle's centre, or scratches along n: any direction of the surface
+        t = cross(abs(n.x) < R(0.9) ? V{R(1), R(0), R(0)} : V{R(0), R(1), R(0)}, n);
+        tl = dot(t, t);
+      }
+      t = t / M::sqrt(tl);
+      const V bt = cross(n, t);
+      const R ht = dot(h, t) / b, hb = dot(h, bt) / a;
+      const R k = strength * M::exp(-(ht * ht + hb * hb) / (ndh * ndh)) /
+                  (R(4) * kPi * a * b * M::sqrt(ndl * ndv)) * ndl;
+      return V{m.p[0], m.p[1], m.p[2]} * k;
+    }
     default:
       return V{};
   }
