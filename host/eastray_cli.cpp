@@ -12,6 +12,8 @@
 #include "core/math/math_portable.hpp"
 #include "eastray_maps.hpp"
 #include "eastray_preprocess.hpp"
+#include "colour_depth.hpp"
+#include "eastray_stereo.hpp"
 #include "image_merge.hpp"
 #include "file_input.hpp"
 #include "formats/eastray/eastray_reader.hpp"
@@ -92,6 +94,8 @@ bool render(const std::string& path, const ExpandedEastray& x, bool quiet, Eastr
   width = scene.width;
   height = scene.height;
   out.x0 = scene.x0, out.y0 = scene.y0, out.x1 = scene.x1, out.y1 = scene.y1;
+  out.output_bits = scene.output_bits;
+  out.dither = scene.dither;
   // Drawn by the general tracer with EASTRAY's finish.
   model::EastrayShading<R> shading;
   model::Scene<R> model;
@@ -104,6 +108,13 @@ bool render(const std::string& path, const ExpandedEastray& x, bool quiet, Eastr
   }
   shading.map_images = maps.table();
   shading.map_image_count = maps.count();
+  if (scene.input[0] != 0) {  // a missing or unreadable input is an error, where it is named
+    if (!maps.load_input(scene.input, error)) {
+      error = x.at(scene.input_line, scene.input_col) + ": error: input " + error;
+      return false;
+    }
+    shading.input_image = maps.input();
+  }
   general::Renderer<M> renderer;
   if (!renderer.setup(model, arena, 1)) {
     error = "error: scene does not fit in memory";
@@ -111,43 +122,59 @@ bool render(const std::string& path, const ExpandedEastray& x, bool quiet, Eastr
   }
   // Rows are independent: every core takes the next one.
   const std::size_t stride = static_cast<std::size_t>(width) * 3;
-  rgb.assign(stride * static_cast<std::size_t>(height), 0);
   const int threads = minrt_thread_count(0, height);  // every core
-  std::atomic<int> next{0};
   if (window != nullptr && !window->is_open()) window = nullptr;
-  if (window != nullptr) window->begin(width, height);
-  auto work = [&] {
-    std::vector<uint8_t> row(static_cast<std::size_t>(width) * 4);
-    for (int y; (y = next.fetch_add(1)) < height;) {
-      renderer.render_row(y, row.data());
-      uint8_t* out = rgb.data() + stride * static_cast<std::size_t>(y);
-      for (int x = 0; x < width; ++x)
-        for (int c = 0; c < 3; ++c) out[3 * x + c] = row[4 * static_cast<std::size_t>(x) + c];
-      if (window != nullptr) window->row_rgb(y, rgb.data() + stride * static_cast<std::size_t>(y));
-    }
+  auto draw = [&](std::vector<uint8_t>& image) {
+    image.assign(stride * static_cast<std::size_t>(height), 0);
+    std::atomic<int> next{0};
+    if (window != nullptr) window->begin(width, height);
+    auto work = [&] {
+      std::vector<uint8_t> row(static_cast<std::size_t>(width) * 4);
+      for (int y; (y = next.fetch_add(1)) < height;) {
+        renderer.render_row(y, row.data());
+        uint8_t* line = image.data() + stride * static_cast<std::size_t>(y);
+        for (int i = 0; i < width; ++i)
+          for (int c = 0; c < 3; ++c) line[3 * i + c] = row[4 * static_cast<std::size_t>(i) + c];
+        if (window != nullptr) window->row_rgb(y, line);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threads; ++i) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
   };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  out.stereo = scene.stereo;
+  if (!scene.stereo) {
+    draw(rgb);
+    return true;
+  }
+  // rmode 1: the right eye's image, then the left's (the view reads the
+  // eye at every row).
+  const Vec3<R> eye = shading.eye;
+  shading.eye = general::eastray_stereo_eye<M>(shading, 1);
+  draw(rgb);
+  shading.eye = eye;
+  shading.eye = general::eastray_stereo_eye<M>(shading, -1);
+  draw(out.rgb_left);
+  shading.eye = eye;
   return true;
 }
 
 }  // namespace
 
 std::string eastray_output_name(const std::string& option, const std::string& statement,
-                                const std::string& scene_path, bool& tiff, std::string& warning) {
+                                const std::string& scene_path, bool& tiff, std::string& unsupported) {
   std::string name = !option.empty() ? option : !statement.empty() ? statement
                                               : scene_path == "-" ? std::string("-")
                                                                   : replace_extension(scene_path, ".png");
   for (char& c : name)
     if (c == '\\') c = '/';
   tiff = ends_with_nocase(name, ".tif") || ends_with_nocase(name, ".tiff");
-  if (option.empty() && (ends_with_nocase(name, ".fal") || ends_with_nocase(name, ".ipr") || ends_with_nocase(name, ".hpi"))) {
-    const std::string png = replace_extension(name, ".png");
-    warning = "output format of '" + name + "' is not supported; writing PNG to '" + png + "'";
-    name = png;
-  }
+  for (const char* old : {".fal", ".ipr", ".hpi"})
+    if (ends_with_nocase(name, old))
+      unsupported = "cannot write " + name + ": " + std::string(old + 1) +
+                    " images (FM TOWNS raw RGB and headers) are not written; name a .tif or .tiff (TIFF) or any other "
+                    "name (PNG)";
   return name;
 }
 
@@ -193,46 +220,26 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
     maps->clear();
     for (int32_t i = 0; i < scene.map_file_count; ++i)
       maps->emplace_back(scene.map_files[i].file, x.at(scene.map_files[i].line, scene.map_files[i].col) + ": error: ");
+    if (scene.input[0] != 0) maps->emplace_back(scene.input, x.at(scene.input_line, scene.input_col) + ": error: input ");
   }
   board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
   return true;
 }
 
-int run_eastray_cli(EastrayCli& cli) {
-  const bool from_stdin = cli.scene_path == "-";
-  const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
-  if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
-  EastrayImage img;
-  std::string error, why;
-  LiveWindow window;
-  if (cli.show && !window.open("minrt: " + shown, why))
-    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
-  if (!render_eastray(cli.scene_path, shown, cli.scene_text, cli.variant, cli.quiet, img, error, &window)) {
-    std::fprintf(stderr, "%s\n", error.c_str());
-    return kExitSceneError;
-  }
-  // Once the file is written (or not asked for), the window stays until closed.
-  auto wait_for_window = [&] {
-    if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
-    return 0;
-  };
+// Writes one image to `out_path`: 32K colours for a 16-bit TIFF, the
+// existing file's pixels outside the display window. False after the message.
+bool write_eastray_file(const std::string& out_path, bool tiff, const EastrayImage& img,
+                        const std::vector<uint8_t>& rgb, const EastrayCli& cli) {
   const int width = img.width, height = img.height;
-  const std::vector<uint8_t>& rgb = img.rgb;
-  const std::string& statement = img.output_statement;
-  if (!cli.save) return wait_for_window();
-  bool tiff = false;
-  std::string warning;
-  why.clear();
-  const std::string out_path =
-      eastray_output_name(cli.output_path != nullptr ? cli.output_path : "", statement, cli.scene_path, tiff, warning);
-  if (!warning.empty() && !cli.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
+  std::string why;
   if (!check_output_target(out_path, cli.write_through, why)) {
     std::fprintf(stderr, "minrt: error: %s\n", why.c_str());
-    return kExitIoError;
+    return false;
   }
+  std::vector<uint8_t> merged = rgb;
+  if (tiff && img.output_bits == 16) reduce_to_32k_colours(merged, width, height, img.dither);
   // An existing file of the same format and size keeps its pixels outside
   // the display window (line 180); any other is replaced, black outside it.
-  std::vector<uint8_t> merged = rgb;
   const MergeOutcome merge = merge_outside_window(out_path, tiff, width, height,
                                                   PixelWindow{img.x0, img.y0, img.x1, img.y1}, merged, why);
   if (merge == MergeOutcome::kReplaced && !cli.quiet)
@@ -260,6 +267,44 @@ int run_eastray_cli(EastrayCli& cli) {
   if (!written || !output.commit(why)) {
     output.discard();
     std::fprintf(stderr, "minrt: error: cannot write %s: %s\n", out_path.c_str(), why.empty() ? "write error" : why.c_str());
+    return false;
+  }
+  return true;
+}
+
+int run_eastray_cli(EastrayCli& cli) {
+  const bool from_stdin = cli.scene_path == "-";
+  const std::string shown = from_stdin ? "<stdin>" : cli.scene_path;
+  if (!read_scene_file(cli.scene_path, cli.scene_text, kMaxSceneBytes)) return kExitSceneError;
+  EastrayImage img;
+  std::string error, why;
+  LiveWindow window;
+  if (cli.show && !window.open("minrt: " + shown, why))
+    std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
+  if (!render_eastray(cli.scene_path, shown, cli.scene_text, cli.variant, cli.quiet, img, error, &window)) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return kExitSceneError;
+  }
+  // Once the file is written (or not asked for), the window stays until closed.
+  auto wait_for_window = [&] {
+    if (window.is_open() && !window.finish_and_wait(why)) std::fprintf(stderr, "minrt: warning: %s\n", why.c_str());
+    return 0;
+  };
+  const std::string& statement = img.output_statement;
+  if (!cli.save) return wait_for_window();
+  bool tiff = false;
+  std::string unsupported;
+  why.clear();
+  const std::string out_path =
+      eastray_output_name(cli.output_path != nullptr ? cli.output_path : "", statement, cli.scene_path, tiff, unsupported);
+  if (!unsupported.empty()) {
+    std::fprintf(stderr, "minrt: error: %s\n", unsupported.c_str());
+    return kExitSceneError;
+  }
+  if (!img.stereo) {
+    if (!write_eastray_file(out_path, tiff, img, img.rgb, cli)) return kExitIoError;
+  } else if (!write_eastray_file(eastray_stereo_name(out_path, 'r'), tiff, img, img.rgb, cli) ||
+             !write_eastray_file(eastray_stereo_name(out_path, 'l'), tiff, img, img.rgb_left, cli)) {
     return kExitIoError;
   }
   return wait_for_window();

@@ -35,6 +35,10 @@ struct EastrayImage {
   std::vector<uint8_t> rgb;      // 3 bytes a pixel, top row first
   std::string output_statement;  // the scene's `output` name, if any
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // the display window: the pixels computed
+  int output_bits = 24;          // output_mode
+  bool dither = false;
+  bool stereo = false;           // rmode 1: rgb is the right eye's image,
+  std::vector<uint8_t> rgb_left; // this the left's
 };
 
 // Preprocesses `text` (read from `path`, shown as `shown`; includes are
@@ -46,9 +50,10 @@ bool render_eastray(const std::string& path, const std::string& shown, const std
 
 // Where the image goes and in which format, from -o, the scene's output
 // statement and the scene's path. `tiff` is set for .tif/.tiff names;
-// `warning` is set when an old format's name was replaced by .png.
+// `unsupported` is set (the reason) for the manual's .fal, .ipr and .hpi,
+// which no library writes.
 std::string eastray_output_name(const std::string& option, const std::string& statement,
-                                const std::string& scene_path, bool& tiff, std::string& warning);
+                                const std::string& scene_path, bool& tiff, std::string& unsupported);
 
 // What host-send sends the board: the scene preprocessed and checked here
 // with the board's reader and arithmetic (so a bad scene is refused with its

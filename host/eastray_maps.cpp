@@ -94,4 +94,16 @@ bool EastrayMaps::load(const model::EastrayMapFile* files, int count, int& bad, 
   return true;
 }
 
+bool EastrayMaps::load_input(const std::string& name, std::string& error) {
+  Diagnostic d;
+  const int32_t id = files_.find(name, d);
+  if (id < 0) {
+    error = d.message;
+    return false;
+  }
+  input_ = files_.table()[id];
+  has_input_ = true;
+  return true;
+}
+
 }  // namespace minrt::host

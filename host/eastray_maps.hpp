@@ -31,10 +31,15 @@ class EastrayMaps {
   bool load(const model::EastrayMapFile* files, int count, int& bad, std::string& error);
   const model::Texture* table() const { return textures_.empty() ? nullptr : textures_.data(); }
   int count() const { return static_cast<int>(textures_.size()); }
+  // The `input` statement's background image (read like the maps).
+  bool load_input(const std::string& name, std::string& error);
+  const model::Texture* input() const { return has_input_ ? &input_ : nullptr; }
 
  private:
   TextureFiles files_;
   std::vector<model::Texture> textures_;
+  model::Texture input_;
+  bool has_input_ = false;
 };
 
 }  // namespace minrt::host

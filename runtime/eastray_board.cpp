@@ -64,6 +64,21 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
     shading.map_images = maps;
     shading.map_image_count = scene.map_file_count;
   }
+  if (scene.input[0] != 0) {  // back_mode's background, sent like the maps
+    const int32_t t = textures != nullptr ? textures->find(scene.input) : -1;
+    model::Texture* input = t < 0 ? nullptr : arena.alloc_zeroed<model::Texture>(1);
+    if (input == nullptr) {
+      error.pos.line = scene.input_line;
+      error.pos.col = scene.input_col;
+      error.has_pos = true;
+      error.text("input image ").text(scene.input).text(" was not sent ahead of the scene");
+      return SceneResult::kSceneError;
+    }
+    input->width = textures->items[t].width;
+    input->height = textures->items[t].height;
+    input->rgb = textures->items[t].rgb;
+    shading.input_image = input;
+  }
   general::Renderer<Math> renderer;
   if (!renderer.setup(model, arena, 1)) {
     error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(

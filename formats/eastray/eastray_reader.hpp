@@ -81,6 +81,8 @@ class Reader {
       if (!items(w, Affine<R>{}, scene_.root, ']', mains_[i].pos, 0)) return false;
     }
     finish_vertex_normals();
+    if (scene_.background != 0 && scene_.input[0] == 0)
+      return fail_at(back_at_, "back_mode 1 and 2 composite the input image, and the scene names none ('input FILE ;')");
     return true;
   }
 
@@ -375,6 +377,11 @@ class Reader {
       if (!number(aspect, "display dot aspect")) return false;
       if (!(aspect > R(0))) return fail_at(at, "display dot aspect must be above 0");
       scene_.aspect = aspect;
+      // Line 78: a window that breaks these computes nothing; an image of
+      // nothing is refused rather than written black.
+      if (!(0 <= scene_.x0 && scene_.x0 <= scene_.x1 && scene_.x1 < scene_.width && 0 <= scene_.y0 &&
+            scene_.y0 <= scene_.y1 && scene_.y1 < scene_.height))
+        return fail_at(st.pos, "display window must satisfy 0 <= x0 <= x1 < width and 0 <= y0 <= y1 < height (line 75)");
       return end_statement("display");
     }
     if (st.is("condition")) {
@@ -415,9 +422,8 @@ class Reader {
     }
     if (st.is("voxel")) return integer(scene_.voxel, "voxel count", 0, 1024) && end_statement("voxel");
     if (st.is("rmode")) {
-      R v;
-      if (!number(v, "rmode")) return false;
-      if (v != R(0)) warn("warning: rmode 1 (stereo) is not supported; one image is rendered");
+      // 0 one image, 1 two with the camera's parallax (lines 56-58).
+      if (!on_off(scene_.stereo, "rmode")) return false;
       return end_statement("rmode");
     }
     if (st.is("output")) {
@@ -429,22 +435,34 @@ class Reader {
       return end_statement("output");
     }
     if (st.is("output_mode")) {
-      R bits, dither;
-      if (!number(bits, "output_mode bits") || !number(dither, "output_mode dither")) return false;
-      if (bits != R(24)) warn("warning: output_mode 16 is not supported; 24-bit colour is written");
+      const SourcePos at = tok_.pos;
+      R bits;
+      if (!number(bits, "output_mode bits")) return false;
+      if (bits != R(16) && bits != R(24)) return fail_at(at, "output_mode bits must be 16 or 24 (lines 158-159)");
+      scene_.output_bits = bits == R(16) ? 16 : 24;
+      if (!on_off(scene_.dither, "output_mode dither switch")) return false;
       return end_statement("output_mode");
     }
     if (st.is("input")) {
       if (tok_.end() || tok_.length == 1) return fail_here("expected a file name after 'input'");
-      warn("warning: input (background compositing) is not supported; ignored");
+      if (tok_.length >= kOutputNameBytes) return fail_here("input file name too long");
+      for (int i = 0; i < tok_.length; ++i) scene_.input[i] = tok_.s[i];
+      scene_.input[tok_.length] = 0;
+      scene_.input_line = tok_.pos.line;
+      scene_.input_col = tok_.pos.col;
       advance();
       return end_statement("input");
     }
     if (st.is("back_mode")) {
-      R v[4];
-      for (R& x : v)
-        if (!number(x, "back_mode")) return false;
-      if (v[0] != R(0)) warn("warning: back_mode with an input image is not supported; the sky is the background");
+      back_at_ = st.pos;
+      if (!integer(scene_.background, "back_mode background mode 0, 1 or 2", 0, 2) ||
+          !on_off(scene_.back_reflect, "back_mode reflection switch") ||
+          !on_off(scene_.back_transmit, "back_mode transmission switch") ||
+          !on_off(scene_.alpha_pure, "back_mode alpha mode"))
+        return false;
+      if (scene_.back_reflect || scene_.back_transmit)
+        warn("warning: back_mode reflection and transmission switches 1 are read; missed secondary rays take the sky");
+      if (scene_.alpha_pure) warn("warning: back_mode alpha mode 1 is read; no alpha channel is written");
       return end_statement("back_mode");
     }
     if (st.is("e_light") || st.is("p_light") || st.is("s_light")) {
@@ -1372,6 +1390,7 @@ class Reader {
   Diagnostic* error_ = nullptr;
   bool ok_ = true;
   bool mapping_warned_ = false;
+  SourcePos back_at_{};          // the back_mode statement
   bool first_walk_ = true;       // walk 1: the text is read for the first time
   bool collect_maps_ = false;     // reading a colour: number() keeps mappings
   int32_t last_map_ = kNone;      // the chain read since take_map()

@@ -57,6 +57,8 @@ using MeshFace = model::MeshFace;
 template <class R>
 struct Scene : model::EastraySettings<R> {
   char output[kOutputNameBytes] = {};
+  char input[kOutputNameBytes] = {};  // `input`: the background image's file
+  int32_t input_line = 0, input_col = 0;
 
   Light<R>* lights = nullptr;
   int32_t light_count = 0, light_capacity = 0;

@@ -66,12 +66,21 @@ struct EastraySettings {
   // camera (105-117)
   Vec3<R> eye{R(0), R(0), R(10)}, look{}, up_point{R(0), R(10), R(0)};
   R fov = R(30), parallax = R(0);
+  bool stereo = false;  // rmode 1 (line 57): a right and a left image
   // mist, sky, env, shadow, voxel
   R mist_half = R(0);
   bool mist_to_sky = false;
   Vec3<R> sky{}, env{};
   bool shadows = true;
   int32_t voxel = 0;
+  // output_mode (lines 152-164): 16 (32K colours) or 24 bits, dither at 16
+  int32_t output_bits = 24;
+  bool dither = false;
+  // back_mode (lines 205-230): 0 the sky behind, sun discs seen; 1 the
+  // input image behind, no discs; 2 the input image and the discs. The
+  // reflection, transmission and alpha switches are read.
+  int32_t background = 0;
+  bool back_reflect = false, back_transmit = false, alpha_pure = false;
 };
 
 // What the EASTRAY finish reads: the settings, the colours the surfaces
@@ -88,6 +97,7 @@ struct EastrayShading : EastraySettings<R> {
   const EastrayMappedObject<R>* mapped_objects = nullptr;
   const Texture* map_images = nullptr;  // one per map_data entry, 3 bytes a texel (linear 0..255)
   int32_t map_image_count = 0;
+  const Texture* input_image = nullptr;  // `input`, behind the image when background is 1 or 2
 };
 
 }  // namespace minrt::model

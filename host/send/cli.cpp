@@ -398,12 +398,12 @@ int run(const Options& options) {
     if (!o.verify_ref.empty()) return fail(kExitUsage, "--verify compares PPM images; it does not apply to EASTRAY scenes");
     scene = expanded;
     bool tiff = false;
-    std::string warning;
-    const std::string name = minrt::host::eastray_output_name("", statement, o.scene, tiff, warning);
+    std::string unsupported;
+    const std::string name = minrt::host::eastray_output_name("", statement, o.scene, tiff, unsupported);
     if (!o.output_given) {
+      if (!unsupported.empty()) return fail(kExitFirmware, "scene rejected before sending: " + unsupported);
       o.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;  // the board sends PNG
-      if (!warning.empty() || tiff)
-        std::fprintf(stderr, "host-send: warning: the board sends PNG; writing %s\n", o.output.c_str());
+      if (tiff) std::fprintf(stderr, "host-send: warning: the board sends PNG; writing %s\n", o.output.c_str());
     }
     if (o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
       return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");

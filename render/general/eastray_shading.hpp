@@ -176,7 +176,7 @@ Vec3<typename M::real> Tracer<M, F>::eastray_shadow(const Vec3<R>& p, const Vec3
   return f;
 }
 
-// The sky, with visible sun discs (back_mode 0).
+// The sky, with visible sun discs (back_mode 0 and 2).
 template <class M, uint32_t F>
 Vec3<typename M::real> Tracer<M, F>::eastray_sky(const Vec3<R>& d) const {
   using V = Vec3<R>;
@@ -185,6 +185,7 @@ Vec3<typename M::real> Tracer<M, F>::eastray_sky(const Vec3<R>& d) const {
   constexpr R kDeg = R(kEastrayPi / 180.0);
   constexpr R kPi = R(kEastrayPi);
   V c = e.sky;
+  if (e.background == 1) return c;  // back_mode 1: the discs are not seen (line 213)
   for (int32_t i = 0; i < e.light_count; ++i) {
     const model::EastrayLight<R>& l = e.lights[i];
     if (l.kind != model::EastrayLightKind::kInfinite || !(l.size_deg > R(0))) continue;

@@ -63,6 +63,10 @@ class Tracer {
   // unit `d` brings back; `medium_half` is the absorption half distance of
   // the body it travels in (0: air, where the mist is).
   Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half) const;
+  // Whether a ray from `o` along `d` meets anything (EASTRAY's background image).
+  bool eastray_hits(const Vec3<R>& o, const Vec3<R>& d) const {
+    return eastray_nearest(o, d, R(0), R(1e30), false).found;
+  }
 
  private:
   // ------------------------------------------------------------ visibility
