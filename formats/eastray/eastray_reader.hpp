@@ -251,6 +251,14 @@ class Reader {
   // `number_map`: it maps an object's colour number, where the
   // all-directions modes have no range (SPEC.md 4.5).
   bool mapping_block(int32_t& head, bool store, bool number_map) {
+    // A '<' after a number inside the block is no mapping of the colour.
+    const bool collecting = collect_maps_;
+    collect_maps_ = false;
+    const bool ok = mapping_entries(head, store, number_map);
+    collect_maps_ = collecting;
+    return ok;
+  }
+  bool mapping_entries(int32_t& head, bool store, bool number_map) {
     const SourcePos open = tok_.pos;
     advance();
     int32_t tail = head;
