@@ -213,8 +213,11 @@ inline constexpr TextStart text_start(const uint8_t* text, size_t n) {
 
 namespace registry_detail {
 inline constexpr bool listed_hash_word(const uint8_t* text, size_t n) {
+  char word[TextStart::kWordBytes] = {};  // a copy as chars: constexpr allows no reinterpret_cast
+  if (n > TextStart::kWordBytes) return false;
+  for (size_t i = 0; i < n; ++i) word[i] = static_cast<char>(text[i]);
   for (const Format& f : kFormats)
-    if (any_of(f.first_words.words, reinterpret_cast<const char*>(text), n, false)) return true;
+    if (any_of(f.first_words.words, word, n, false)) return true;
   return false;
 }
 }  // namespace registry_detail

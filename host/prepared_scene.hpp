@@ -12,6 +12,7 @@
 
 #include "core/base/diagnostic.hpp"
 #include "formats/registry.hpp"
+#include "image_file_output.hpp"
 #include "posix/output_file.hpp"
 #include "render_variants.hpp"
 
@@ -61,6 +62,16 @@ class PreparedScene {
   int width = 0, height = 0;
   std::string output_name;  // where the scene puts its image ("": the driver's default)
   bool opaque = true;       // alpha is 255 everywhere (not for CS418's background)
+  // Images one render makes (EASTRAY's stereo pair: 2); select_view(v)
+  // comes before the rows of image v, which goes to view_output_name.
+  int views = 1;
+  virtual void select_view(int) {}
+  virtual std::string view_output_name(const std::string& out_path, int) const { return out_path; }
+  // Just before `image` is written to `out_path` as `kind`: a format may
+  // change the pixels (EASTRAY: 32K colours, an existing file's pixels
+  // outside the display window). Returns a warning line, or "".
+  virtual std::string finish_image(const std::string&, ImageFile, RgbaImage&) const { return ""; }
+
   // --stats
   const char* path = "";
   uint32_t features = 0;

@@ -150,32 +150,39 @@ int run_driver(const DriverOptions& options) {
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   }
 
-  RgbaImage image;
-  const auto t0 = std::chrono::steady_clock::now();
-  // To a window only: closing it (ESC, the close button) ends the program at
-  // once, without finishing the render.
-  const int threads = render_rows(*scene, options.threads, image, &window, window_only ? window.closed_flag() : nullptr);
-  const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (window_only && window.closed()) {
-    window.finish_and_wait(why);
-    return kExitOk;
-  }
-  if (options.stats)
-    std::fprintf(stderr,
-                 "minrt: %s: %s %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d "
-                 "thread%s\n",
-                 in.shown.c_str(), format.name, scene->width, scene->height, scene->path, scene->features,
-                 scene->parse_seconds, scene->build_seconds, render_seconds, threads, threads == 1 ? "" : "s");
-
-  if (!out_path.empty()) {
+  for (int view = 0; view < scene->views; ++view) {
+    scene->select_view(view);
+    RgbaImage image;
+    const auto t0 = std::chrono::steady_clock::now();
+    // To a window only: closing it (ESC, the close button) ends the program
+    // at once, without finishing the render. The window shows the first view.
+    LiveWindow* shown = view == 0 ? &window : nullptr;
+    const int threads =
+        render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr);
+    const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (window_only && window.closed()) {
+      window.finish_and_wait(why);
+      return kExitOk;
+    }
+    if (options.stats)
+      std::fprintf(stderr,
+                   "minrt: %s: %s %dx%d, path %s, features 0x%03x; parse %.4f s, BVH %.4f s, render %.4f s on %d "
+                   "thread%s\n",
+                   in.shown.c_str(), format.name, scene->width, scene->height, scene->path, scene->features,
+                   scene->parse_seconds, scene->build_seconds, render_seconds, threads, threads == 1 ? "" : "s");
+    if (out_path.empty()) continue;
+    const std::string target = scene->view_output_name(out_path, view);
+    const ImageFile kind = image_file_for(target, format.reply);
+    const std::string warning = scene->finish_image(target, kind, image);
+    if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
     AtomicOutput output(options.durability);
-    if (!output.open(out_path, options.write_through, why)) {
+    if (!output.open(target, options.write_through, why)) {
       print_error(style, "minrt: error: " + why);
       return io_status(style);
     }
-    if (!write_image(output.file(), image_file_for(out_path, format.reply), image, why) || !output.commit(why)) {
+    if (!write_image(output.file(), kind, image, why) || !output.commit(why)) {
       output.discard();
-      print_error(style, "minrt: error: cannot write " + out_path + ": " + (why.empty() ? "write error" : why));
+      print_error(style, "minrt: error: cannot write " + target + ": " + (why.empty() ? "write error" : why));
       return io_status(style);
     }
   }

@@ -35,7 +35,68 @@ const TiffLibrary* load_tiff(std::string& why) {
       why);
 }
 
+// The reading side, loaded on its own at the first TIFF read.
+struct TiffReadLibrary {
+#define MINRT_TIFF_READ_FUNCTIONS(X) \
+  X(TIFFOpen) X(TIFFGetField) X(TIFFReadRGBAImageOriented) X(TIFFClose) X(TIFFSetErrorHandler) X(TIFFSetWarningHandler)
+#define MINRT_TIFF_POINTER(name) decltype(&::name) name = nullptr;
+  MINRT_TIFF_READ_FUNCTIONS(MINRT_TIFF_POINTER)
+#undef MINRT_TIFF_POINTER
+};
+
+const TiffReadLibrary* load_tiff_reader(std::string& why) {
+  return load_library_once<TiffReadLibrary>(
+      MINRT_TIFF_SONAME, "libtiff",
+      [](TiffReadLibrary& library, SymbolBinder& bind) {
+#define MINRT_TIFF_LOAD(name) bind(library.name, #name);
+        MINRT_TIFF_READ_FUNCTIONS(MINRT_TIFF_LOAD)
+#undef MINRT_TIFF_LOAD
+      },
+      why);
+}
+
+// A map larger than this (per side) is refused before its pixels are read.
+constexpr uint32_t kMaxTiffSide = 16384;
+
 }  // namespace
+
+bool read_tiff_rgb(const std::string& path, int& width, int& height, std::vector<uint8_t>& rgb, std::string& error) {
+  const TiffReadLibrary* lib = load_tiff_reader(error);
+  if (lib == nullptr) return false;
+  // libtiff's own messages would go to stderr; the reason is ours.
+  lib->TIFFSetErrorHandler(nullptr);
+  lib->TIFFSetWarningHandler(nullptr);
+  TIFF* t = lib->TIFFOpen(path.c_str(), "r");
+  if (t == nullptr) {
+    error = "cannot open it as a TIFF file";
+    return false;
+  }
+  uint32_t w = 0, h = 0;
+  lib->TIFFGetField(t, TIFFTAG_IMAGEWIDTH, &w);
+  lib->TIFFGetField(t, TIFFTAG_IMAGELENGTH, &h);
+  if (w == 0 || h == 0 || w > kMaxTiffSide || h > kMaxTiffSide) {
+    lib->TIFFClose(t);
+    error = "TIFF image size " + std::to_string(w) + "x" + std::to_string(h) + " is not 1 to " +
+            std::to_string(kMaxTiffSide) + " a side";
+    return false;
+  }
+  std::vector<uint32_t> rgba(static_cast<std::size_t>(w) * h);
+  if (lib->TIFFReadRGBAImageOriented(t, w, h, rgba.data(), ORIENTATION_TOPLEFT, 0) == 0) {
+    lib->TIFFClose(t);
+    error = "libtiff cannot decode the TIFF image";
+    return false;
+  }
+  lib->TIFFClose(t);
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  rgb.resize(rgba.size() * 3);
+  for (std::size_t i = 0; i < rgba.size(); ++i) {
+    rgb[3 * i] = static_cast<uint8_t>(TIFFGetR(rgba[i]));
+    rgb[3 * i + 1] = static_cast<uint8_t>(TIFFGetG(rgba[i]));
+    rgb[3 * i + 2] = static_cast<uint8_t>(TIFFGetB(rgba[i]));
+  }
+  return true;
+}
 
 bool write_tiff_rgb(std::FILE* f, int width, int height, const std::vector<uint8_t>& rgb,
                     std::string& error) {

@@ -26,8 +26,8 @@ SceneResult minirt_rows(const BoardScene& s, RgbaRowSink rows) {
 }
 SceneResult eastray_rows(const BoardScene& s, RgbaRowSink rows) {
   if (s.bytes != nullptr)
-    return render_eastray_rows(reinterpret_cast<const char*>(s.bytes), s.size, rows, *s.arena, *s.error);
-  return render_eastray_source_rows(s.text, rows, *s.arena, *s.error);
+    return render_eastray_rows(reinterpret_cast<const char*>(s.bytes), s.size, rows, *s.arena, s.textures, *s.error);
+  return render_eastray_source_rows(s.text, rows, *s.arena, s.textures, *s.error);
 }
 
 constexpr BoardFormat kBoardFormats[] = {

@@ -11,11 +11,12 @@ namespace {
 
 // Items of each kind a scene may have on the board: about 1 MB of arena in
 // float, the rest for the text, the BVH and the rows.
-constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096, 4096, 4096};
+constexpr eastray::Scene<Math::real>::Capacities kCapacity{256, 256, 2048, 4096, 4096, 4096, 16, 256, 256};
 
 }  // namespace
 
-SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows, Arena& arena,
+                                const send::textures::Table* textures, Diagnostic& error) {
   using R = Math::real;
   eastray::Scene<R> scene;
   if (!scene.allocate(arena, kCapacity)) {
@@ -35,6 +36,46 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
   model::EastrayShading<R> shading;
   model::Scene<R> model;
   eastray::to_model(scene, shading, model);
+  // The map_data images, found by their names as written among those
+  // host-send decoded and sent ahead (host/eastray_maps.cpp reads them).
+  if (scene.map_file_count > 0) {
+    model::Texture* maps = arena.alloc_zeroed<model::Texture>(static_cast<size_t>(scene.map_file_count));
+    if (maps == nullptr) {
+      error.text("no room for the map table");
+      return SceneResult::kOutOfMemory;
+    }
+    for (int32_t i = 0; i < scene.map_file_count; ++i) {
+      const model::EastrayMapFile& f = scene.map_files[i];
+      const int32_t t = textures != nullptr ? textures->find(f.file) : -1;
+      if (t < 0) {
+        error.pos.line = f.line;
+        error.pos.col = f.col;
+        error.has_pos = true;
+        error.text("map_data image ").text(f.file).text(" was not sent ahead of the scene (host-send sends the ones it names)");
+        return SceneResult::kSceneError;
+      }
+      maps[i].width = textures->items[t].width;
+      maps[i].height = textures->items[t].height;
+      maps[i].rgb = textures->items[t].rgb;
+    }
+    shading.map_images = maps;
+    shading.map_image_count = scene.map_file_count;
+  }
+  if (scene.input[0] != 0) {  // back_mode's background, sent like the maps
+    const int32_t t = textures != nullptr ? textures->find(scene.input) : -1;
+    model::Texture* input = t < 0 ? nullptr : arena.alloc_zeroed<model::Texture>(1);
+    if (input == nullptr) {
+      error.pos.line = scene.input_line;
+      error.pos.col = scene.input_col;
+      error.has_pos = true;
+      error.text("input image ").text(scene.input).text(" was not sent ahead of the scene");
+      return SceneResult::kSceneError;
+    }
+    input->width = textures->items[t].width;
+    input->height = textures->items[t].height;
+    input->rgb = textures->items[t].rgb;
+    shading.input_image = input;
+  }
   general::Renderer<Math> renderer;
   if (!renderer.setup(model, arena, 1)) {
     error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
@@ -45,7 +86,8 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
   return SceneResult::kOk;
 }
 
-SceneResult render_eastray_source_rows(ByteSource in, RgbaRowSink rows, Arena& arena, Diagnostic& error) {
+SceneResult render_eastray_source_rows(ByteSource in, RgbaRowSink rows, Arena& arena,
+                                       const send::textures::Table* textures, Diagnostic& error) {
   // The text, whole, at the arena's top: parts are read again at every
   // call. Room is left below it for the scene, the reader's part table and
   // the rows.
@@ -74,7 +116,7 @@ SceneResult render_eastray_source_rows(ByteSource in, RgbaRowSink rows, Arena& a
   char* kept = arena.alloc_top<char>(size);
   for (size_t i = size; i-- > 0;) kept[i] = text[i];  // kept >= text: from the end
   text = kept;
-  return render_eastray_rows(text, size, rows, arena, error);
+  return render_eastray_rows(text, size, rows, arena, textures, error);
 }
 
 }  // namespace minrt::fw

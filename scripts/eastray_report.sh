@@ -3,6 +3,9 @@
 # double and in float with the portable shims the board uses, and writes
 #   docs/eastray/<scene>.png   contact sheets: double | float/portable | difference
 #   docs/eastray/table.md      the figures, one row per scene
+#   docs/eastray/own-<scene>.png the same sheets for test/eastray/scenes
+#                              (mapping, bump, anisotropy, stereo: the
+#                              right image, background)
 # There is no reference renderer: the sheets are for looking at (the README
 # of the scenes says what each must show; test/eastray/eastray_test.cpp
 # probes it).
@@ -43,4 +46,14 @@ trap 'rm -rf "$work"' EXIT
     echo "| $t | $ms | $off | $maxerr | $psnr |"
   done
 } > "$out/table.md"
+# Our own scenes (their maps lie beside them; rmode 1 writes NAME_r, NAME_l).
+own=$root/test/eastray/scenes
+for scene in "$own"/*.ray; do
+  t=$(basename "$scene" .ray)
+  (cd "$own" && "$bin/minrt" -q "$t.ray" -o "$work/own-$t.png" &&
+     "$bin/minrt" -q --precision float --shims portable "$t.ray" -o "$work/own-$t-f.png")
+  a=$work/own-$t.png b=$work/own-$t-f.png
+  [ -f "$a" ] || { a=$work/own-${t}_r.png; b=$work/own-$t-f_r.png; }
+  "$bin/image-compare" "$a" "$b" --sheet "$out/own-$t.png" > /dev/null || true
+done
 echo "wrote $out/table.md and $(ls "$out"/*.png | wc -l) contact sheets in $out"

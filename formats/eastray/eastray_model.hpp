@@ -18,6 +18,8 @@ void to_model(const Scene<R>& in, model::EastrayShading<R>& shading, model::Scen
   shading.material_count = in.material_count;
   shading.lights = in.lights;
   shading.light_count = in.light_count;
+  shading.mappings = in.mappings;
+  shading.mapped_objects = in.mapped_objects;
   out = model::Scene<R>{};
   out.width = in.width;
   out.height = in.height;

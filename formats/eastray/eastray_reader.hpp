@@ -62,6 +62,7 @@ class Reader {
     while (!tok_.end()) {
       if (!statement()) return false;
     }
+    first_walk_ = false;
     if (tok_.bad_comment) return fail_here("unterminated comment (no '*/' before the end of the scene)");
     if (main_count_ == 0) return fail_here("no main object: the scene needs an 'obj [ ... ]' without a name");
     // Walk 2: names and recursion, part by part.
@@ -80,6 +81,8 @@ class Reader {
       if (!items(w, Affine<R>{}, scene_.root, ']', mains_[i].pos, 0)) return false;
     }
     finish_vertex_normals();
+    if (scene_.background != 0 && scene_.input[0] == 0)
+      return fail_at(back_at_, "back_mode 1 and 2 composite the input image, and the scene names none ('input FILE ;')");
     return true;
   }
 
@@ -174,7 +177,13 @@ class Reader {
       return false;
     }
     advance();
-    if (mapping) skip_mapping();
+    if (mapping) {
+      if (collect_maps_ && tok_.is('<')) {
+        if (!mapping_block(last_map_, true, false)) return false;
+      } else {
+        skip_mapping();
+      }
+    }
     return ok_;
   }
   bool vec(V& out, const char* what) {
@@ -225,7 +234,7 @@ class Reader {
   void skip_mapping() {
     if (!tok_.is('<') || in_polygon_) return;
     if (!mapping_warned_) {
-      warn("warning: mappings '< ... >' are not supported yet; ignored");
+      warn("warning: a mapping '< ... >' follows only a colour's parameters or an object's colour; ignored");
       mapping_warned_ = true;
     }
     const SourcePos at = tok_.pos;
@@ -237,6 +246,118 @@ class Reader {
       return;
     }
     advance();
+  }
+
+
+  // ------------------------------------------------------------- mapping
+  // The entries of a mapping block `< [moves] map scale mode params ... >`
+  // (lines 597-673), appended to the chain whose head is `head` (kNone:
+  // empty). `store`: keep the entries (else only check the form);
+  // `number_map`: it maps an object's colour number, where the
+  // all-directions modes have no range (SPEC.md 4.5).
+  bool mapping_block(int32_t& head, bool store, bool number_map) {
+    // A '<' after a number inside the block is no mapping of the colour.
+    const bool collecting = collect_maps_;
+    collect_maps_ = false;
+    const bool ok = mapping_entries(head, store, number_map);
+    collect_maps_ = collecting;
+    return ok;
+  }
+  bool mapping_entries(int32_t& head, bool store, bool number_map) {
+    const SourcePos open = tok_.pos;
+    advance();
+    int32_t tail = head;
+    while (tail != kNone && scene_.mappings[tail].next != kNone) tail = scene_.mappings[tail].next;
+    int entries = 0;
+    while (!tok_.is('>')) {
+      if (tok_.end()) return fail_at(open, "unterminated mapping: no '>' before the end of the scene");
+      model::EastrayMapping<R> e{};
+      Affine<R> moves;
+      while (tok_.length > 0 && tok_.s[0] == ':')
+        if (!move(moves)) return false;
+      e.from_map = moves;
+      const SourcePos map_at = tok_.pos;
+      if (is_number()) {
+        if (!integer(e.image, "map_data number", 0, 1 << 30, false)) return false;
+        if (e.image >= scene_.map_file_count) {
+          fail_at(map_at, "undefined map_data number ");
+          error_->number(e.image).text(" (map_data must come first; it has ").number(scene_.map_file_count).text(")");
+          return false;
+        }
+      } else if (is_name_token(tok_)) {
+        e.image = kNone;
+        for (int32_t i = 0; i < scene_.map_file_count; ++i)
+          if (scene_.map_files[i].name[0] != 0 && tok_.is(scene_.map_files[i].name)) e.image = i;
+        if (e.image == kNone) {
+          fail_at(map_at, "undefined map_data name ");
+          error_->quoted(tok_.s, tok_.length).text(" (map_data must come first)");
+          return false;
+        }
+        advance();
+      } else {
+        return fail_here("expected a map_data number or name in the mapping");
+      }
+      if (!number(e.scale, "mapping scale", false)) return false;
+      const SourcePos mode_at = tok_.pos;
+      int32_t mode;
+      if (!integer(mode, "mapping mode", 0, 14, false)) return false;
+      if (mode % 10 > 4) return fail_at(mode_at, "mapping mode must be 0 to 4 or 10 to 14");
+      e.mode = static_cast<model::EastrayMapMode>(mode % 10);
+      e.filtered = mode >= 10;
+      if (e.filtered && !scene_.map_files[e.image].mip)
+        return fail_at(mode_at, "mapping modes 10 to 14 need a map_data entry read with mip-mapping switch 1 (line 398)");
+      if (number_map && e.mode == model::EastrayMapMode::kAllDirections)
+        return fail_at(mode_at, "a colour-number mapping cannot use the all-directions mode (0 or 10)");
+      if (e.mode == model::EastrayMapMode::kAllDirections) {
+        if (!number(e.u1, "mapping k", false)) return false;
+      } else {
+        R* f[8] = {&e.u1, &e.v1, &e.u2, &e.v2, &e.ua1, &e.va1, &e.ua2, &e.va2};
+        for (R* x : f)
+          if (!number(*x, "mapping corner u1 v1 u2 v2 u1a v1a u2a v2a", false)) return false;
+        if (e.u1 == e.u2 || e.v1 == e.v2) return fail_at(mode_at, "the mapped image's corners (u1 v1) and (u2 v2) span no area");
+      }
+      if (!moves.inverse(e.to_map)) return fail_at(open, "the mapping's moves are singular");
+      e.next = kNone;
+      ++entries;
+      if (!store) continue;
+      if (scene_.mapping_count >= scene_.mapping_capacity) return fail_full(map_at, "too many mappings for the memory");
+      const int32_t id = scene_.mapping_count++;
+      scene_.mappings[id] = e;
+      if (tail == kNone) head = id;
+      else scene_.mappings[tail].next = id;
+      tail = id;
+    }
+    if (entries == 0) return fail_here("empty mapping: expected a map_data number or name");
+    advance();
+    return true;
+  }
+
+  // The mapping chain read since the last call (and forgets it).
+  int32_t take_map() {
+    const int32_t h = last_map_;
+    last_map_ = kNone;
+    return h;
+  }
+
+  // The material index a surface stores: the colour itself, or a mapped
+  // object (its frame, for the mappings) when the colour or its number is
+  // mapped.
+  bool surface_material(int32_t mat, int32_t number_map, const Affine<R>& m, const SourcePos& at, int32_t& out) {
+    out = mat;
+    // The anisotropic models' scratches are in the object's frame too.
+    const Specular spec = scene_.materials[mat].specular;
+    bool mapped = number_map != kNone || spec == Specular::kAniso1 || spec == Specular::kAniso2;
+    for (int i = 0; i < model::kMapSlots && !mapped; ++i) mapped = scene_.materials[mat].map[i] != kNone;
+    if (!mapped) return true;
+    model::EastrayMappedObject<R> o{};
+    o.to_world = m;
+    if (!m.inverse(o.to_object)) return fail_at(at, "the object's moves are singular");
+    o.material = mat;
+    o.number_map = number_map;
+    if (scene_.mapped_count >= scene_.mapped_capacity) return fail_full(at, "too many mapped objects for the memory");
+    scene_.mapped_objects[scene_.mapped_count] = o;
+    out = scene_.material_count + scene_.mapped_count++;  // walk 3: every colour is read
+    return true;
   }
 
   // ----------------------------------------------------------- statements
@@ -269,6 +390,11 @@ class Reader {
       if (!number(aspect, "display dot aspect")) return false;
       if (!(aspect > R(0))) return fail_at(at, "display dot aspect must be above 0");
       scene_.aspect = aspect;
+      // Line 78: a window that breaks these computes nothing; an image of
+      // nothing is refused rather than written black.
+      if (!(0 <= scene_.x0 && scene_.x0 <= scene_.x1 && scene_.x1 < scene_.width && 0 <= scene_.y0 &&
+            scene_.y0 <= scene_.y1 && scene_.y1 < scene_.height))
+        return fail_at(st.pos, "display window must satisfy 0 <= x0 <= x1 < width and 0 <= y0 <= y1 < height (line 75)");
       return end_statement("display");
     }
     if (st.is("condition")) {
@@ -309,9 +435,8 @@ class Reader {
     }
     if (st.is("voxel")) return integer(scene_.voxel, "voxel count", 0, 1024) && end_statement("voxel");
     if (st.is("rmode")) {
-      R v;
-      if (!number(v, "rmode")) return false;
-      if (v != R(0)) warn("warning: rmode 1 (stereo) is not supported; one image is rendered");
+      // 0 one image, 1 two with the camera's parallax (lines 56-58).
+      if (!on_off(scene_.stereo, "rmode")) return false;
       return end_statement("rmode");
     }
     if (st.is("output")) {
@@ -323,22 +448,34 @@ class Reader {
       return end_statement("output");
     }
     if (st.is("output_mode")) {
-      R bits, dither;
-      if (!number(bits, "output_mode bits") || !number(dither, "output_mode dither")) return false;
-      if (bits != R(24)) warn("warning: output_mode 16 is not supported; 24-bit colour is written");
+      const SourcePos at = tok_.pos;
+      R bits;
+      if (!number(bits, "output_mode bits")) return false;
+      if (bits != R(16) && bits != R(24)) return fail_at(at, "output_mode bits must be 16 or 24 (lines 158-159)");
+      scene_.output_bits = bits == R(16) ? 16 : 24;
+      if (!on_off(scene_.dither, "output_mode dither switch")) return false;
       return end_statement("output_mode");
     }
     if (st.is("input")) {
       if (tok_.end() || tok_.length == 1) return fail_here("expected a file name after 'input'");
-      warn("warning: input (background compositing) is not supported; ignored");
+      if (tok_.length >= kOutputNameBytes) return fail_here("input file name too long");
+      for (int i = 0; i < tok_.length; ++i) scene_.input[i] = tok_.s[i];
+      scene_.input[tok_.length] = 0;
+      scene_.input_line = tok_.pos.line;
+      scene_.input_col = tok_.pos.col;
       advance();
       return end_statement("input");
     }
     if (st.is("back_mode")) {
-      R v[4];
-      for (R& x : v)
-        if (!number(x, "back_mode")) return false;
-      if (v[0] != R(0)) warn("warning: back_mode with an input image is not supported; the sky is the background");
+      back_at_ = st.pos;
+      if (!integer(scene_.background, "back_mode background mode 0, 1 or 2", 0, 2) ||
+          !on_off(scene_.back_reflect, "back_mode reflection switch") ||
+          !on_off(scene_.back_transmit, "back_mode transmission switch") ||
+          !on_off(scene_.alpha_pure, "back_mode alpha mode"))
+        return false;
+      if (scene_.back_reflect || scene_.back_transmit)
+        warn("warning: back_mode reflection and transmission switches 1 are read; missed secondary rays take the sky");
+      if (scene_.alpha_pure) warn("warning: back_mode alpha mode 1 is read; no alpha channel is written");
       return end_statement("back_mode");
     }
     if (st.is("e_light") || st.is("p_light") || st.is("s_light")) {
@@ -416,6 +553,7 @@ class Reader {
 
   bool color() {
     Material<R> m{};
+    for (int32_t& h : m.map) h = kNone;
     const SourcePos at = tok_.pos;
     if (is_name_token(tok_)) {
       if (tok_.length >= kNameBytes) return fail_here("colour name too long");
@@ -424,19 +562,41 @@ class Reader {
         if (tok_.is(scene_.materials[i].name)) return fail_here("colour name defined twice");
       advance();
     }
+    // Mappings after each parameter are collected (number() reads them).
+    collect_maps_ = true;
+    last_map_ = kNone;
+    const bool ok = color_fields(m);
+    collect_maps_ = false;
+    last_map_ = kNone;
+    if (!ok) return false;
+    if (!end_statement("the colour")) return false;
+    if (scene_.material_count >= scene_.material_capacity) return fail_full(at, "too many colours for the memory");
+    scene_.materials[scene_.material_count++] = m;
+    return true;
+  }
+
+  bool color_fields(Material<R>& m) {
     R alg;
-    if (!vec(m.diffuse, "diffuse colour") || !vec(m.reflect, "reflectance") || !vec(m.transmit, "transmittance"))
-      return false;
+    if (!vec(m.diffuse, "diffuse colour")) return false;
+    m.map[model::kMapDiffuse] = take_map();
+    if (!vec(m.reflect, "reflectance")) return false;
+    m.map[model::kMapReflect] = take_map();
+    if (!vec(m.transmit, "transmittance")) return false;
+    m.map[model::kMapTransmit] = take_map();
     const SourcePos ior_at = tok_.pos;
     if (!number(m.ior, "index of refraction")) return false;
+    m.map[model::kMapIor] = take_map();
     // The index matters only for a transparent body (line 554); there it
     // divides, so 0 or less would bend rays through NaN.
     const bool transparent = m.transmit.x != R(0) || m.transmit.y != R(0) || m.transmit.z != R(0);
-    if (transparent && !(m.ior > R(0)))
+    if (transparent && !(m.ior > R(0)) && m.map[model::kMapIor] == kNone)
       return fail_at(ior_at, "index of refraction of a transparent colour must be above 0");
-    if (!number(m.half_distance, "transparency half distance") || !number(m.bump, "bump")) return false;
+    if (!number(m.half_distance, "transparency half distance")) return false;
+    m.map[model::kMapHalf] = take_map();
+    if (!number(m.bump, "bump")) return false;
+    m.map[model::kMapBump] = take_map();
     const SourcePos alg_at = tok_.pos;
-    if (!number(alg, "specular algorithm 0 to 5")) return false;
+    if (!number(alg, "specular algorithm 0 to 5", false)) return false;
     int count = 0;
     if (alg == R(0)) m.specular = Specular::kBlinn, count = 2;
     else if (alg == R(1)) m.specular = Specular::kBlinnGauss, count = 5;
@@ -445,30 +605,66 @@ class Reader {
     else if (alg == R(4)) m.specular = Specular::kCookTorrance, count = 6;
     else if (alg == R(5)) m.specular = Specular::kConstant, count = 7;
     else return fail_at(alg_at, "specular algorithm must be 0, 1, 2, 3, 4 or 5");
-    R extra[12];
     for (int i = 0; i < count; ++i) {
-      if (!number(extra[i], "specular parameter")) return false;
-      if (i < 8) m.p[i] = extra[i];
+      const SourcePos p_at = tok_.pos;
+      if (!number(m.p[i], "specular parameter")) return false;
+      const int32_t h = take_map();
+      if (h == kNone) continue;
+      const int group = specular_group(m.specular, i);
+      if (group < 0) return fail_at(p_at, "no mapping may follow a position or direction of the anisotropic model");
+      m.map[model::kMapSpecular + group] = h;  // a colour's mapping follows its blue
     }
-    if (m.specular == Specular::kAniso1 || m.specular == Specular::kAniso2) {
-      warn("warning: anisotropic specular (algorithms 2 and 3) is not supported; drawn as Blinn with its reflectance");
-      m.p[0] = (extra[0] + extra[1] + extra[2]) / R(3);
-      m.p[1] = R(20);
-      m.specular = Specular::kBlinn;
-    }
-    if (m.bump != R(0)) warn("warning: bump needs a mapping, which is not supported; ignored");
-    if (!end_statement("the colour")) return false;
-    if (scene_.material_count >= scene_.material_capacity) return fail_full(at, "too many colours for the memory");
-    scene_.materials[scene_.material_count++] = m;
     return true;
   }
 
+  // The first parameter of the group p[i] belongs to (a colour's three
+  // share one mapping); -1 for the anisotropic models' vectors, which the
+  // manual does not map.
+  static int specular_group(Specular s, int i) {
+    switch (s) {
+      case Specular::kBlinn: return i;
+      case Specular::kAniso1: return i < 3 ? 0 : i < 9 ? -1 : i;
+      case Specular::kAniso2: return i < 3 ? 0 : i < 6 ? -1 : i;
+      case Specular::kConstant: return i < 3 ? 0 : i < 6 ? 3 : i;
+      default: return i < 3 ? 0 : i;
+    }
+  }
+
+  // map_data [ [name] file mip [;] ... ] (lines 369-398): the files are
+  // loaded by the host after reading. The manual shows no ';' after an
+  // entry; one is accepted (AMBIGUITIES D1).
   bool map_data(const Token& st) {
-    warn("warning: map_data (texture maps) is not supported; the maps are not read");
     if (!expect('[', "to open the map list")) return false;
     while (!tok_.is(']')) {
       if (tok_.end()) return fail_at(st.pos, "unterminated map_data list: no ']' before the end of the scene");
+      model::EastrayMapFile f{};
+      auto has_dot = [](const Token& t) {
+        for (int i = 0; i < t.length; ++i)
+          if (t.s[i] == '.') return true;
+        return false;
+      };
+      // A name starts with a letter and has no '.'; a file name has one (line 388).
+      if (is_name_token(tok_) && !has_dot(tok_)) {
+        if (tok_.length >= static_cast<int>(sizeof f.name)) return fail_here("map_data name too long");
+        for (int i = 0; i < tok_.length; ++i) f.name[i] = tok_.s[i];
+        for (int i = 0; i < scene_.map_file_count; ++i)
+          if (tok_.is(scene_.map_files[i].name)) return fail_here("map_data name defined twice");
+        advance();
+      }
+      if (tok_.end() || tok_.length == 1 || !has_dot(tok_))
+        return fail_here("expected a map_data file name with its extension");
+      if (tok_.length >= model::kMapFileBytes) return fail_here("map_data file name too long");
+      for (int i = 0; i < tok_.length; ++i) f.file[i] = tok_.s[i];
+      f.line = tok_.pos.line;
+      f.col = tok_.pos.col;
       advance();
+      if (!on_off(f.mip, "mip-mapping switch")) return false;
+      if (tok_.is(';')) advance();
+      if (scene_.map_file_count >= scene_.map_file_capacity) {
+        error_->out_of_memory = true;
+        return fail_here("too many map_data entries for the memory");
+      }
+      scene_.map_files[scene_.map_file_count++] = f;
     }
     advance();
     return true;
@@ -583,7 +779,8 @@ class Reader {
         for (int c = 0; c < 3; ++c) x.m[r * 3 + c] = a[r * 4 + c];
       }
       x.t = V{a[3], a[7], a[11]};
-      if (a[12] != R(0) || a[13] != R(0) || a[14] != R(0) || a[15] != R(1))
+      // Once per :mtx written: the later walks over the same text stay quiet.
+      if (first_walk_ && (a[12] != R(0) || a[13] != R(0) || a[14] != R(0) || a[15] != R(1)))
         warn("warning: the :mtx bottom row is taken as 0 0 0 1 (affine moves only)");
     } else {
       fail_at(t.pos, "unknown move command ");
@@ -753,8 +950,8 @@ class Reader {
     // Moves for this object only, nearest first like block moves.
     while (tok_.length > 0 && tok_.s[0] == ':')
       if (!move(m)) return false;
-    int32_t mat = kNone;
-    if (!material_ref(w, mat)) return false;
+    int32_t mat = kNone, mat_map = kNone;
+    if (!material_ref(w, mat, mat_map)) return false;
     R sign;
     const SourcePos sign_at = tok_.pos;
     const char* sign_text = tok_.s;
@@ -768,7 +965,10 @@ class Reader {
       error_->quoted(sign_text, sign_length);
       return false;
     }
-    if (kind == 20) return polygon(w, m, mat, sign < R(0), at);
+    if (kind == 20) {
+      if (w.emit && !surface_material(mat, mat_map, m, at, mat)) return false;
+      return polygon(w, m, mat, sign < R(0), at);
+    }
     R p[13];
     int n = 0;
     if (kind == 0) {
@@ -780,8 +980,9 @@ class Reader {
       for (; n < count; ++n)
         if (!number(p[n], "object parameter")) return false;
     }
-    int32_t faces[kFaceCount];
+    int32_t faces[kFaceCount], face_maps[kFaceCount];
     for (int32_t& f : faces) f = mat;
+    for (int32_t& f : face_maps) f = mat_map;
     bool no_shadow = false;
     for (;;) {
       if (tok_.is("n")) {
@@ -796,9 +997,10 @@ class Reader {
       else if (kind == 16 && tok_.length == 1 && tok_.s[0] >= '1' && tok_.s[0] <= '6') face = kFaceBox + tok_.s[0] - '1';
       if (face < 0) break;
       advance();
-      int32_t fm = kNone;
-      if (!material_ref(w, fm)) return false;
+      int32_t fm = kNone, fmap = kNone;
+      if (!material_ref(w, fm, fmap)) return false;
       faces[face] = fm;
+      face_maps[face] = fmap;
     }
     if (!end_statement("the object")) return false;
     if (!w.emit) return true;
@@ -807,39 +1009,47 @@ class Reader {
     Primitive<R>& q = scene_.primitives[prim];
     q.inverted = sign < R(0);
     q.no_shadow = no_shadow;
-    for (int i = 0; i < kFaceCount; ++i) q.material[i] = faces[i];
+    for (int i = 0; i < kFaceCount; ++i) {
+      // Faces with the same colour and mapping share one mapped object.
+      int j = 0;
+      while (j < i && !(faces[j] == faces[i] && face_maps[j] == face_maps[i])) ++j;
+      if (j < i) q.material[i] = q.material[j];
+      else if (!surface_material(faces[i], face_maps[i], m, at, q.material[i])) return false;
+    }
     const int32_t node = new_node(NodeKind::kLeaf, NodeKind::kLeaf, parent);
     if (node == kNone) return false;
     scene_.nodes[node].primitive = prim;
     return true;
   }
 
-  // A colour by number or name (walk 1 only checks the form).
-  bool material_ref(const Walk& w, int32_t& out) {
+  // A colour by number or name (walk 1 only checks the form), and the
+  // colour-number mapping after it (kept only when placing).
+  bool material_ref(const Walk& w, int32_t& out, int32_t& number_map) {
+    number_map = kNone;
     if (is_number()) {
       const SourcePos at = tok_.pos;
       int32_t i;
-      if (!integer(i, "colour number", 0, 1 << 30)) return false;
+      if (!integer(i, "colour number", 0, 1 << 30, false)) return false;
       if (w.resolve && i >= scene_.material_count) {
         fail_at(at, "undefined colour number ");
         error_->number(i).text(" (the colour list has ").number(scene_.material_count).text(")");
         return false;
       }
       out = i;
-      return true;
-    }
-    if (!is_name_token(tok_)) return fail_here("expected a colour number or name");
-    if (w.resolve) {
-      out = find_material(tok_);
-      if (out == kNone) {
-        fail_at(tok_.pos, "undefined colour ");
-        error_->quoted(tok_.s, tok_.length);
-        return false;
+    } else {
+      if (!is_name_token(tok_)) return fail_here("expected a colour number or name");
+      if (w.resolve) {
+        out = find_material(tok_);
+        if (out == kNone) {
+          fail_at(tok_.pos, "undefined colour ");
+          error_->quoted(tok_.s, tok_.length);
+          return false;
+        }
       }
+      advance();
     }
-    advance();
-    skip_mapping();
-    return ok_;
+    if (!tok_.is('<')) return true;
+    return mapping_block(number_map, w.emit, true);
   }
 
   // Local frame whose z is `axis` (need not be unit), origin `c`.
@@ -1080,7 +1290,7 @@ class Reader {
       } else if (tok_.is("P")) {
         if (!faces_started && !index_vertices(first_vertex, body, index)) return false;
         faces_started = true;
-        if (!face(w, mat, index, m.det() < R(0))) return false;
+        if (!face(w, mat, index, m)) return false;
       } else {
         in_polygon_ = false;
         return fail_here("expected 'p' (vertex), 'P' (face) or '>' in the polygon");
@@ -1104,7 +1314,8 @@ class Reader {
 
   // `mirrored`: the moves turn space inside out, so the counter-clockwise
   // order seen from outside (line 1220) becomes clockwise.
-  bool face(const Walk& w, int32_t mat, const VertexIndex& index, bool mirrored) {
+  bool face(const Walk& w, int32_t mat, const VertexIndex& index, const Affine<R>& m) {
+    const bool mirrored = m.det() < R(0);
     const SourcePos at = tok_.pos;  // the 'P'
     advance();
     int32_t idx[kMaxFaceVertices];
@@ -1130,7 +1341,10 @@ class Reader {
     for (;;) {
       if (tok_.is("c")) {
         advance();
-        if (!material_ref(w, fmat)) return false;
+        const SourcePos c_at = tok_.pos;
+        int32_t fmap = kNone;
+        if (!material_ref(w, fmat, fmap)) return false;
+        if (w.emit && !surface_material(fmat, fmap, m, c_at, fmat)) return false;
       } else if (tok_.is("s")) {
         smooth = true;
         advance();
@@ -1195,6 +1409,10 @@ class Reader {
   Diagnostic* error_ = nullptr;
   bool ok_ = true;
   bool mapping_warned_ = false;
+  SourcePos back_at_{};          // the back_mode statement
+  bool first_walk_ = true;       // walk 1: the text is read for the first time
+  bool collect_maps_ = false;     // reading a colour: number() keeps mappings
+  int32_t last_map_ = kNone;      // the chain read since take_map()
   bool in_polygon_ = false;
   Part* parts_ = nullptr;
   int part_count_ = 0;

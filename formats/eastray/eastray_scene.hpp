@@ -13,6 +13,7 @@
 #include "core/base/arena.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/model/csg.hpp"
+#include "formats/model/eastray_mapping.hpp"
 #include "formats/model/eastray_shading.hpp"
 #include "formats/model/quadric.hpp"
 #include "formats/model/scene.hpp"
@@ -56,6 +57,8 @@ using MeshFace = model::MeshFace;
 template <class R>
 struct Scene : model::EastraySettings<R> {
   char output[kOutputNameBytes] = {};
+  char input[kOutputNameBytes] = {};  // `input`: the background image's file
+  int32_t input_line = 0, input_col = 0;
 
   Light<R>* lights = nullptr;
   int32_t light_count = 0, light_capacity = 0;
@@ -73,13 +76,27 @@ struct Scene : model::EastraySettings<R> {
   int32_t* vertex_ids = nullptr;       // the ids as written
   int32_t vertex_count = 0, vertex_capacity = 0;
   int32_t root = kNone;                // the main obj's kTop node
+  // Mapping (formats/model/eastray_mapping.hpp).
+  model::EastrayMapFile* map_files = nullptr;
+  int32_t map_file_count = 0, map_file_capacity = 0;
+  model::EastrayMapping<R>* mappings = nullptr;
+  int32_t mapping_count = 0, mapping_capacity = 0;
+  model::EastrayMappedObject<R>* mapped_objects = nullptr;
+  int32_t mapped_count = 0, mapped_capacity = 0;
 
   // How many items of each kind the arrays hold.
   struct Capacities {
     int32_t lights, materials, primitives, nodes, triangles, vertices;
+    int32_t map_files, mappings, mapped;
 
     // The same number for every kind.
-    static constexpr Capacities all(int32_t n) { return {n, n, n, n, n, n}; }
+    static constexpr Capacities all(int32_t n) { return {n, n, n, n, n, n, n, n, n}; }
+    // Twice as many of every kind (the host grows them when a table is full).
+    constexpr Capacities doubled() const {
+      auto twice = [](int32_t v) { return v > 0x3fffffff ? 0x7fffffff : 2 * v; };
+      return {twice(lights),    twice(materials), twice(primitives), twice(nodes), twice(triangles),
+              twice(vertices),  twice(map_files), twice(mappings),   twice(mapped)};
+    }
     // For a scene text of `bytes` bytes on the host: every item takes some
     // text (a vertex at least 10 bytes, a triangle 6, an object 16, a light
     // or a colour 20), with floors that leave room for parts called many
@@ -88,8 +105,11 @@ struct Scene : model::EastraySettings<R> {
       const auto at_least = [](size_t v, int32_t floor) {
         return v > 0x3fffffff ? 0x3fffffff : (static_cast<int32_t>(v) > floor ? static_cast<int32_t>(v) : floor);
       };
+      // A map_data entry takes at least 8 bytes, a mapping entry 12, a
+      // mapped object 16 (it is an object).
       return {at_least(bytes / 20, 1024), at_least(bytes / 20, 1024), at_least(bytes / 16, 16384),
-              at_least(bytes / 8, 32768), at_least(bytes / 6, 16384), at_least(bytes / 10, 16384)};
+              at_least(bytes / 8, 32768),  at_least(bytes / 6, 16384),  at_least(bytes / 10, 16384),
+              at_least(bytes / 8, 256),    at_least(bytes / 12, 1024),  at_least(bytes / 16, 16384)};
     }
   };
 
@@ -97,7 +117,9 @@ struct Scene : model::EastraySettings<R> {
     return Arena::footprint<Light<R>>(c.lights) + Arena::footprint<Material<R>>(c.materials) +
            Arena::footprint<Primitive<R>>(c.primitives) + Arena::footprint<Node>(c.nodes) +
            Arena::footprint<Triangle<R>>(c.triangles) + Arena::footprint<MeshFace>(c.triangles) + 2 * Arena::footprint<Vec3<R>>(c.vertices) +
-           Arena::footprint<int32_t>(c.vertices);
+           Arena::footprint<int32_t>(c.vertices) + Arena::footprint<model::EastrayMapFile>(c.map_files) +
+           Arena::footprint<model::EastrayMapping<R>>(c.mappings) +
+           Arena::footprint<model::EastrayMappedObject<R>>(c.mapped);
   }
 
   // The arrays are sized for the worst case of the text and not zeroed:
@@ -113,6 +135,12 @@ struct Scene : model::EastraySettings<R> {
     vertices = arena.alloc_uninit<Vec3<R>>(static_cast<size_t>(c.vertices));
     vertex_normals = arena.alloc_uninit<Vec3<R>>(static_cast<size_t>(c.vertices));
     vertex_ids = arena.alloc_uninit<int32_t>(static_cast<size_t>(c.vertices));
+    map_files = arena.alloc_uninit<model::EastrayMapFile>(static_cast<size_t>(c.map_files));
+    mappings = arena.alloc_uninit<model::EastrayMapping<R>>(static_cast<size_t>(c.mappings));
+    mapped_objects = arena.alloc_uninit<model::EastrayMappedObject<R>>(static_cast<size_t>(c.mapped));
+    map_file_capacity = c.map_files;
+    mapping_capacity = c.mappings;
+    mapped_capacity = c.mapped;
     light_capacity = c.lights;
     material_capacity = c.materials;
     primitive_capacity = c.primitives;
@@ -120,7 +148,8 @@ struct Scene : model::EastraySettings<R> {
     triangle_capacity = c.triangles;
     vertex_capacity = c.vertices;
     return lights != nullptr && materials != nullptr && primitives != nullptr && nodes != nullptr &&
-           triangles != nullptr && faces != nullptr && vertices != nullptr && vertex_normals != nullptr && vertex_ids != nullptr;
+           triangles != nullptr && faces != nullptr && vertices != nullptr && vertex_normals != nullptr && vertex_ids != nullptr &&
+           map_files != nullptr && mappings != nullptr && mapped_objects != nullptr;
   }
 };
 

@@ -9,8 +9,11 @@
 #include <stdint.h>
 
 #include "core/math/vec3.hpp"
+#include "formats/model/eastray_mapping.hpp"
 
 namespace minrt::model {
+
+struct Texture;  // scene.hpp
 
 inline constexpr int kColorNameBytes = 32;
 
@@ -38,9 +41,13 @@ struct EastrayMaterial {
   R ior, half_distance, bump;
   Specular specular;
   // kBlinn: p[0] intensity, p[1] exponent. kBlinnGauss: rgb, p[3] spread,
-  // p[4] Fresnel constant. kCookTorrance: rgb, p[3] ratio, p[4] spread 1,
-  // p[5] spread 2. kConstant: color1 p[0..2], color2 p[3..5], p[6] k.
-  R p[8];
+  // p[4] Fresnel constant. kAniso1: rgb, p[3..5] circle centre, p[6..8]
+  // circle normal, p[9..11] A B C. kAniso2: rgb, p[3..5] scratch
+  // direction, p[6..8] A B C. kCookTorrance: rgb, p[3] ratio, p[4]
+  // spread 1, p[5] spread 2. kConstant: color1 p[0..2], color2 p[3..5], p[6] k.
+  R p[kSpecularParams];
+  // The first mapping entry of each parameter (EastrayMapSlot), or kNoMapping.
+  int32_t map[kMapSlots];
 };
 
 // The scene-wide statements, with the manual's defaults (docs/eastray.md).
@@ -59,12 +66,21 @@ struct EastraySettings {
   // camera (105-117)
   Vec3<R> eye{R(0), R(0), R(10)}, look{}, up_point{R(0), R(10), R(0)};
   R fov = R(30), parallax = R(0);
+  bool stereo = false;  // rmode 1 (line 57): a right and a left image
   // mist, sky, env, shadow, voxel
   R mist_half = R(0);
   bool mist_to_sky = false;
   Vec3<R> sky{}, env{};
   bool shadows = true;
   int32_t voxel = 0;
+  // output_mode (lines 152-164): 16 (32K colours) or 24 bits, dither at 16
+  int32_t output_bits = 24;
+  bool dither = false;
+  // back_mode (lines 205-230): 0 the sky behind, sun discs seen; 1 the
+  // input image behind, no discs; 2 the input image and the discs. The
+  // reflection, transmission and alpha switches are read.
+  int32_t background = 0;
+  bool back_reflect = false, back_transmit = false, alpha_pure = false;
 };
 
 // What the EASTRAY finish reads: the settings, the colours the surfaces
@@ -75,6 +91,13 @@ struct EastrayShading : EastraySettings<R> {
   int32_t material_count = 0;
   const EastrayLight<R>* lights = nullptr;
   int32_t light_count = 0;
+  // Mapping (eastray_mapping.hpp): a surface's material at or above
+  // material_count names mapped_objects[material - material_count].
+  const EastrayMapping<R>* mappings = nullptr;
+  const EastrayMappedObject<R>* mapped_objects = nullptr;
+  const Texture* map_images = nullptr;  // one per map_data entry, 3 bytes a texel (linear 0..255)
+  int32_t map_image_count = 0;
+  const Texture* input_image = nullptr;  // `input`, behind the image when background is 1 or 2
 };
 
 }  // namespace minrt::model

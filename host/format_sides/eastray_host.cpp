@@ -7,7 +7,11 @@
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "colour_depth.hpp"
+#include "eastray_maps.hpp"
 #include "eastray_preprocess.hpp"
+#include "eastray_stereo.hpp"
+#include "image_merge.hpp"
 #include "formats/eastray/eastray_model.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "general_scene.hpp"
@@ -73,18 +77,50 @@ bool read_growing(const ExpandedEastray& x, const std::string& shown, const Warn
       error = x.at(d.pos.line, d.pos.col) + ": error: " + d.message;
       return false;
     }
-    caps = {caps.lights * 2, caps.materials * 2, caps.primitives * 2, caps.nodes * 2, caps.triangles * 2,
-            caps.vertices * 2};
+    caps = caps.doubled();
   }
 }
 
-// The general scene with what EASTRAY's model points into.
+// The general scene with what EASTRAY's model points into, and what its
+// output needs: the stereo pair (rmode 1), 32K colours (output_mode 16),
+// the display window kept in an existing file (manual line 180).
 template <class M>
 struct EastrayScene final : GeneralScene<M> {
   using R = typename M::real;
   ExpandedEastray expanded;
   eastray::Scene<R> source;
   model::EastrayShading<R> shading;
+  std::unique_ptr<EastrayMaps> maps;  // the map_data and input images the shading points into
+  Vec3<R> eye{};                      // the scene's own eye, between the stereo pair's
+
+  // The right eye's image first, then the left's (the view reads the eye at every row).
+  void select_view(int view) override {
+    if (this->views > 1) shading.eye = general::eastray_stereo_eye<M>(with_eye(eye), view == 0 ? 1 : -1);
+  }
+  std::string view_output_name(const std::string& out_path, int view) const override {
+    return this->views > 1 ? eastray_stereo_name(out_path, view == 0 ? 'r' : 'l') : out_path;
+  }
+  std::string finish_image(const std::string& out_path, ImageFile kind, RgbaImage& image) const override {
+    const bool tiff = kind == ImageFile::kTiff;
+    if (!tiff && kind != ImageFile::kPng) return "";
+    std::vector<uint8_t> rgb(static_cast<std::size_t>(image.width) * image.height * 3);
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+      for (int c = 0; c < 3; ++c) rgb[3 * i + c] = image.rgba[4 * i + c];
+    if (tiff && source.output_bits == 16) reduce_to_32k_colours(rgb, image.width, image.height, source.dither);
+    std::string why;
+    const MergeOutcome merge = merge_outside_window(out_path, tiff, image.width, image.height,
+                                                    PixelWindow{source.x0, source.y0, source.x1, source.y1}, rgb, why);
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+      for (int c = 0; c < 3; ++c) image.rgba[4 * i + c] = rgb[3 * i + c];
+    return merge == MergeOutcome::kReplaced ? why + ": replaced, black outside the display window (line 180)" : "";
+  }
+
+ private:
+  model::EastraySettings<R> with_eye(const Vec3<R>& e) const {
+    model::EastraySettings<R> s = shading;
+    s.eye = e;
+    return s;
+  }
 };
 
 template <class M>
@@ -104,10 +140,32 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOp
                        hierarchies, scene->storage, arena, scene->source, error))
     return nullptr;
   bool tiff = false;
-  std::string warning;
-  scene->output_name = eastray_output_name("", scene->source.output, in.path, tiff, warning);
-  if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
+  std::string unsupported;
+  scene->output_name = eastray_output_name("", scene->source.output, in.path, tiff, unsupported);
+  if (!unsupported.empty() && options.output_path.empty() && options.save) {
+    error = in.shown + ": error: " + unsupported;
+    return nullptr;
+  }
   eastray::to_model(scene->source, scene->shading, scene->model);
+  // The images the scene's map_data and input name, found from its folder.
+  const eastray::Scene<R>& src = scene->source;
+  scene->maps = std::make_unique<EastrayMaps>(in.path);
+  int bad = 0;
+  if (!scene->maps->load(src.map_files, src.map_file_count, bad, error)) {
+    error = scene->expanded.at(src.map_files[bad].line, src.map_files[bad].col) + ": error: " + error;
+    return nullptr;
+  }
+  scene->shading.map_images = scene->maps->table();
+  scene->shading.map_image_count = scene->maps->count();
+  if (src.input[0] != 0) {  // a missing or unreadable input is an error, where it is named
+    if (!scene->maps->load_input(src.input, error)) {
+      error = scene->expanded.at(src.input_line, src.input_col) + ": error: input " + error;
+      return nullptr;
+    }
+    scene->shading.input_image = scene->maps->input();
+  }
+  scene->eye = scene->shading.eye;
+  scene->views = src.stereo ? 2 : 1;
   if (!scene->set_up(*arena, options, t_parse)) {
     error = in.shown + ": error: scene does not fit in memory";
     return nullptr;
@@ -118,23 +176,24 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOp
 }  // namespace
 
 std::string eastray_output_name(const std::string& option, const std::string& statement,
-                                const std::string& scene_path, bool& tiff, std::string& warning) {
+                                const std::string& scene_path, bool& tiff, std::string& unsupported) {
   std::string name = !option.empty() ? option : !statement.empty() ? statement
                                               : scene_path == "-" ? std::string("-")
                                                                   : replace_extension(scene_path, ".png");
   for (char& c : name)
     if (c == '\\') c = '/';
   tiff = ends_with_nocase(name, ".tif") || ends_with_nocase(name, ".tiff");
-  if (option.empty() && (ends_with_nocase(name, ".fal") || ends_with_nocase(name, ".ipr") || ends_with_nocase(name, ".hpi"))) {
-    const std::string png = replace_extension(name, ".png");
-    warning = "output format of '" + name + "' is not supported; writing PNG to '" + png + "'";
-    name = png;
-  }
+  for (const char* old : {".fal", ".ipr", ".hpi"})
+    if (ends_with_nocase(name, old))
+      unsupported = "cannot write " + name + ": " + std::string(old + 1) +
+                    " images (FM TOWNS raw RGB and headers) are not written; name a .tif or .tiff (TIFF) or any other "
+                    "name (PNG)";
   return name;
 }
 
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
-                        int& height, std::string& output_statement, std::string& error) {
+                        int& height, std::string& output_statement, std::string& error,
+                        std::vector<std::pair<std::string, std::string>>* maps) {
   ExpandedEastray x;
   if (!preprocess_eastray(path, path, text, x, error)) return false;
   using M = PortableFloat;  // the board's reader and arithmetic
@@ -147,6 +206,12 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   width = scene.width;
   height = scene.height;
   output_statement = scene.output;
+  if (maps != nullptr) {
+    maps->clear();
+    for (int32_t i = 0; i < scene.map_file_count; ++i)
+      maps->emplace_back(scene.map_files[i].file, x.at(scene.map_files[i].line, scene.map_files[i].col) + ": error: ");
+    if (scene.input[0] != 0) maps->emplace_back(scene.input, x.at(scene.input_line, scene.input_col) + ": error: input ");
+  }
   board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
   return true;
 }

@@ -370,6 +370,8 @@ int run(const Options& options) {
       o.output.replace(o.output.size() - 4, 4, ".png");
     }
   }
+  if (!upload.refusal.empty() && !o.output_given)
+    return fail(kExitFirmware, "scene rejected before sending: " + upload.refusal);
   if (!upload.warning.empty() && !o.output_given) std::fprintf(stderr, "host-send: warning: %s\n", upload.warning.c_str());
   if (text_format && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
     return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");

@@ -65,15 +65,22 @@ bool prepare_minirt(const UploadRequest& r, std::string scene, Upload& out, std:
   return true;
 }
 
-// EASTRAY: preprocessed and checked here, sent expanded; the board sends PNG.
+// EASTRAY: preprocessed and checked here, sent expanded behind its
+// map_data images (decoded here, as a CS418 scene's textures); the board
+// sends PNG.
 bool prepare_eastray(const UploadRequest& r, std::string scene, Upload& out, std::string& error) {
-  std::string statement;
-  if (!host::eastray_board_text(r.path, scene, out.bytes, out.width, out.height, statement, error)) return false;
+  std::string statement, text;
+  std::vector<std::pair<std::string, std::string>> maps;
+  if (!host::eastray_board_text(r.path, scene, text, out.width, out.height, statement, error, &maps)) return false;
+  std::string preamble;
+  if (!build_eastray_texture_preamble(maps, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  out.bytes = preamble + text;
   bool tiff = false;
-  const std::string name = host::eastray_output_name("", statement, r.path, tiff, out.warning);
+  std::string unsupported;
+  const std::string name = host::eastray_output_name("", statement, r.path, tiff, unsupported);
   out.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;
+  if (!unsupported.empty()) out.refusal = unsupported;  // only when no -o names the output
   if (tiff) out.warning = "the board sends PNG; writing " + out.output;
-  else if (!out.warning.empty()) out.warning = "the board sends PNG; writing " + out.output;
   return true;
 }
 

@@ -23,7 +23,8 @@ struct Upload {
   std::string bytes;            // what raw sends before its 0x04 (course and framed: the same behind a header)
   int width = 0, height = 0;    // the reply's size (0: the board's --size; BMP: the scene's)
   std::string output;           // where the image goes without -o ("": the scene's stem with the reply's extension)
-  std::string warning;          // printed before the transfer
+  std::string warning;          // printed before the transfer, when no -o names the output
+  std::string refusal;          // why the default output cannot be written (a format we do not write)
 };
 
 struct UploadFormat {

@@ -6,6 +6,7 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "eastray_maps.hpp"
 #include "texture_files.hpp"
 
 namespace minrt::send {
@@ -123,6 +124,19 @@ bool build_minirt_texture_preamble(const std::string& scene, const std::string& 
     }
   }
   return assemble(names, where, base_dir, &minrt::host::probe_minirt_texture, &minrt::host::load_minirt_texture, board_bytes, out, error);
+}
+
+bool build_eastray_texture_preamble(const std::vector<std::pair<std::string, std::string>>& maps,
+                                    const std::string& base_dir, std::uint64_t board_bytes, std::string& out,
+                                    std::string& error) {
+  std::vector<std::string> names, where;
+  std::set<std::string> seen;
+  for (const auto& m : maps) {
+    if (!seen.insert(m.first).second) continue;
+    names.push_back(m.first);
+    where.push_back(m.second);
+  }
+  return assemble(names, where, base_dir, &minrt::host::load_eastray_map, board_bytes, out, error);
 }
 
 }  // namespace minrt::send

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace minrt::send {
 
@@ -23,5 +25,12 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,
                                    const std::string& base_dir,
                                    std::uint64_t board_bytes, std::string& out, std::string& error);
+
+// The same for an EASTRAY scene: its map_data images (`maps`: each file
+// name as written and the "SCENE:LINE:COL: error: " of its entry), decoded
+// as minrt decodes them (host/eastray_maps.hpp) and named as written.
+bool build_eastray_texture_preamble(const std::vector<std::pair<std::string, std::string>>& maps,
+                                    const std::string& base_dir, std::uint64_t board_bytes, std::string& out,
+                                    std::string& error);
 
 }  // namespace minrt::send

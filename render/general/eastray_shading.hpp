@@ -13,6 +13,7 @@
 // a later one (CS418's rule, Hit::offer, is the later object).
 #pragma once
 
+#include "render/general/eastray_mapping.hpp"
 #include "render/general/tracer.hpp"
 
 namespace minrt::general {
@@ -81,6 +82,10 @@ class EastrayShader : public TracerCore<M, F> {
   // the absorption half distance of the body it travels in (0: air, where
   // the mist is).
   Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half) const;
+  // Whether a ray from `o` along `d` meets anything (EASTRAY's background image).
+  bool eastray_hits(const Vec3<R>& o, const Vec3<R>& d) const {
+    return eastray_nearest(o, d, R(0), R(1e30), false).found;
+  }
 
  private:
   using Base::bvh_;
@@ -199,7 +204,9 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_shadow(const Vec3<R>& p, con
   for (int layer = 0; layer < kMaxShadowLayers; ++layer) {
     const EastrayHit h = eastray_nearest(o, l, e.eps, remaining, true);
     if (!h.found) return f;
-    const model::EastrayMaterial<R>& m = e.materials[h.material];
+    model::EastrayMaterial<R> scratch;
+    V n = h.normal;
+    const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, o + l * h.t, n, scratch);
     if (maxc(m.transmit) <= R(0)) return V{};
     f = f * m.transmit;
     o = offset(o + l * h.t, dot(h.normal, l) > R(0) ? h.normal : -h.normal);
@@ -209,7 +216,7 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_shadow(const Vec3<R>& p, con
   return f;
 }
 
-// The sky, with visible sun discs (back_mode 0).
+// The sky, with visible sun discs (back_mode 0 and 2).
 template <class M, uint32_t F>
 Vec3<typename M::real> EastrayShader<M, F>::eastray_sky(const Vec3<R>& d) const {
   using V = Vec3<R>;
@@ -218,6 +225,7 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_sky(const Vec3<R>& d) const 
   constexpr R kDeg = R(kEastrayPi / 180.0);
   constexpr R kPi = R(kEastrayPi);
   V c = e.sky;
+  if (e.background == 1) return c;  // back_mode 1: the discs are not seen (line 213)
   for (int32_t i = 0; i < e.light_count; ++i) {
     const model::EastrayLight<R>& l = e.lights[i];
     if (l.kind != model::EastrayLightKind::kInfinite || !(l.size_deg > R(0))) continue;
@@ -325,6 +333,30 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_specular(const model::Eastra
       const V f = f0 + (V{R(1), R(1), R(1)} - f0) * w;
       return f * (dist * g / (R(4) * ndv));
     }
+    case model::Specular::kAniso1:
+    case model::Specular::kAniso2: {
+      // Ward's anisotropic Gaussian (the manual names the models, lines
+      // 573-584, but gives no formula): the scratches' direction t (p[3..5],
+      // set at the hit by eastray_surface) laid into the surface, B the
+      // roughness along them, A across them (B < A: the highlight streaks
+      // across the scratches), C the strength; times n.l like the diffuse.
+      if (!(ndv > R(0))) return V{};
+      V t{m.p[3], m.p[4], m.p[5]};
+      t = t - n * dot(t, n);
+      R tl = dot(t, t);
+      const R a = m.p[6], b = m.p[7], strength = m.p[8];
+      if (!(a > R(0)) || !(b > R(0))) return V{};
+      if (!(tl > R(0))) {  // a circle's centre, or scratches along n: any direction of the surface
+        t = cross(abs(n.x) < R(0.9) ? V{R(1), R(0), R(0)} : V{R(0), R(1), R(0)}, n);
+        tl = dot(t, t);
+      }
+      t = t / M::sqrt(tl);
+      const V bt = cross(n, t);
+      const R ht = dot(h, t) / b, hb = dot(h, bt) / a;
+      const R k = strength * M::exp(-(ht * ht + hb * hb) / (ndh * ndh)) /
+                  (R(4) * kPi * a * b * M::sqrt(ndl * ndv)) * ndl;
+      return V{m.p[0], m.p[1], m.p[2]} * k;
+    }
     default:
       return V{};
   }
@@ -340,10 +372,12 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, c
   // never meets the surface it starts on.
   const EastrayHit h = eastray_nearest(o, d, depth == 0 ? R(0) : e.eps, R(1e30), false);
   if (!h.found) return eastray_sky(d);
-  const model::EastrayMaterial<R>& m = e.materials[h.material];
   const V p = o + d * h.t;
+  model::EastrayMaterial<R> scratch;
+  V mapped_normal = h.normal;
+  const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, p, mapped_normal, scratch);
   const bool from_inside = dot(h.geo, d) > R(0);
-  const V n = from_inside ? -h.normal : h.normal;  // toward the viewer
+  const V n = from_inside ? -mapped_normal : mapped_normal;  // toward the viewer
   const V g = from_inside ? -h.geo : h.geo;
   const V v = -d;
   const V above = offset(p, g), below = offset(p, -g);

@@ -15,6 +15,23 @@
 
 namespace minrt::general {
 
+// rmode 1 (lines 57, 117): the eye of the right (side +1) or left (-1)
+// image, moved half the eye separation along the screen's right; the
+// separation is parallax times the eye's distance to the look-at point,
+// and both eyes look at that point (the image's centre, line 114).
+template <class M>
+Vec3<typename M::real> eastray_stereo_eye(const model::EastraySettings<typename M::real>& s, int side) {
+  using R = typename M::real;
+  using V = Vec3<R>;
+  const V to = s.look - s.eye;
+  const V forward = normalize<M>(to);
+  V up = s.up_point - s.look;
+  up = up - forward * dot(up, forward);
+  const V right = cross(forward, normalize<M>(up));
+  const R half = s.parallax * M::sqrt(dot(to, to)) / R(2);
+  return s.eye + right * (side > 0 ? half : -half);
+}
+
 template <class M, uint32_t F>
 class EastrayView {
   using R = typename M::real;
@@ -38,6 +55,21 @@ class EastrayView {
     const R sx = (R(2) * fx / M::from_int(s_.width) - R(1)) * tan_h_;
     const R sy = (R(1) - R(2) * fy / M::from_int(s_.height)) * tan_v_;
     const V d = normalize<M>(forward_ + right_ * sx + up_ * sy);
+    // back_mode 1 and 2 (lines 213-216): where the eye sees nothing, the
+    // input image, stretched over the display by its nearest pixel; with 2
+    // the sun discs show over it.
+    if (s_.background != 0 && s_.input_image != nullptr && !tracer_.eastray_hits(s_.eye, d)) {
+      const model::Texture& b = *s_.input_image;
+      int32_t bx = M::to_int(M::floor(fx / M::from_int(s_.width) * M::from_int(b.width)));
+      int32_t by = M::to_int(M::floor(fy / M::from_int(s_.height) * M::from_int(b.height)));
+      bx = bx < 0 ? 0 : bx >= b.width ? b.width - 1 : bx;
+      by = by < 0 ? 0 : by >= b.height ? b.height - 1 : by;
+      const uint8_t* p = b.rgb + (static_cast<size_t>(by) * static_cast<size_t>(b.width) + static_cast<size_t>(bx)) * 3u;
+      const V back{R(p[0]) / R(255), R(p[1]) / R(255), R(p[2]) / R(255)};
+      if (s_.background == 1) return back;
+      // back_mode 2: the sun discs over it (a missed ray brings the sky and its discs).
+      return back + (tracer_.eastray_radiance(s_.eye, d, 0, R(1), R(0)) - s_.sky);
+    }
     return tracer_.eastray_radiance(s_.eye, d, 0, R(1), R(0));
   }
 

@@ -288,14 +288,16 @@ TEST_CASE("eastray probe: display, condition, anti and shadow statements", "[eas
       }
     CHECK(shadowed > 10);
   }
-  SECTION("display window outside the image: nothing computed, a black image (line 78)") {
+  SECTION("display window outside the image: nothing would be computed (line 78), an error at the statement") {
     for (const char* d : {"display 41 31 0 0 41 30 1 1 1 ;\n", "display 41 31 5 0 4 30 1 1 1 ;\n",
                           "display 41 31 0 -1 40 30 1 1 1 ;\n"}) {
       INFO(d);
-      const auto im = render(d + cam + lit + "color [ " + kMatte + " ]\nobj [ " + floor_ball + " ]\n");
-      CHECK(im.width == 41);
-      CHECK(im.height == 31);
-      CHECK(covered(im, Rgb{0, 0, 0}) == 0);
+      EastrayImage im;
+      std::string error;
+      CHECK_FALSE(render_eastray("w.ray", d + cam + lit + "color [ " + kMatte + " ]\nobj [ " + floor_ball + " ]\n", {},
+                                 im, error));
+      CHECK(error.find("w.ray:1:") == 0);
+      CHECK(error.find("display window") != std::string::npos);
     }
   }
   SECTION("steps that do not divide the image: 3x4 blocks, cut at the window") {
