@@ -9,38 +9,7 @@
 # takes effect (flags set here stay as the build directory's first configure
 # left them). MINRT_CLANG and MINRT_LLD may name the tools; otherwise they
 # are searched.
-set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR riscv32)
-
-find_program(MINRT_CLANG NAMES clang clang-14 REQUIRED)
-find_program(MINRT_LLD NAMES ld.lld ld.lld-14 REQUIRED)
-get_filename_component(_minrt_clang_dir "${MINRT_CLANG}" DIRECTORY)
-find_program(MINRT_CLANGXX NAMES clang++ clang++-14 HINTS "${_minrt_clang_dir}" REQUIRED)
-
 set(_minrt_target riscv32-unknown-elf)
-set(CMAKE_C_COMPILER "${MINRT_CLANG}")
-set(CMAKE_CXX_COMPILER "${MINRT_CLANGXX}")
-set(CMAKE_ASM_COMPILER "${MINRT_CLANG}")
-set(CMAKE_C_COMPILER_TARGET ${_minrt_target})
-set(CMAKE_CXX_COMPILER_TARGET ${_minrt_target})
-set(CMAKE_ASM_COMPILER_TARGET ${_minrt_target})
-
-# There is no C library to link a test program against.
-set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
-
-set(_minrt_common
-    "-mcmodel=medany -ffreestanding -nostdlib -ffp-contract=off -ffunction-sections -fdata-sections")
-set(CMAKE_C_FLAGS_INIT "${_minrt_common}")
-set(CMAKE_ASM_FLAGS_INIT "${_minrt_common}")
-set(CMAKE_CXX_FLAGS_INIT "${_minrt_common} -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
-set(CMAKE_EXE_LINKER_FLAGS_INIT "--ld-path=${MINRT_LLD} -nostdlib -static -Wl,--gc-sections")
-
-# -O3: on the renderer it executes about 5% fewer instructions than -O2
-# (contest 128x128), which is what the course measures.
-foreach(_lang C CXX ASM)
-  set(CMAKE_${_lang}_FLAGS_RELEASE "-O3 -DNDEBUG" CACHE STRING "")
-endforeach()
-
-set(CMAKE_FIND_ROOT_PATH_MODE_PROGRAM NEVER)
-set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
-set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
+set(_minrt_cpu_flags "-mcmodel=medany")
+include(${CMAKE_CURRENT_LIST_DIR}/bare_metal_clang.cmake)

@@ -125,6 +125,17 @@ inline constexpr bool any_of(const char* const* list, const char* text, size_t n
 
 inline constexpr const Format& format_of(FormatId id) { return kFormats[static_cast<size_t>(id)]; }
 
+// Whether a side's table of what it does per format (its rows have an `id`)
+// has one row per registered format, in the registry's order: each side
+// checks its table with it at compile time.
+template <class Row, size_t N>
+constexpr bool follows_registry(const Row (&rows)[N]) {
+  if (N != kFormatCount) return false;
+  for (size_t i = 0; i < N; ++i)
+    if (rows[i].id != kFormats[i].id) return false;
+  return true;
+}
+
 // The format named `name` (as --scene-format takes it), or null.
 inline constexpr const Format* format_named(const char* name) {
   for (const Format& f : kFormats) {

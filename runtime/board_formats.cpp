@@ -38,13 +38,7 @@ constexpr BoardFormat kBoardFormats[] = {
     {FormatId::kEastray, &eastray_rows},
 };
 
-constexpr bool rows_follow_registry() {
-  if (sizeof kBoardFormats / sizeof kBoardFormats[0] != formats::kFormatCount) return false;
-  for (size_t i = 0; i < formats::kFormatCount; ++i)
-    if (kBoardFormats[i].id != formats::kFormats[i].id) return false;
-  return true;
-}
-static_assert(rows_follow_registry(), "kBoardFormats has one row per registered format, in the registry's order");
+static_assert(formats::follows_registry(kBoardFormats), "one row per registered format, in its order");
 
 // The texture preamble at the start of an upload, read where it lies.
 bool view_textures(const send::text::TextScene& upload, BoardScene& scene) {

@@ -19,15 +19,7 @@ inline constexpr HostFormat kHostFormats[] = {
     {formats::FormatId::kEastray, &prepare_eastray, nullptr},
 };
 
-namespace host_formats_detail {
-constexpr bool rows_follow_registry() {
-  if (sizeof kHostFormats / sizeof kHostFormats[0] != formats::kFormatCount) return false;
-  for (std::size_t i = 0; i < formats::kFormatCount; ++i)
-    if (kHostFormats[i].id != formats::kFormats[i].id) return false;
-  return true;
-}
-static_assert(rows_follow_registry(), "kHostFormats has one row per registered format, in the registry's order");
-}  // namespace host_formats_detail
+static_assert(formats::follows_registry(kHostFormats), "one row per registered format, in its order");
 
 inline const HostFormat& host_format(formats::FormatId id) { return kHostFormats[static_cast<std::size_t>(id)]; }
 

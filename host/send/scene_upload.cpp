@@ -92,13 +92,7 @@ constexpr UploadFormat kUploads[] = {
     {FormatId::kEastray, &prepare_eastray},
 };
 
-constexpr bool rows_follow_registry() {
-  if (sizeof kUploads / sizeof kUploads[0] != formats::kFormatCount) return false;
-  for (std::size_t i = 0; i < formats::kFormatCount; ++i)
-    if (kUploads[i].id != formats::kFormats[i].id) return false;
-  return true;
-}
-static_assert(rows_follow_registry(), "kUploads has one row per registered format, in the registry's order");
+static_assert(formats::follows_registry(kUploads), "one row per registered format, in its order");
 
 }  // namespace
 
