@@ -56,6 +56,8 @@ const char* cli_help_text() {
          "  --finisher ADDR        exit device (SiFive test finisher) base (default 0x100000)\n"
          "  --machine FILE         memory map from a file of key = value lines\n"
          "                         (ram = BASE:SIZE, uart = ADDR, finisher = ADDR)\n"
+         "  --board FILE           model a board description (boards/NAME.board): its ISA,\n"
+         "                         RAM/ROM, UART kind, halt method and reset address\n"
          "Debugging:\n"
          "  --stats                print instructions, cycles, host MIPS... on stderr\n"
          "  --trace                print every executed instruction with the registers\n"
@@ -103,6 +105,7 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     else if (a == "--uart") o.uart_base = value(a);
     else if (a == "--finisher") o.finisher_base = value(a);
     else if (a == "--machine") o.machine_file = value(a);
+    else if (a == "--board") o.board_file = value(a);
     else if (a == "--flame-out") o.flame_out = value(a);
     else if (a == "--gdb") {
       const uint64_t port = parse_port(a, value(a));
@@ -121,6 +124,8 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
   if (o.elf.empty()) throw UsageError("missing ELF file");
   if (o.pty && (!o.uart_in.empty() || !o.uart_out.empty()))
     throw UsageError("--pty cannot be combined with --uart-in/--uart-out");
+  if (!o.board_file.empty() && !o.machine_file.empty())
+    throw UsageError("--board and --machine cannot be combined (the board file holds the map)");
   if (o.gdb_port >= 0 && o.pty) throw UsageError("--gdb cannot be combined with --pty");
   return o;
 }

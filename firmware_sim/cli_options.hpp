@@ -24,6 +24,7 @@ struct CliOptions {
   // Memory map (memory_map.hpp): the machine file first, then --ram,
   // --ram-size, --uart and --finisher on top of it; empty = unchanged.
   std::string machine_file;
+  std::string board_file;         // --board: board description (board_file.hpp)
   std::string ram_spec, uart_base, finisher_base;
   bool stats = false;
   bool trace = false;

@@ -245,9 +245,9 @@ StopInfo GdbStub::step(Machine& m, uint64_t max_instructions) {
   HartState& h = m.hart();
   const uint32_t pc = h.pc;
   std::vector<uint32_t> next{pc + 4};
-  if (m.bus().in_ram(pc, 4) && !(pc & 3)) {
+  if (m.bus().in_code(pc, 4) && !(pc & 3)) {
     uint32_t word;
-    std::memcpy(&word, m.bus().ram_at(pc), 4);
+    std::memcpy(&word, m.bus().code_at(pc), 4);
     const DecodedInsn d = decode(word);
     const Format f = op_info(d.op).format;
     if (f == Format::Branch) next.push_back(pc + static_cast<uint32_t>(d.imm));
@@ -393,21 +393,21 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
       if (!parsed) {
         send_packet("E01");
       } else if (cmd == 'm') {
-        // RAM only: device registers have side effects a debugger must not trigger.
+        // RAM and ROM only: device registers have side effects a debugger must not trigger.
         std::string out;
-        for (uint64_t i = 0; i < len && m.bus().in_ram(static_cast<uint32_t>(addr + i), 1); ++i) {
+        for (uint64_t i = 0; i < len && m.bus().host_at(static_cast<uint32_t>(addr + i), 1); ++i) {
           char b[3];
-          std::snprintf(b, sizeof b, "%02x", *m.bus().ram_at(static_cast<uint32_t>(addr + i)));
+          std::snprintf(b, sizeof b, "%02x", *m.bus().host_at(static_cast<uint32_t>(addr + i), 1));
           out += b;
         }
         send_packet(out.empty() && len ? "E01" : out);
       } else {
         bool ok = colon != std::string::npos && args.size() - colon - 1 == 2 * len &&
-                  (len == 0 || m.bus().in_ram(static_cast<uint32_t>(addr), static_cast<uint32_t>(len)));
+                  (len == 0 || m.bus().host_at(static_cast<uint32_t>(addr), static_cast<uint32_t>(len)));
         for (uint64_t i = 0; ok && i < len; ++i) {
           const int hi = hex_digit(args[colon + 1 + 2 * i]), lo = hex_digit(args[colon + 2 + 2 * i]);
           if (hi < 0 || lo < 0) ok = false;
-          else *m.bus().ram_at(static_cast<uint32_t>(addr + i)) = static_cast<uint8_t>(hi << 4 | lo);
+          else *m.bus().host_at(static_cast<uint32_t>(addr + i), 1) = static_cast<uint8_t>(hi << 4 | lo);
         }
         if (ok && len) {
           m.invalidate_code(static_cast<uint32_t>(addr), static_cast<uint32_t>(len));

@@ -20,6 +20,7 @@
 #include "fpu.hpp"
 #include "fpu_approx.hpp"
 #include "host_fma.hpp"
+#include "isa_subset.hpp"
 #include "machine.hpp"
 
 namespace fwsim {
@@ -58,13 +59,13 @@ uint32_t rem_s(uint32_t a, uint32_t b) {
 
 void Machine::trace_instruction(uint32_t pc) {
   uint32_t word = 0;
-  std::memcpy(&word, bus_.ram_at(pc), 4);
+  std::memcpy(&word, bus_.code_at(pc), 4);
   write_commit_trace(trace_, pc, word, hart_);
 }
 
 StopInfo Machine::run(uint64_t max_instructions) {
   StopInfo s;
-  if (!bus_.in_ram(hart_.pc, 4)) {
+  if (!bus_.in_code(hart_.pc, 4)) {
     s.cause = StopCause::FetchFault;
     s.pc = s.addr = hart_.pc;
     return s;
@@ -142,10 +143,15 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   // Hoisted so the hooks test registers, not members, per instruction.
   const bool tracing = trace_ != nullptr;
   Profiler* const profiler = profiler_;
+  const bool halt_on_ecall = bus_.map().halt == HaltKind::Ecall;
 
   Entry* const base = code_.entries();
   const uint32_t ram_base = bus_.ram_base();
-  Entry* ip = base + (hart_.pc - ram_base) / 4;
+  // Code memory: RAM, or the board's ROM (data accesses to it take the bus).
+  const uint32_t code_base = bus_.code_base();
+  const uint32_t code_size = bus_.code_size();
+  const uint8_t* const code_mem = bus_.code();
+  Entry* ip = base + (hart_.pc - code_base) / 4;
   uint32_t* const x = hart_.x;
   // f[] directly follows x[] in HartState: addressing it from x saves a register.
   static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
@@ -163,7 +169,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
-#define PC_OF(p) (ram_base + static_cast<uint32_t>((p) - base) * 4u)
+#define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
 #define RETIRED() (n + static_cast<uint64_t>(ip - block))
 #define NOW() (Timed ? cycles : start + RETIRED())
 #define SYNC()                                                 \
@@ -353,17 +359,36 @@ R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
 
 L_UNDECODED: {
   uint32_t word;
-  std::memcpy(&word, ram + (PC_OF(ip) - ram_base), 4);
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   code_.fill(static_cast<uint32_t>(ip - base), word);
   DISPATCH();
 }
 L_ILLEGAL: FAULT(StopCause::IllegalInstruction, 0);
+L_OUTSIDE_ISA: {
+  uint32_t word;
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
+  stop.detail = missing_extension(code_.isa(), word, decode(word));
+  FAULT(StopCause::OutsideIsa, 0);
+}
+L_SELF_JUMP: {
+  // The board's "loop" halt: a taken jump or branch to itself ends the run.
+  uint32_t word;
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
+  const DecodedInsn d = decode(word);
+  if (branch_condition(d.op, x[d.rs1], x[d.rs2])) {
+    if (d.op == Op::JAL && d.rd != 0) x[d.rd] = PC_OF(ip) + 4;
+    stop.exit_code = static_cast<int>(x[10]);
+    goto halt_exit;
+  }
+  if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
+  NEXT();
+}
 L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
 L_BREAKPOINT: FAULT(StopCause::Breakpoint, PC_OF(ip));
 L_SLOW_CTI: {
-  // A branch or jal whose target is outside RAM or not word aligned.
+  // A branch or jal whose target is outside code memory or not word aligned.
   uint32_t word;
-  std::memcpy(&word, ram + (PC_OF(ip) - ram_base), 4);
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   const DecodedInsn d = decode(word);
   const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
   if (!taken) {
@@ -391,7 +416,7 @@ L_JAL: {
 L_JALR: {
   const uint32_t target = (RS1 + static_cast<uint32_t>(ip->imm)) & ~1u;
   if (target & 3) FAULT(StopCause::MisalignedFetch, target);
-  if (target - ram_base >= ram_size) FAULT(StopCause::FetchFault, target);
+  if (target - code_base >= code_size) FAULT(StopCause::FetchFault, target);
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
@@ -403,7 +428,7 @@ L_JALR: {
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
   }
-  ip = block = base + (target - ram_base) / 4;
+  ip = block = base + (target - code_base) / 4;
   if (n > limit) goto limit_reached;
   DISPATCH();
 }
@@ -441,7 +466,12 @@ L_SRA: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> (RS2 & 31)));
 L_OR: ALU(RS1 | RS2);
 L_AND: ALU(RS1 & RS2);
 L_FENCE: NEXT();
-L_ECALL: FAULT(StopCause::Ecall, 0);
+L_ECALL:
+  if (halt_on_ecall && x[17] == kEcallExit) {
+    stop.exit_code = static_cast<int>(x[10]);
+    goto halt_exit;
+  }
+  FAULT(StopCause::Ecall, 0);
 L_EBREAK: FAULT(StopCause::Ebreak, 0);
 L_MUL: ALU(RS1 * RS2);
 L_MULH: ALU(static_cast<uint32_t>((int64_t{static_cast<int32_t>(RS1)} * static_cast<int32_t>(RS2)) >> 32));
@@ -527,12 +557,19 @@ device_stop:
   stop.pc = PC_OF(ip) - (retire_stopper ? 4 : 0);
   if (bus_.finished()) {
     stop.cause = StopCause::Exit;
-    stop.exit_code = bus_.finisher().code();
+    stop.exit_code = bus_.exit_code();
   } else if (bus_.uart() && bus_.uart()->stalled()) {
     stop.cause = StopCause::UartStall;
   } else {
     stop.cause = StopCause::HostIo;
   }
+  goto out;
+halt_exit:
+  // The board's ecall or jump-to-self halt: the instruction retires.
+  STEP();
+  ++ip;
+  stop.pc = PC_OF(ip) - 4;
+  stop.cause = StopCause::Exit;
   goto out;
 limit_reached:
   stop.cause = StopCause::InstructionLimit;

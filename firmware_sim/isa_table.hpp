@@ -37,6 +37,8 @@ enum class Format : uint8_t {
   X(FETCH_FAULT, "<fetch fault>", Internal, None)      \
   X(SLOW_CTI, "<far jump>", Internal, None)            \
   X(BREAKPOINT, "<breakpoint>", Internal, None)        \
+  X(OUTSIDE_ISA, "<outside the board's ISA>", Internal, None) \
+  X(SELF_JUMP, "<jump to itself>", Internal, None)     \
   X(LUI, "lui", Alu, U)                                \
   X(AUIPC, "auipc", Alu, U)                            \
   X(JAL, "jal", Jump, J)                               \

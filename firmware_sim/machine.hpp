@@ -19,12 +19,17 @@ class FpuApprox;
 
 class Machine {
  public:
-  explicit Machine(const MemoryMap& map) : bus_(map), code_(map.ram_size) {}
-  explicit Machine(uint32_t ram_size) : Machine(MemoryMap{kRamBase, ram_size}) {}
+  explicit Machine(const MemoryMap& map) : bus_(map), code_(bus_.code_size()) {
+    if (map.halt == HaltKind::Loop) code_.configure(kReferenceIsa, true);
+  }
+  explicit Machine(uint32_t ram_size) : Machine(map_with_ram(ram_size)) {}
 
   Bus& bus() { return bus_; }
   HartState& hart() { return hart_; }
   CsrFile& csr() { return csr_; }
+  // The board's instruction set: instructions outside it stop the run with
+  // StopCause::OutsideIsa. Call before running.
+  void set_isa(const IsaSpec& isa) { code_.configure(isa, bus_.map().halt == HaltKind::Loop); }
 
   // With a model (and optionally a profiler or a trace stream) the timed
   // variant runs; without, the plain one, which counts instructions only.
@@ -40,17 +45,17 @@ class Machine {
 
   // Debugger support (gdb_stub.hpp). A breakpoint stops a run with
   // StopCause::Breakpoint before the instruction at `pc` executes; false when
-  // `pc` is not a word in RAM. Code written from outside (a debugger's memory
+  // `pc` is not a word of code memory. Code written from outside (a debugger's memory
   // write) must be invalidated to be decoded again.
   bool set_breakpoint(uint32_t pc) {
-    if (!bus_.in_ram(pc, 4) || (pc & 3)) return false;
-    code_.set_breakpoint((pc - bus_.ram_base()) / 4);
+    if (!bus_.in_code(pc, 4) || (pc & 3)) return false;
+    code_.set_breakpoint((pc - bus_.code_base()) / 4);
     return true;
   }
   void clear_breakpoint(uint32_t pc) { invalidate_code(pc, 4); }
   void invalidate_code(uint32_t addr, uint32_t len) {
     for (uint32_t a = addr & ~3u; a - (addr & ~3u) < len + (addr & 3); a += 4)
-      if (bus_.in_ram(a, 4)) code_.invalidate((a - bus_.ram_base()) / 4);
+      if (bus_.in_code(a, 4)) code_.invalidate((a - bus_.code_base()) / 4);
   }
 
   // Runs from hart().pc until the firmware stops, faults, or more than

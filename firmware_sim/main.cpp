@@ -9,8 +9,10 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "board_file.hpp"
 #include "boot_args.hpp"
 #include "cli_options.hpp"
 #include "disassembler.hpp"
@@ -110,9 +112,15 @@ int run(const std::vector<std::string>& argv) {
   std::unique_ptr<FpuApprox> fpu_model;
   if (!fpu_cfg.is_ieee()) fpu_model = std::make_unique<FpuApprox>(fpu_cfg);
 
-  // The memory map: the board's, then the machine file, then the options.
+  // The memory map: the board file's (default: the reference board), or the
+  // machine file, then the options.
   MemoryMap map;
+  std::optional<Board> board;
   try {
+    if (!opt.board_file.empty()) {
+      board = parse_board_file(read_text(opt.board_file, "board file"), opt.board_file);
+      map = board->map;
+    }
     if (!opt.machine_file.empty()) parse_machine_file(read_text(opt.machine_file, "machine file"), opt.machine_file, map);
     if (!opt.ram_spec.empty()) parse_ram_spec(opt.ram_spec, map);
     if (opt.ram_size) map.ram_size = opt.ram_size;
@@ -152,6 +160,7 @@ int run(const std::vector<std::string>& argv) {
     if (::access(opt.elf.c_str(), R_OK) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
   }
   Machine m(map);
+  if (board) m.set_isa(board->isa);
   LoadedElf elf;
   try {
     elf = load_elf(opt.elf, m.bus());
@@ -161,7 +170,11 @@ int run(const std::vector<std::string>& argv) {
   } catch (const std::runtime_error& e) {
     die(kExitLoad, e.what());
   }
-  m.hart().pc = elf.entry;
+  // A board starts at its reset address, whatever the ELF's entry says.
+  m.hart().pc = board ? board->reset : elf.entry;
+  if (board && elf.entry != board->reset)
+    std::fprintf(stderr, "firmware-sim: warning: %s: entry 0x%08x is not board %s's reset address 0x%08x; starting at reset\n",
+                 opt.elf.c_str(), elf.entry, board->name.c_str(), board->reset);
   m.csr().set_clock_hz(model_cfg.clock_hz);
 
   // Listen before anything slow, so a busy port fails at once.
@@ -175,6 +188,7 @@ int run(const std::vector<std::string>& argv) {
   }
 
   Uart::Config ucfg;
+  ucfg.layout = map.uart;
   if (opt.pty) {
     try {
       ucfg.in_fd = ucfg.out_fd = open_uart_pty();
@@ -233,7 +247,7 @@ int run(const std::vector<std::string>& argv) {
                  m.hart().pc, static_cast<unsigned long long>(m.hart().instret), kExitKilled);
   } else if (stop.cause != StopCause::Exit) {
     uint32_t word = 0;
-    if (m.bus().in_ram(stop.pc, 4)) std::memcpy(&word, m.bus().ram_at(stop.pc), 4);
+    if (const uint8_t* p = m.bus().host_at(stop.pc, 4)) std::memcpy(&word, p, 4);
     std::fprintf(stderr, "firmware-sim: error: %s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
   }
   if (profiler) {

@@ -30,6 +30,7 @@ enum class StopCause : uint8_t {
   UartStall,
   HostIo,
   Breakpoint,          // a debugger breakpoint (gdb_stub.hpp); the instruction has not run
+  OutsideIsa,          // an instruction the board's ISA lacks (--board)
 };
 
 struct StopInfo {
@@ -37,6 +38,7 @@ struct StopInfo {
   uint32_t pc = 0;        // pc of the instruction that stopped the run
   uint32_t addr = 0;      // faulting data address / jump target
   int exit_code = 0;      // for StopCause::Exit
+  const char* detail = nullptr;  // OutsideIsa: what the instruction needs
 };
 
 const char* describe(StopCause c);
