@@ -21,16 +21,24 @@
 #include "fpu_approx.hpp"
 #include "host_fma.hpp"
 #include "isa_subset.hpp"
+#include "block_costs.hpp"
 #include "machine.hpp"
 
 namespace fwsim {
 namespace {
 
 inline float as_float(uint32_t b) { return std::bit_cast<float>(b); }
+// r != r is a quiet compare (ucomiss): it raises nothing for the quiet NaNs
+// arithmetic produces.
 inline uint32_t host_result(float r) {
-  const uint32_t b = std::bit_cast<uint32_t>(r);
-  return fpu::is_nan(b) ? fpu::kCanonicalNaN : b;
+  return __builtin_expect(r != r, 0) ? fpu::kCanonicalNaN : std::bit_cast<uint32_t>(r);
 }
+// Host compares give the RISC-V results and flags: < and <= compile to
+// comiss (invalid on any NaN, like flt.s/fle.s), == to ucomiss (invalid on a
+// signaling NaN only, like feq.s); unordered operands compare false.
+inline uint32_t host_lt(uint32_t a, uint32_t b) { return as_float(a) < as_float(b); }
+inline uint32_t host_le(uint32_t a, uint32_t b) { return as_float(a) <= as_float(b); }
+inline uint32_t host_eq(uint32_t a, uint32_t b) { return as_float(a) == as_float(b); }
 
 bool branch_condition(Op op, uint32_t a, uint32_t b) {
   switch (op) {
@@ -76,13 +84,19 @@ StopInfo Machine::run(uint64_t max_instructions) {
     return s;
   }
   fpu::clear_host_flags();
-  s = (model_ || profiler_ || trace_) ? run_loop<true>(max_instructions) : run_loop<false>(max_instructions);
+  // Plain; timed with pre-computed costs; timed with per-instruction hooks
+  // (trace, caches), which the pre-computed costs cannot express.
+  if (!model_ && !profiler_ && !trace_) s = run_loop<0>(max_instructions);
+  else if (model_ && !trace_ && !model_->per_access_state()) s = run_loop<1>(max_instructions);
+  else s = run_loop<2>(max_instructions);
   hart_.fflags |= fpu::take_host_flags();
   return s;
 }
 
-template <bool Timed>
+template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
+  constexpr bool Timed = Mode != 0;
+  constexpr bool Hooks = Mode == 2;  // per-instruction model calls
   static const void* const kLabels[] = {
 #define FWSIM_LABEL(name, mn, cls, fmt) &&L_##name,
       FWSIM_OPS(FWSIM_LABEL)
@@ -160,17 +174,44 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const uint32_t ram_size = bus_.ram_size();
   const uint64_t start = hart_.instret;
   const uint64_t limit = max_instructions > start ? max_instructions - start : 0;
-  // Instructions are counted per straight-line run: `n` holds the count up
-  // to `block` (the last jump target), so the running count is
-  // n + (ip - block) and straight-line code pays nothing for counting.
-  uint64_t n = 0;
-  Entry* block = ip;
+  // Instructions are counted per straight-line run, in bytes of entries:
+  // `k` is (count up to the last jump target) * sizeof(Entry) minus that
+  // target's address, so the running count is (k + ip) / sizeof(Entry), a
+  // taken jump updates k with one subtraction and straight-line code pays
+  // nothing for counting.
+  static_assert(sizeof(Entry) == 8);
+  uint64_t k = 0 - reinterpret_cast<uint64_t>(ip);
+  // Block-costed timing (Mode 1): slots, enters and leaves parallel the
+  // entries with the same stride, so each is `ip` plus a fixed distance.
+  Entry* const start_ip = ip;
+  Entry* run_start = ip;      // first entry of the current straight-line run
+  uint32_t discount = 0;      // stall not charged at run_start (entered by a jump)
+  bool discounted = false;    // run_start was entered by a jump
+  intptr_t slot_bias = 0, enter_bias = 0, leave_bias = 0;
+  if constexpr (Mode == 1) {
+    if (costs_.built_for() != model_) costs_.build(code_, model);
+    slot_bias = reinterpret_cast<char*>(costs_.slots()) - reinterpret_cast<char*>(base);
+    enter_bias = reinterpret_cast<char*>(costs_.enters()) - reinterpret_cast<char*>(base);
+    leave_bias = reinterpret_cast<char*>(costs_.leaves()) - reinterpret_cast<char*>(base);
+  }
+#define SLOT(p) (*reinterpret_cast<CostSlot*>(reinterpret_cast<char*>(p) + slot_bias))
+#define ENTERS(p) (*reinterpret_cast<uint64_t*>(reinterpret_cast<char*>(p) + enter_bias))
+#define LEAVES(p) (*reinterpret_cast<uint64_t*>(reinterpret_cast<char*>(p) + leave_bias))
+  if constexpr (Mode == 1) {
+    ++ENTERS(ip);
+    // Resuming right after the previous run's last instruction: the stall
+    // (if any) applies as in straight-line code.
+    discounted = resume_pc_ != hart_.pc;
+    discount = discounted ? SLOT(ip).stall : 0;
+    cycles -= discount;
+  }
+  const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
   StopInfo stop;
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
 #define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
-#define RETIRED() (n + static_cast<uint64_t>(ip - block))
+#define RETIRED() ((k + reinterpret_cast<uint64_t>(ip)) >> 3)
 #define NOW() (Timed ? cycles : start + RETIRED())
 #define SYNC()                                                 \
   do {                                                         \
@@ -180,9 +221,11 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define DISPATCH() goto* labels[ip->op]
 #define STEP()                                           \
   do {                                                   \
-    if constexpr (Timed) {                               \
-      model.instruction(*ip, PC_OF(ip), cycles);                 \
+    if constexpr (Hooks) {                               \
+      model.instruction(*ip, PC_OF(ip), cycles);         \
       if (tracing) trace_instruction(PC_OF(ip));         \
+    } else if constexpr (Timed) {                        \
+      cycles += SLOT(ip).cost;                           \
     }                                                    \
   } while (0)
 #define NEXT()   \
@@ -191,15 +234,30 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     ++ip;        \
     DISPATCH();  \
   } while (0)
-  // Closes the straight-line run at the current instruction (which retires).
-#define END_BLOCK() (n += static_cast<uint64_t>(ip - block) + 1)
-#define JUMP(target)                       \
-  do {                                     \
-    STEP();                                \
-    END_BLOCK();                           \
-    ip = block = (target);                 \
-    if (n > limit) goto limit_reached;     \
-    DISPATCH();                            \
+  // Closes the straight-line run at the current instruction (which retires)
+  // and starts one at `target`; `done` is the count so far, in bytes.
+#define ENTER(target, done)                                   \
+  do {                                                        \
+    if constexpr (Mode == 1) {                                \
+      ++LEAVES(ip);                                           \
+      ++ENTERS(target);                                       \
+      run_start = (target);                                   \
+      discounted = true;                                      \
+      discount = SLOT(run_start).stall;                       \
+      cycles -= discount;                                     \
+    }                                                         \
+    k = (done) - reinterpret_cast<uint64_t>(target);          \
+    ip = (target);                                            \
+    if ((done) > limit8) goto limit_reached;                  \
+  } while (0)
+#define DONE() (k + reinterpret_cast<uint64_t>(ip + 1))
+#define JUMP(target)                          \
+  do {                                        \
+    STEP();                                   \
+    Entry* const to_ = (target);              \
+    const uint64_t done_ = DONE();            \
+    ENTER(to_, done_);                        \
+    DISPATCH();                               \
   } while (0)
 #define FAULT(c, a)      \
   do {                   \
@@ -223,7 +281,10 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     NEXT();       \
   } while (0)
   // Memory: one range+alignment check for RAM, everything else on the bus.
-#define IN_RAM(T) (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1)))
+  // Rotating the offset right by log2(size) moves misaligned low bits to the
+  // top, so one unsigned compare checks both range and alignment.
+#define IN_RAM(T)                                                                   \
+  __builtin_expect(std::rotr(off, std::countr_zero(sizeof(T))) < (ram_size >> std::countr_zero(sizeof(T))), 1)
 #define BUS_FAULTS(misaligned, fault)                                 \
   if (bus_result == Bus::Result::Misaligned) FAULT(misaligned, addr); \
   if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
@@ -245,7 +306,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       }                                                                                 \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
-    if constexpr (Timed) model.data(addr, cycles);                                              \
+    if constexpr (Hooks) model.data(addr, cycles);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
     NEXT();                                                                             \
   } while (0)
@@ -266,7 +327,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
         goto device_stop;                                                                \
       }                                                                                  \
     }                                                                                    \
-    if constexpr (Timed) model.data(addr, cycles);                                               \
+    if constexpr (Hooks) model.data(addr, cycles);                                               \
     NEXT();                                                                              \
   } while (0)
 #define CSR(op, operand, write)                                                         \
@@ -361,6 +422,15 @@ L_UNDECODED: {
   uint32_t word;
   std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   code_.fill(static_cast<uint32_t>(ip - base), word);
+  if constexpr (Mode == 1) {
+    costs_.update(code_, model, static_cast<uint32_t>(ip - base));
+    // A run entered here by a jump was discounted before the stall was known.
+    if (ip == run_start && discounted) {
+      cycles += discount;
+      discount = SLOT(ip).stall;
+      cycles -= discount;
+    }
+  }
   DISPATCH();
 }
 L_ILLEGAL: FAULT(StopCause::IllegalInstruction, 0);
@@ -405,12 +475,11 @@ L_JAL: {
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
-  END_BLOCK();
+  const uint64_t done = DONE();
   if constexpr (Timed) {
-    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + n, cycles});
+    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + (done >> 3), cycles});
   }
-  ip = block = target;
-  if (n > limit) goto limit_reached;
+  ENTER(target, done);
   DISPATCH();
 }
 L_JALR: {
@@ -420,16 +489,15 @@ L_JALR: {
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
-  END_BLOCK();
+  const uint64_t done = DONE();
   if constexpr (Timed) {
     if (profiler) {
-      const Cost now{start + n, cycles};
+      const Cost now{start + (done >> 3), cycles};
       if (ip->rd == 1) profiler->call(target, link, now);
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
   }
-  ip = block = base + (target - code_base) / 4;
-  if (n > limit) goto limit_reached;
+  ENTER(base + (target - code_base) / 4, done);
   DISPATCH();
 }
 L_BEQ: BRANCH(RS1 == RS2);
@@ -527,9 +595,9 @@ L_FCVT_WU_S: {
   ALU(fpu::to_uint32(f[ip->rs1], rm, hart_.fflags));
 }
 L_FMV_X_W: ALU(f[ip->rs1]);
-L_FEQ_S: ALU(fpu::eq(f[ip->rs1], f[ip->rs2], hart_.fflags));
-L_FLT_S: ALU(fpu::lt(f[ip->rs1], f[ip->rs2], hart_.fflags));
-L_FLE_S: ALU(fpu::le(f[ip->rs1], f[ip->rs2], hart_.fflags));
+L_FEQ_S: ALU(host_eq(f[ip->rs1], f[ip->rs2]));
+L_FLT_S: ALU(host_lt(f[ip->rs1], f[ip->rs2]));
+L_FLE_S: ALU(host_le(f[ip->rs1], f[ip->rs2]));
 L_FCLASS_S: ALU(fpu::classify(f[ip->rs1]));
 L_FCVT_S_W: {
   ROUNDING(rm);
@@ -578,6 +646,18 @@ limit_reached:
 fault:
   stop.pc = PC_OF(ip);
 out:
+  if constexpr (Mode == 1) {
+    if (ip != run_start) {
+      ++LEAVES(ip - 1);
+      resume_pc_ = PC_OF(ip);
+    } else {
+      // Nothing of this run retired: undo its entry.
+      --ENTERS(ip);
+      cycles += discount;
+      if (ip != start_ip) resume_pc_ = ~0u;
+    }
+    costs_.fold(code_, code_mem, model);
+  }
   hart_.pc = PC_OF(ip);
   SYNC();  // ip is not retired: the count runs up to it
   x[0] = 0;
@@ -586,7 +666,11 @@ out:
 #undef PC_OF
 #undef NOW
 #undef RETIRED
-#undef END_BLOCK
+#undef ENTER
+#undef SLOT
+#undef ENTERS
+#undef LEAVES
+#undef DONE
 #undef SYNC
 #undef DISPATCH
 #undef STEP
@@ -611,7 +695,8 @@ out:
 #undef FP_MODEL
 }
 
-template StopInfo Machine::run_loop<true>(uint64_t);
-template StopInfo Machine::run_loop<false>(uint64_t);
+template StopInfo Machine::run_loop<0>(uint64_t);
+template StopInfo Machine::run_loop<1>(uint64_t);
+template StopInfo Machine::run_loop<2>(uint64_t);
 
 }  // namespace fwsim

@@ -8,6 +8,7 @@
 #include "bus.hpp"
 #include "csr.hpp"
 #include "cycle_model.hpp"
+#include "block_costs.hpp"
 #include "decode_cache.hpp"
 #include "hart_state.hpp"
 #include "profiler.hpp"
@@ -63,7 +64,7 @@ class Machine {
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
 
  private:
-  template <bool Timed>
+  template <int Mode>  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
 
@@ -71,6 +72,8 @@ class Machine {
   HartState hart_;
   CsrFile csr_;
   DecodeCache code_;
+  BlockCosts costs_;
+  uint32_t resume_pc_ = ~0u;  // where the last timed run stopped after straight-line code
   CycleModel* model_ = nullptr;
   Profiler* profiler_ = nullptr;
   std::FILE* trace_ = nullptr;
