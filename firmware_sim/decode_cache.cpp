@@ -45,6 +45,15 @@ void DecodeCache::fill(uint32_t index, uint32_t word) {
   if (self_jump_halts_ && (fmt == Format::Branch || fmt == Format::J) && d.imm == 0)
     e.op = static_cast<uint8_t>(Op::SELF_JUMP);
   entries_[index] = e;
+  if (index > 0) fuse(index - 1);
+  fuse(index);
+}
+
+void DecodeCache::fuse(uint32_t index) {
+  if (index + 1 >= count_) return;
+  Entry& first = entries_[index];
+  const Op f = fused_op(base_op(static_cast<Op>(first.op)), base_op(static_cast<Op>(entries_[index + 1].op)));
+  if (f != Op::UNDECODED) first.op = static_cast<uint8_t>(f);
 }
 
 }  // namespace fwsim

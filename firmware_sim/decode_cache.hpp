@@ -55,10 +55,23 @@ class DecodeCache {
   void fill(uint32_t index, uint32_t word);
   // Debugger support: a breakpoint replaces the entry (the instruction in RAM
   // stays as it is); invalidating makes the word decode again on its next run.
-  void set_breakpoint(uint32_t index) { entries_[index] = Entry{static_cast<uint8_t>(Op::BREAKPOINT), 0, 0, 0, 0}; }
-  void invalidate(uint32_t index) { entries_[index] = Entry{}; }
+  void set_breakpoint(uint32_t index) {
+    entries_[index] = Entry{static_cast<uint8_t>(Op::BREAKPOINT), 0, 0, 0, 0};
+    unfuse_before(index);
+  }
+  void invalidate(uint32_t index) {
+    entries_[index] = Entry{};
+    unfuse_before(index);
+  }
 
  private:
+  // Pairs (fused_op): entry i fuses with i+1 once both are decoded; a
+  // changed entry i+1 undoes it.
+  void fuse(uint32_t index);
+  void unfuse_before(uint32_t index) {
+    if (index > 0) entries_[index - 1].op = static_cast<uint8_t>(base_op(static_cast<Op>(entries_[index - 1].op)));
+  }
+
   Entry* entries_;
   uint32_t count_;
   IsaSpec isa_;

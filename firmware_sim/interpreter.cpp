@@ -97,14 +97,21 @@ template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
   constexpr bool Timed = Mode != 0;
   constexpr bool Hooks = Mode == 2;  // per-instruction model calls
+  // Fused ops run as their first instruction except in the plain loop's
+  // RNE table (kLabelsFused), where one handler runs the pair.
   static const void* const kLabels[] = {
 #define FWSIM_LABEL(name, mn, cls, fmt) &&L_##name,
       FWSIM_OPS(FWSIM_LABEL)
 #undef FWSIM_LABEL
+#define FWSIM_FUSED_LABEL(name, a, b) &&L_##a,
+      FWSIM_FUSED(FWSIM_FUSED_LABEL)
+#undef FWSIM_FUSED_LABEL
   };
+  static_assert(sizeof kLabels / sizeof kLabels[0] == static_cast<size_t>(Op::Count));
   // While frm is RNE (almost always), FP arithmetic dispatches through this
   // table to handlers that skip the rounding-mode decode.
   static const void* kLabelsRne[sizeof kLabels / sizeof kLabels[0]];
+  static const void* kLabelsFused[sizeof kLabels / sizeof kLabels[0]];
   static bool rne_table_ready = false;
   if (!rne_table_ready) {
     std::memcpy(kLabelsRne, kLabels, sizeof kLabels);
@@ -119,6 +126,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     kLabelsRne[static_cast<int>(Op::FNMADD_S)] = &&R_FNMADD_S;
     kLabelsRne[static_cast<int>(Op::FCVT_S_W)] = &&R_FCVT_S_W;
     kLabelsRne[static_cast<int>(Op::FCVT_S_WU)] = &&R_FCVT_S_WU;
+    for (unsigned op = kBaseOpCount; op < static_cast<unsigned>(Op::Count); ++op)
+      kLabelsRne[op] = kLabelsRne[static_cast<unsigned>(base_op(static_cast<Op>(op)))];
+    std::memcpy(kLabelsFused, kLabelsRne, sizeof kLabels);
+#define FWSIM_FUSED_ROUTE(name, a, b) kLabelsFused[static_cast<int>(Op::name)] = &&F_##name;
+    FWSIM_FUSED(FWSIM_FUSED_ROUTE)
+#undef FWSIM_FUSED_ROUTE
     rne_table_ready = true;
   }
   // With an FPU model, the ops it replaces dispatch to the M_ handlers in
@@ -127,7 +140,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* model_labels[kOpCount];
   const void* model_labels_rne[kOpCount];
   const void* const* labels_any = kLabels;
-  const void* const* labels_rne = kLabelsRne;
+  const void* const* labels_rne = Mode == 0 ? kLabelsFused : kLabelsRne;
   const FpuApprox* const approx = fpu_model_;
   if (approx) {
     std::memcpy(model_labels, kLabels, sizeof kLabels);
@@ -144,6 +157,11 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     if (approx->models_div()) ROUTE(Op::FDIV_S, &&M_FDIV_S);
     if (approx->models_sqrt()) ROUTE(Op::FSQRT_S, &&M_FSQRT_S);
 #undef ROUTE
+    for (unsigned op = kBaseOpCount; op < static_cast<unsigned>(Op::Count); ++op) {
+      const unsigned b = static_cast<unsigned>(base_op(static_cast<Op>(op)));
+      model_labels[op] = model_labels[b];
+      model_labels_rne[op] = model_labels_rne[b];
+    }
     labels_any = model_labels;
     labels_rne = model_labels_rne;
   }
@@ -172,6 +190,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   uint32_t* const f = x + 33;
   uint8_t* const ram = bus_.ram();
   const uint32_t ram_size = bus_.ram_size();
+  // RAM size in units of 1, 2 and 4 bytes: the limits of the rotated offsets.
+  const uint32_t ram_units[3] = {ram_size, ram_size >> 1, ram_size >> 2};
   const uint64_t start = hart_.instret;
   const uint64_t limit = max_instructions > start ? max_instructions - start : 0;
   // Instructions are counted per straight-line run, in bytes of entries:
@@ -228,12 +248,13 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       cycles += SLOT(ip).cost;                           \
     }                                                    \
   } while (0)
-#define NEXT()   \
-  do {           \
-    STEP();      \
-    ++ip;        \
-    DISPATCH();  \
+#define NEXT_THEN(cont) \
+  do {                  \
+    STEP();             \
+    ++ip;               \
+    cont;               \
   } while (0)
+#define NEXT() NEXT_THEN(DISPATCH())
   // Closes the straight-line run at the current instruction (which retires)
   // and starts one at `target`; `done` is the count so far, in bytes.
 #define ENTER(target, done)                                   \
@@ -265,30 +286,32 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     stop.addr = (a);     \
     goto fault;          \
   } while (0)
-#define BRANCH(cond)                                                   \
+#define BRANCH_THEN(cond, cont)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
     if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0, cycles);  \
     if (taken) JUMP(ip + ip->imm);                                     \
-    NEXT();                                                            \
+    NEXT_THEN(cont);                                                            \
   } while (0)
+#define BRANCH(cond) BRANCH_THEN(cond, DISPATCH())
 #define RS1 x[ip->rs1]
 #define RS2 x[ip->rs2]
 #define RD x[ip->rd]
-#define ALU(expr) \
+#define ALU_THEN(expr, cont) \
   do {            \
     RD = (expr);  \
-    NEXT();       \
+    NEXT_THEN(cont);       \
   } while (0)
+#define ALU(expr) ALU_THEN(expr, DISPATCH())
   // Memory: one range+alignment check for RAM, everything else on the bus.
   // Rotating the offset right by log2(size) moves misaligned low bits to the
   // top, so one unsigned compare checks both range and alignment.
 #define IN_RAM(T)                                                                   \
-  __builtin_expect(std::rotr(off, std::countr_zero(sizeof(T))) < (ram_size >> std::countr_zero(sizeof(T))), 1)
+  __builtin_expect(std::rotr(off, std::countr_zero(sizeof(T))) < ram_units[std::countr_zero(sizeof(T))], 1)
 #define BUS_FAULTS(misaligned, fault)                                 \
   if (bus_result == Bus::Result::Misaligned) FAULT(misaligned, addr); \
   if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
-#define LOAD(T, dest)                                                                   \
+#define LOAD_THEN(T, dest, cont)                                                                   \
   do {                                                                                  \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                         \
     const uint32_t off = addr - ram_base;                                               \
@@ -308,8 +331,9 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     }                                                                                   \
     if constexpr (Hooks) model.data(addr, cycles);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
-    NEXT();                                                                             \
+    NEXT_THEN(cont);                                                                             \
   } while (0)
+#define LOAD(T, dest) LOAD_THEN(T, dest, DISPATCH())
 #define STORE(T, value)                                                                  \
   do {                                                                                   \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
@@ -370,15 +394,16 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   } while (0)
 
   // RNE-table handlers: fall back to the generic handler for static modes.
-#define FP_RNE(generic, expr)                                        \
+#define FP_RNE_THEN(generic, expr, cont)                                        \
   do {                                                               \
     if (!(ip->imm & kRneOrDyn)) goto generic;                        \
     const float a = as_float(f[ip->rs1]), b = as_float(f[ip->rs2]);  \
     (void)a;                                                         \
     (void)b;                                                         \
     f[ip->rd] = host_result(expr);                                   \
-    NEXT();                                                          \
+    NEXT_THEN(cont);                                                          \
   } while (0)
+#define FP_RNE(generic, expr) FP_RNE_THEN(generic, expr, DISPATCH())
 #define FP_RNE_FUSED(generic, neg_product, neg_addend)                                   \
   do {                                                                                   \
     const uint32_t c = f[entry_rs3(*ip)];                                                \
@@ -417,6 +442,46 @@ R_FNMSUB_S: FP_RNE_FUSED(L_FNMSUB_S, true, false);
 R_FNMADD_S: FP_RNE_FUSED(L_FNMADD_S, true, true);
 R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(x[ip->rs1])));
 R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
+
+  // Fused pairs (isa_table.hpp FWSIM_FUSED): the first instruction's body,
+  // then straight to the second's handler without a dispatch.
+#define BODY_FLW(cont) LOAD_THEN(uint32_t, f[ip->rd], cont)
+#define BODY_LW(cont) LOAD_THEN(uint32_t, RD, cont)
+#define BODY_FMUL_S(cont) FP_RNE_THEN(L_FMUL_S, a * b, cont)
+#define BODY_FADD_S(cont) FP_RNE_THEN(L_FADD_S, a + b, cont)
+#define BODY_FSUB_S(cont) FP_RNE_THEN(L_FSUB_S, a - b, cont)
+#define BODY_FSGNJX_S(cont)                                      \
+  do {                                                           \
+    f[ip->rd] = f[ip->rs1] ^ (f[ip->rs2] & 0x80000000u);         \
+    NEXT_THEN(cont);                                             \
+  } while (0)
+#define BODY_FLT_S(cont) ALU_THEN(host_lt(f[ip->rs1], f[ip->rs2]), cont)
+#define BODY_FLE_S(cont) ALU_THEN(host_le(f[ip->rs1], f[ip->rs2]), cont)
+#define BODY_ADDI(cont) ALU_THEN(RS1 + static_cast<uint32_t>(ip->imm), cont)
+#define BODY_ADD(cont) ALU_THEN(RS1 + RS2, cont)
+#define BODY_SLLI(cont) ALU_THEN(RS1 << ip->imm, cont)
+#define BODY_AND(cont) ALU_THEN(RS1 & RS2, cont)
+#define BODY_BEQ(cont) BRANCH_THEN(RS1 == RS2, cont)
+#define BODY_BNE(cont) BRANCH_THEN(RS1 != RS2, cont)
+  // The second instruction's handler in the RNE table.
+#define SECOND_FLW L_FLW
+#define SECOND_LW L_LW
+#define SECOND_FMUL_S R_FMUL_S
+#define SECOND_FADD_S R_FADD_S
+#define SECOND_FSUB_S R_FSUB_S
+#define SECOND_FSGNJX_S L_FSGNJX_S
+#define SECOND_FLT_S L_FLT_S
+#define SECOND_FLE_S L_FLE_S
+#define SECOND_XORI L_XORI
+#define SECOND_ADDI L_ADDI
+#define SECOND_ADD L_ADD
+#define SECOND_BEQ L_BEQ
+#define SECOND_BNE L_BNE
+#define FWSIM_FUSED_HANDLER(name, a, b) \
+  F_##name:                             \
+  BODY_##a(goto SECOND_##b);
+  FWSIM_FUSED(FWSIM_FUSED_HANDLER)
+#undef FWSIM_FUSED_HANDLER
 
 L_UNDECODED: {
   uint32_t word;
@@ -664,6 +729,7 @@ out:
   return stop;
 
 #undef PC_OF
+#undef f
 #undef NOW
 #undef RETIRED
 #undef ENTER
