@@ -334,7 +334,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     NEXT_THEN(cont);                                                                             \
   } while (0)
 #define LOAD(T, dest) LOAD_THEN(T, dest, DISPATCH())
-#define STORE(T, value)                                                                  \
+#define STORE_THEN(T, value, cont)                                                                  \
   do {                                                                                   \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
     const uint32_t off = addr - ram_base;                                                \
@@ -352,8 +352,9 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       }                                                                                  \
     }                                                                                    \
     if constexpr (Hooks) model.data(addr, cycles);                                               \
-    NEXT();                                                                              \
+    NEXT_THEN(cont);                                                                              \
   } while (0)
+#define STORE(T, value) STORE_THEN(T, value, DISPATCH())
 #define CSR(op, operand, write)                                                         \
   do {                                                                                  \
     SYNC();                                                                             \
@@ -463,6 +464,17 @@ R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
 #define BODY_AND(cont) ALU_THEN(RS1 & RS2, cont)
 #define BODY_BEQ(cont) BRANCH_THEN(RS1 == RS2, cont)
 #define BODY_BNE(cont) BRANCH_THEN(RS1 != RS2, cont)
+#define BODY_BGE(cont) BRANCH_THEN(static_cast<int32_t>(RS1) >= static_cast<int32_t>(RS2), cont)
+#define BODY_LUI(cont) ALU_THEN(static_cast<uint32_t>(ip->imm), cont)
+#define BODY_SLT(cont) ALU_THEN(static_cast<int32_t>(RS1) < static_cast<int32_t>(RS2), cont)
+#define BODY_SLTU(cont) ALU_THEN(RS1 < RS2, cont)
+#define BODY_LBU(cont) LOAD_THEN(uint8_t, RD, cont)
+#define BODY_FSW(cont) STORE_THEN(uint32_t, f[ip->rs2], cont)
+#define BODY_FMV_W_X(cont) \
+  do {                     \
+    f[ip->rd] = RS1;       \
+    NEXT_THEN(cont);       \
+  } while (0)
   // The second instruction's handler in the RNE table.
 #define SECOND_FLW L_FLW
 #define SECOND_LW L_LW
@@ -477,6 +489,13 @@ R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
 #define SECOND_ADD L_ADD
 #define SECOND_BEQ L_BEQ
 #define SECOND_BNE L_BNE
+#define SECOND_BGE L_BGE
+#define SECOND_LUI L_LUI
+#define SECOND_FMV_W_X L_FMV_W_X
+#define SECOND_FSW L_FSW
+#define SECOND_AND L_AND
+#define SECOND_SLT L_SLT
+#define SECOND_SLTU L_SLTU
 #define FWSIM_FUSED_HANDLER(name, a, b) \
   F_##name:                             \
   BODY_##a(goto SECOND_##b);

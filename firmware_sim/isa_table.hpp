@@ -159,7 +159,29 @@ enum class Format : uint8_t {
   X(BEQ_LW, BEQ, LW)              \
   X(BEQ_BNE, BEQ, BNE)            \
   X(BEQ_ADDI, BEQ, ADDI)          \
-  X(BNE_FLW, BNE, FLW)
+  X(BNE_FLW, BNE, FLW)            \
+  X(FLW_FLT, FLW, FLT_S)          \
+  X(FLW_LUI, FLW, LUI)            \
+  X(FLW_FMV_W_X, FLW, FMV_W_X)    \
+  X(FMV_W_X_FLT, FMV_W_X, FLT_S)  \
+  X(LUI_FLW, LUI, FLW)            \
+  X(BGE_ADDI, BGE, ADDI)          \
+  X(AND_BNE, AND, BNE)            \
+  X(FSW_FLW, FSW, FLW)            \
+  X(FSW_FSW, FSW, FSW)            \
+  X(FSW_LW, FSW, LW)              \
+  X(ADDI_FLW, ADDI, FLW)          \
+  X(ADDI_BGE, ADDI, BGE)          \
+  X(ADDI_SLT, ADDI, SLT)          \
+  X(FLT_XORI, FLT_S, XORI)        \
+  X(FLT_FLT, FLT_S, FLT_S)        \
+  X(FLT_AND, FLT_S, AND)          \
+  X(FMUL_FSUB, FMUL_S, FSUB_S)    \
+  X(FSUB_BEQ, FSUB_S, BEQ)        \
+  X(LBU_FLW, LBU, FLW)            \
+  X(LBU_SLTU, LBU, SLTU)          \
+  X(SLTU_ADDI, SLTU, ADDI)        \
+  X(SLT_AND, SLT, AND)
 
 enum class Op : uint8_t {
 #define FWSIM_ENUM(name, mn, cls, fmt) name,
