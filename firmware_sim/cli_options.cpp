@@ -62,6 +62,7 @@ const char* cli_help_text() {
          "  --stats                print instructions, cycles, host MIPS... on stderr\n"
          "  --trace                print every executed instruction with the registers\n"
          "                         and memory it writes, on stderr\n"
+         "  --commit-log FILE      the same in spike's --log-commits layout, to FILE\n"
          "  --gdb PORT             wait for GDB on 127.0.0.1:PORT (0 = any free port;\n"
          "                         the port is printed on stderr) and run under its control\n"
          "  -h, --help             this help\n"
@@ -112,6 +113,7 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
       o.gdb_port = static_cast<int>(port);
     } else if (a == "--stats") o.stats = true;
     else if (a == "--trace") o.trace = true;
+    else if (a == "--commit-log") o.commit_log = value(a);
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
     else if (o.elf.empty()) o.elf = a;
     else throw UsageError("unexpected argument '" + a + "' (firmware arguments go after --)");
@@ -126,6 +128,7 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     throw UsageError("--pty cannot be combined with --uart-in/--uart-out");
   if (!o.board_file.empty() && !o.machine_file.empty())
     throw UsageError("--board and --machine cannot be combined (the board file holds the map)");
+  if (o.trace && !o.commit_log.empty()) throw UsageError("--trace and --commit-log cannot be combined");
   if (o.gdb_port >= 0 && o.pty) throw UsageError("--gdb cannot be combined with --pty");
   return o;
 }

@@ -28,6 +28,7 @@ struct CliOptions {
   std::string ram_spec, uart_base, finisher_base;
   bool stats = false;
   bool trace = false;
+  std::string commit_log;         // --commit-log FILE (spike's commit-log layout)
   std::string flame_out;          // flame graph SVG
   int gdb_port = -1;              // -1 = no GDB stub; 0 = any free port
   bool help = false, version = false;

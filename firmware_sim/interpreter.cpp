@@ -68,7 +68,8 @@ uint32_t rem_s(uint32_t a, uint32_t b) {
 void Machine::trace_instruction(uint32_t pc) {
   uint32_t word = 0;
   std::memcpy(&word, bus_.code_at(pc), 4);
-  write_commit_trace(trace_, pc, word, hart_);
+  if (spike_trace_) write_spike_commit(trace_, pc, word, hart_);
+  else write_commit_trace(trace_, pc, word, hart_);
 }
 
 StopInfo Machine::run(uint64_t max_instructions) {

@@ -39,7 +39,11 @@ class Machine {
     if (m) csr_.set_clock_hz(m->config().clock_hz);
   }
   void set_profiler(Profiler* p) { profiler_ = p; }
-  void set_trace(std::FILE* out) { trace_ = out; }
+  // `spike` = spike's commit-log layout (--commit-log) instead of --trace's.
+  void set_trace(std::FILE* out, bool spike = false) {
+    trace_ = out;
+    spike_trace_ = spike;
+  }
   // Null (the default) = exact IEEE arithmetic; otherwise the model's
   // arithmetic for the ops it replaces (fpu_approx.hpp).
   void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
@@ -77,6 +81,7 @@ class Machine {
   CycleModel* model_ = nullptr;
   Profiler* profiler_ = nullptr;
   std::FILE* trace_ = nullptr;
+  bool spike_trace_ = false;
   const FpuApprox* fpu_model_ = nullptr;
 };
 

@@ -132,7 +132,7 @@ int run(const std::vector<std::string>& argv) {
   }
 
   // Output files are written after the run: check now that they can be.
-  for (const std::string* out : {&opt.profile_out, &opt.folded_out, &opt.flame_out}) {
+  for (const std::string* out : {&opt.profile_out, &opt.folded_out, &opt.flame_out, &opt.commit_log}) {
     if (out->empty()) continue;
     const std::string problem = output_path_problem(*out);
     if (!problem.empty()) die(kExitUsage, problem);
@@ -218,6 +218,11 @@ int run(const std::vector<std::string>& argv) {
     if (!trace) die(kExitIo, std::string("cannot open the trace stream: ") + std::strerror(errno));
     std::setvbuf(trace, nullptr, _IOFBF, 1 << 16);
     m.set_trace(trace);
+  } else if (!opt.commit_log.empty()) {
+    trace = opt.commit_log == "-" ? ::fdopen(::dup(STDOUT_FILENO), "w") : std::fopen(opt.commit_log.c_str(), "w");
+    if (!trace) die(kExitIo, opt.commit_log + ": " + std::strerror(errno));
+    std::setvbuf(trace, nullptr, _IOFBF, 1 << 16);
+    m.set_trace(trace, true);
   }
   m.set_fpu_model(fpu_model.get());
 
