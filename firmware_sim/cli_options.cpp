@@ -33,6 +33,7 @@ uint64_t parse_port(const std::string& opt, const std::string& v) {
 
 const char* cli_help_text() {
   return "Usage: firmware-sim [OPTIONS] ELF [-- ARGS...]\n"
+         "       firmware-sim [OPTIONS] --load-hex FILE [-- ARGS...]\n"
          "       firmware-sim [--fpu-model FILE] [--fpu KEY=VALUE,...] --fpu-check\n"
          "Runs a bare-metal RV32IMF ELF; exits with the firmware's exit code.\n"
          "  --uart-in FILE         UART input from FILE (default stdin)\n"
@@ -47,6 +48,8 @@ const char* cli_help_text() {
          "  --profile-out FILE     per-function profile in callgrind format\n"
          "  --folded-out FILE      folded call stacks (cycles) for flame graphs\n"
          "  --flame-out FILE       flame graph (SVG, opens in any web browser)\n"
+         "  --load-hex FILE        run a memory image of 32-bit words ($readmemh .hex/.mem,\n"
+         "                         or .coe) loaded at the reset/ROM address, instead of an ELF\n"
          "  --max-instructions N   stop with an error after N instructions\n"
          "Memory map (default: the board's, include/minrt/memory_map.h):\n"
          "  --ram BASE:SIZE        RAM at BASE, SIZE bytes (K/M suffix ok; default\n"
@@ -114,7 +117,13 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     } else if (a == "--stats") o.stats = true;
     else if (a == "--trace") o.trace = true;
     else if (a == "--commit-log") o.commit_log = value(a);
+    else if (a == "--load-hex") {
+      if (o.load_hex || !o.elf.empty()) throw UsageError("--load-hex replaces the ELF: give one image");
+      o.elf = value(a);
+      o.load_hex = true;
+    }
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+    else if (o.load_hex) throw UsageError("--load-hex replaces the ELF: drop '" + a + "'");
     else if (o.elf.empty()) o.elf = a;
     else throw UsageError("unexpected argument '" + a + "' (firmware arguments go after --)");
   }
@@ -123,7 +132,7 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     if (!o.elf.empty()) throw UsageError("--fpu-check runs no firmware: drop '" + o.elf + "'");
     return o;
   }
-  if (o.elf.empty()) throw UsageError("missing ELF file");
+  if (o.elf.empty()) throw UsageError("missing ELF file (or --load-hex FILE)");
   if (o.pty && (!o.uart_in.empty() || !o.uart_out.empty()))
     throw UsageError("--pty cannot be combined with --uart-in/--uart-out");
   if (!o.board_file.empty() && !o.machine_file.empty())

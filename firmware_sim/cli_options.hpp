@@ -9,7 +9,8 @@
 namespace fwsim {
 
 struct CliOptions {
-  std::string elf;
+  std::string elf;                // the ELF, or with load_hex the image file
+  bool load_hex = false;          // --load-hex: elf names a $readmemh/.mem/.coe image
   std::vector<std::string> args;  // after "--", passed to main(argc, argv)
   std::string uart_in, uart_out;  // empty = stdin / stdout
   bool pty = false;

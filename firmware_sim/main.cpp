@@ -22,6 +22,7 @@
 #include "fpu_check.hpp"
 #include "fpu_model_config.hpp"
 #include "gdb_stub.hpp"
+#include "hex_image.hpp"
 #include "machine.hpp"
 #include "memory_map.hpp"
 #include "output_check.hpp"
@@ -163,7 +164,16 @@ int run(const std::vector<std::string>& argv) {
   if (board) m.set_isa(board->isa);
   LoadedElf elf;
   try {
-    elf = load_elf(opt.elf, m.bus());
+    if (opt.load_hex) {
+      // The image starts at the board's ROM, else its reset address, else RAM.
+      const uint32_t base = map.rom_size ? map.rom_base : board ? board->reset : map.ram_base;
+      const LoadedImage img = load_hex_image(opt.elf, m.bus(), base);
+      elf.entry = base;
+      elf.text_begin = img.begin;
+      elf.text_end = img.end;
+    } else {
+      elf = load_elf(opt.elf, m.bus());
+    }
     std::vector<std::string> fw_args{opt.elf};
     fw_args.insert(fw_args.end(), opt.args.begin(), opt.args.end());
     place_boot_args(m.bus(), m.hart(), fw_args);
