@@ -314,6 +314,41 @@ std::string GdbStub::handle_query(const std::string& q) {
   return "";  // unsupported
 }
 
+std::string GdbStub::handle_monitor(Machine& m, const std::string& hex_command, const HartState& reset_state,
+                                    StopInfo& last) {
+  std::string command;
+  for (size_t i = 0; i + 1 < hex_command.size(); i += 2) {
+    const int hi = hex_digit(hex_command[i]), lo = hex_digit(hex_command[i + 1]);
+    if (hi < 0 || lo < 0) return "E01";
+    command += static_cast<char>(hi << 4 | lo);
+  }
+  std::string text;
+  if (command == "icount") {
+    text = "instructions: " + std::to_string(m.hart().instret) + ", cycles: " + std::to_string(m.hart().cycles) + "\n";
+  } else if (command == "reset") {
+    // Like a hardware reset: registers, pc and counters as at the start;
+    // memory keeps what the program wrote.
+    m.hart() = reset_state;
+    last = StopInfo{};
+    last.cause = StopCause::Breakpoint;
+    last.pc = m.hart().pc;
+    char pc[16];
+    std::snprintf(pc, sizeof pc, "0x%08x", m.hart().pc);
+    text = std::string("reset: pc ") + pc + "\n";
+  } else {
+    text = "monitor commands: icount (instructions and cycles so far), reset (registers, pc and counters)\n";
+    if (command != "help") text = "unknown monitor command '" + command + "'; " + text;
+  }
+  std::string out = "O";
+  for (unsigned char c : text) {
+    char b[3];
+    std::snprintf(b, sizeof b, "%02x", c);
+    out += b;
+  }
+  send_packet(out);
+  return "OK";
+}
+
 StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
   killed = false;
   std::fprintf(stderr, "firmware-sim: waiting for gdb on 127.0.0.1:%d\n", port_);
@@ -330,6 +365,7 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
   StopInfo last;
   last.cause = StopCause::Breakpoint;  // "stopped at the entry point"
   last.pc = m.hart().pc;
+  const HartState reset_state = m.hart();  // for "monitor reset"
   auto finished = [](const StopInfo& s) {
     return s.cause == StopCause::Exit || s.cause == StopCause::UartStall || s.cause == StopCause::HostIo ||
            s.cause == StopCause::InstructionLimit;
@@ -350,6 +386,8 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
     const std::string args = p.substr(1);
     if (cmd == '?') {
       send_packet(stop_reply(last));
+    } else if (p.rfind("qRcmd,", 0) == 0) {
+      send_packet(handle_monitor(m, p.substr(6), reset_state, last));
     } else if (cmd == 'q') {
       send_packet(handle_query(p));
     } else if (cmd == 'Q') {

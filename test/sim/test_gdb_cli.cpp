@@ -153,3 +153,38 @@ TEST_CASE("gdb option errors", "[cli][gdb][usage]") {
     CHECK(r.err.rfind("firmware-sim: error: --gdb", 0) == 0);
   }
 }
+
+namespace {
+std::string hex_text(const std::string& text) {
+  std::string out;
+  char b[3];
+  for (unsigned char c : text) {
+    std::snprintf(b, sizeof b, "%02x", c);
+    out += b;
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("gdb stub: monitor icount and monitor reset", "[cli][gdb]") {
+  StubSession s("spin");
+  CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 0, cycles: 0\n"));
+  CHECK(s.reply() == "OK");
+  CHECK(s.request("s") == "S05");
+  CHECK(s.request("s") == "S05");
+  CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 2, cycles: 2\n"));
+  CHECK(s.reply() == "OK");
+  CHECK(s.request("p20") == "08000080");  // pc after two instructions
+  CHECK(s.request("P5=78563412") == "OK");
+  CHECK(s.request("qRcmd," + hex_text("reset")) == "O" + hex_text("reset: pc 0x80000000\n"));
+  CHECK(s.reply() == "OK");
+  CHECK(s.request("p20") == "00000080");
+  CHECK(s.request("p5") == "00000000");
+  CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 0, cycles: 0\n"));
+  CHECK(s.reply() == "OK");
+  const std::string help = s.request("qRcmd," + hex_text("frobnicate"));
+  CHECK(help.rfind("O" + hex_text("unknown monitor command 'frobnicate'"), 0) == 0);
+  CHECK(s.reply() == "OK");
+  s.send_raw("$k#6b");
+  CHECK(s.wait_status() == 8);
+}
