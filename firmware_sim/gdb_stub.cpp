@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "decoder.hpp"
@@ -25,6 +26,7 @@ namespace {
 // GDB's register numbers for RISC-V: x0..x31, pc, f0..f31, then CSRs at
 // 65 + the CSR number (fflags 1, frm 2, fcsr 3).
 constexpr unsigned kRegPc = 32, kRegF0 = 33, kRegFflags = 66, kRegFrm = 67, kRegFcsr = 68;
+constexpr unsigned kRegCsr0 = 65;
 // Instructions run between checks for gdb's interrupt (Ctrl-C) while continuing.
 constexpr uint64_t kInterruptCheckInterval = 1u << 22;
 
@@ -76,6 +78,8 @@ bool read_register(Machine& m, unsigned n, uint32_t& v) {
   else if (n == kRegFflags) v = h.fflags;
   else if (n == kRegFrm) v = h.frm;
   else if (n == kRegFcsr) v = static_cast<uint32_t>(h.frm) << 5 | h.fflags;
+  // Other CSRs: gdb numbers CSR c as register kRegCsr0 + c.
+  else if (n >= kRegCsr0 && n < kRegCsr0 + 4096) return m.csr().access(h, n - kRegCsr0, CsrOp::Set, 0, false, v);
   else return false;
   return true;
 }
@@ -91,6 +95,9 @@ bool write_register(Machine& m, unsigned n, uint32_t v) {
   else if (n == kRegFcsr) {
     h.fflags = v & 0x1f;
     h.frm = (v >> 5) & 7;
+  } else if (n >= kRegCsr0 && n < kRegCsr0 + 4096) {
+    uint32_t old;
+    return m.csr().access(h, n - kRegCsr0, CsrOp::Write, v, true, old);
   } else return false;
   return true;
 }
@@ -114,7 +121,17 @@ const std::string& gdb_target_xml() {
            std::to_string(kRegF0 + i) + "\"/>\n";
     s += "  <reg name=\"fflags\" bitsize=\"32\" type=\"int\" regnum=\"66\"/>\n"
          "  <reg name=\"frm\" bitsize=\"32\" type=\"int\" regnum=\"67\"/>\n"
-         "  <reg name=\"fcsr\" bitsize=\"32\" type=\"int\" regnum=\"68\"/>\n</feature>\n</target>\n";
+         "  <reg name=\"fcsr\" bitsize=\"32\" type=\"int\" regnum=\"68\"/>\n</feature>\n"
+         "<feature name=\"org.gnu.gdb.riscv.csr\">\n";
+    // The machine-mode CSRs firmware-sim keeps (csr.cpp), and the counters.
+    const std::pair<const char*, unsigned> csrs[] = {
+        {"mstatus", 0x300}, {"misa", 0x301}, {"mie", 0x304}, {"mtvec", 0x305}, {"mscratch", 0x340},
+        {"mepc", 0x341},    {"mcause", 0x342}, {"mtval", 0x343}, {"mip", 0x344}, {"cycle", 0xc00},
+        {"instret", 0xc02}, {"cycleh", 0xc80}, {"instreth", 0xc82}};
+    for (const auto& [name, csr] : csrs)
+      s += std::string("  <reg name=\"") + name + "\" bitsize=\"32\" type=\"int\" regnum=\"" +
+           std::to_string(kRegCsr0 + csr) + "\"/>\n";
+    s += "</feature>\n</target>\n";
     return s;
   }();
   return xml;

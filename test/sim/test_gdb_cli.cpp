@@ -166,7 +166,7 @@ std::string hex_text(const std::string& text) {
 }
 }  // namespace
 
-TEST_CASE("gdb stub: monitor icount and monitor reset", "[cli][gdb]") {
+TEST_CASE("gdb stub: monitor icount, monitor reset, CSR registers", "[cli][gdb]") {
   StubSession s("spin");
   CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 0, cycles: 0\n"));
   CHECK(s.reply() == "OK");
@@ -182,6 +182,14 @@ TEST_CASE("gdb stub: monitor icount and monitor reset", "[cli][gdb]") {
   CHECK(s.request("p5") == "00000000");
   CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 0, cycles: 0\n"));
   CHECK(s.reply() == "OK");
+  // CSRs as gdb numbers them (65 + CSR), listed in the target description.
+  const std::string xml = s.request("qXfer:features:read:target.xml:0,3fff");
+  CHECK(xml.find("<reg name=\"mstatus\" bitsize=\"32\" type=\"int\" regnum=\"833\"/>") != std::string::npos);
+  CHECK(s.request("p381") == "00000000");  // mscratch (0x340)
+  CHECK(s.request("P381=efbeadde") == "OK");
+  CHECK(s.request("p381") == "efbeadde");
+  CHECK(s.request("pc43") == "00000000");  // instret (0xc02) after the reset
+  CHECK(s.request("p801") == "E01");       // CSR 0x7c0: not kept
   const std::string help = s.request("qRcmd," + hex_text("frobnicate"));
   CHECK(help.rfind("O" + hex_text("unknown monitor command 'frobnicate'"), 0) == 0);
   CHECK(s.reply() == "OK");
