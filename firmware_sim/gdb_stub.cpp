@@ -248,6 +248,12 @@ std::string GdbStub::stop_reply(const StopInfo& s) const {
       sig = kSigBus;
       break;
     case StopCause::None: sig = kSigInt; break;  // interrupted by gdb
+    case StopCause::Watchpoint: {
+      char t[48];
+      std::snprintf(t, sizeof t, "T%02x%s:%08x;", kSigTrap,
+                    s.watch_kind == 2 ? "watch" : s.watch_kind == 3 ? "rwatch" : "awatch", s.addr);
+      return t;
+    }
     default: break;  // breakpoint, step, ebreak: SIGTRAP
   }
   std::snprintf(buf, sizeof buf, "S%02x", sig);
@@ -390,6 +396,7 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
   auto run_free = [&] {  // gdb gone: no breakpoints, run to the end
     for (uint32_t a : breakpoints_) m.clear_breakpoint(a);
     breakpoints_.clear();
+    m.clear_watchpoints();
     return finished(last) ? last : m.run(max_instructions);
   };
   std::string p;
@@ -470,6 +477,21 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
           for (uint32_t a : breakpoints_) m.set_breakpoint(a);
         }
         send_packet(ok ? "OK" : "E01");
+      }
+    } else if ((cmd == 'Z' || cmd == 'z') && !args.empty() && args[0] >= '2' && args[0] <= '4') {
+      // Z2/Z3/Z4: write, read and access watchpoints over ADDR,LEN.
+      const size_t c1 = args.find(','), c2 = args.find(',', c1 + 1);
+      uint64_t addr = 0, len = 0;
+      const bool ok = c1 == 1 && c2 != std::string::npos && parse_hex(args.substr(c1 + 1, c2 - c1 - 1), addr) &&
+                      parse_hex(args.substr(c2 + 1), len) && addr <= UINT32_MAX && len > 0 && len <= UINT32_MAX;
+      const uint8_t kind = static_cast<uint8_t>(args[0] - '0');
+      if (!ok) send_packet("E01");
+      else if (cmd == 'Z') {
+        m.add_watchpoint(static_cast<uint32_t>(addr), static_cast<uint32_t>(len), kind);
+        send_packet("OK");
+      } else {
+        m.remove_watchpoint(static_cast<uint32_t>(addr), static_cast<uint32_t>(len), kind);
+        send_packet("OK");
       }
     } else if (cmd == 'Z' || cmd == 'z') {
       // Z0/z0: software breakpoints (hardware ones, Z1, are the same to us).

@@ -87,8 +87,8 @@ StopInfo Machine::run(uint64_t max_instructions) {
   fpu::clear_host_flags();
   // Plain; timed with pre-computed costs; timed with per-instruction hooks
   // (trace, caches), which the pre-computed costs cannot express.
-  if (!model_ && !profiler_ && !trace_) s = run_loop<0>(max_instructions);
-  else if (model_ && !trace_ && !model_->per_access_state()) s = run_loop<1>(max_instructions);
+  if (!model_ && !profiler_ && !trace_ && watches_.empty()) s = run_loop<0>(max_instructions);
+  else if (model_ && !trace_ && watches_.empty() && !model_->per_access_state()) s = run_loop<1>(max_instructions);
   else s = run_loop<2>(max_instructions);
   hart_.fflags |= fpu::take_host_flags();
   return s;
@@ -305,6 +305,19 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   } while (0)
 #define ALU(expr) ALU_THEN(expr, DISPATCH())
   // Memory: one range+alignment check for RAM, everything else on the bus.
+  // Debugger watchpoints, checked only in the hooked loop.
+#define WATCH(size, store)                                                 \
+  do {                                                                     \
+    if constexpr (Hooks) {                                                 \
+      if (!watches_.empty()) {                                             \
+        if (const uint8_t kind_ = watch_hit(addr, (size), (store))) {      \
+          stop.addr = addr;                                                \
+          stop.watch_kind = kind_;                                         \
+          goto watch_stop;                                                 \
+        }                                                                  \
+      }                                                                    \
+    }                                                                      \
+  } while (0)
   // Rotating the offset right by log2(size) moves misaligned low bits to the
   // top, so one unsigned compare checks both range and alignment.
 #define IN_RAM(T)                                                                   \
@@ -332,6 +345,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     }                                                                                   \
     if constexpr (Hooks) model.data(addr, cycles);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
+    WATCH(sizeof(T), false);                                                            \
     NEXT_THEN(cont);                                                                             \
   } while (0)
 #define LOAD(T, dest) LOAD_THEN(T, dest, DISPATCH())
@@ -353,6 +367,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       }                                                                                  \
     }                                                                                    \
     if constexpr (Hooks) model.data(addr, cycles);                                               \
+    WATCH(sizeof(T), true);                                                              \
     NEXT_THEN(cont);                                                                              \
   } while (0)
 #define STORE(T, value) STORE_THEN(T, value, DISPATCH())
@@ -717,6 +732,14 @@ device_stop:
     stop.cause = StopCause::HostIo;
   }
   goto out;
+watch_stop:
+  __attribute__((unused));  // reached only from the hooked loop
+  // The accessing instruction has run: report the stop after it.
+  STEP();
+  ++ip;
+  stop.pc = PC_OF(ip) - 4;
+  stop.cause = StopCause::Watchpoint;
+  goto out;
 halt_exit:
   // The board's ecall or jump-to-self halt: the instruction retires.
   STEP();
@@ -770,6 +793,7 @@ out:
 #undef ALU
 #undef LOAD
 #undef IN_RAM
+#undef WATCH
 #undef BUS_FAULTS
 #undef STORE
 #undef CSR

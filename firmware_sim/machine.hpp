@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include "bus.hpp"
 #include "csr.hpp"
@@ -63,6 +64,21 @@ class Machine {
       if (bus_.in_code(a, 4)) code_.invalidate((a - bus_.code_base()) / 4);
   }
 
+  // Debugger watchpoints: a load (kind 3), store (2) or either (4)
+  // touching [addr, addr + len) stops the run with StopCause::Watchpoint
+  // after that instruction. While any is set, runs take the timed loop with
+  // per-access hooks.
+  void add_watchpoint(uint32_t addr, uint32_t len, uint8_t kind) { watches_.push_back({addr, len, kind}); }
+  void clear_watchpoints() { watches_.clear(); }
+  bool remove_watchpoint(uint32_t addr, uint32_t len, uint8_t kind) {
+    for (size_t i = 0; i < watches_.size(); ++i)
+      if (watches_[i].addr == addr && watches_[i].len == len && watches_[i].kind == kind) {
+        watches_.erase(watches_.begin() + static_cast<long>(i));
+        return true;
+      }
+    return false;
+  }
+
   // Runs from hart().pc until the firmware stops, faults, or more than
   // `max_instructions` (total, counted from reset) have retired.
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
@@ -71,6 +87,18 @@ class Machine {
   template <int Mode>  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
+  // The kind of the first watchpoint an access hits, or 0.
+  uint8_t watch_hit(uint32_t addr, uint32_t size, bool store) const {
+    for (const Watch& w : watches_)
+      if (addr - w.addr < w.len || w.addr - addr < size)
+        if (w.kind == 4 || (w.kind == 2) == store) return w.kind;
+    return 0;
+  }
+  struct Watch {
+    uint32_t addr, len;
+    uint8_t kind;
+  };
+  std::vector<Watch> watches_;
 
   Bus bus_;
   HartState hart_;

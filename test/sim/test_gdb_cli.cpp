@@ -196,3 +196,36 @@ TEST_CASE("gdb stub: monitor icount, monitor reset, CSR registers", "[cli][gdb]"
   s.send_raw("$k#6b");
   CHECK(s.wait_status() == 8);
 }
+
+namespace {
+// The word at the hex little-endian address `pc_le` minus 4, as gdb reads it.
+uint32_t word_before(StubSession& s, const std::string& pc_le) {
+  const uint32_t pc = static_cast<uint32_t>(std::stoul(pc_le.substr(6, 2) + pc_le.substr(4, 2) + pc_le.substr(2, 2) +
+                                                       pc_le.substr(0, 2), nullptr, 16));
+  char req[32];
+  std::snprintf(req, sizeof req, "m%x,4", pc - 4);
+  const std::string w = s.request(req);
+  return static_cast<uint32_t>(std::stoul(w.substr(6, 2) + w.substr(4, 2) + w.substr(2, 2) + w.substr(0, 2), nullptr, 16));
+}
+}  // namespace
+
+TEST_CASE("gdb stub: write, read and access watchpoints", "[cli][gdb]") {
+  StubSession s("spin");
+  // Any store to RAM: the stop comes after the store, which is the word before pc.
+  CHECK(s.request("Z2,80000000,400000") == "OK");
+  const std::string w = s.request("c");
+  CHECK(w.rfind("T05watch:8", 0) == 0);
+  CHECK((word_before(s, s.request("p20")) & 0x7f) == 0x23);  // a store
+  CHECK(s.request("z2,80000000,400000") == "OK");
+  // Any load from RAM.
+  CHECK(s.request("Z3,80000000,400000") == "OK");
+  CHECK(s.request("c").rfind("T05rwatch:8", 0) == 0);
+  const uint32_t load = word_before(s, s.request("p20"));
+  CHECK(((load & 0x7f) == 0x03 || (load & 0x7f) == 0x07));  // lw.. or flw
+  CHECK(s.request("z3,80000000,400000") == "OK");
+  CHECK(s.request("Z4,80000000,400000") == "OK");
+  CHECK(s.request("c").rfind("T05awatch:8", 0) == 0);
+  CHECK(s.request("Z2,80000000,0") == "E01");
+  s.send_raw("$k#6b");
+  CHECK(s.wait_status() == 8);
+}
