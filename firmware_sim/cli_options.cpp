@@ -33,6 +33,7 @@ uint64_t parse_port(const std::string& opt, const std::string& v) {
 
 const char* cli_help_text() {
   return "Usage: firmware-sim [OPTIONS] ELF [-- ARGS...]\n"
+         "       firmware-sim [OPTIONS] --load-hex FILE [-- ARGS...]\n"
          "       firmware-sim [--fpu-model FILE] [--fpu KEY=VALUE,...] --fpu-check\n"
          "Runs a bare-metal RV32IMF ELF; exits with the firmware's exit code.\n"
          "  --uart-in FILE         UART input from FILE (default stdin)\n"
@@ -47,6 +48,8 @@ const char* cli_help_text() {
          "  --profile-out FILE     per-function profile in callgrind format\n"
          "  --folded-out FILE      folded call stacks (cycles) for flame graphs\n"
          "  --flame-out FILE       flame graph (SVG, opens in any web browser)\n"
+         "  --load-hex FILE        run a memory image of 32-bit words ($readmemh .hex/.mem,\n"
+         "                         or .coe) loaded at the reset/ROM address, instead of an ELF\n"
          "  --max-instructions N   stop with an error after N instructions\n"
          "Memory map (default: the board's, include/minrt/memory_map.h):\n"
          "  --ram BASE:SIZE        RAM at BASE, SIZE bytes (K/M suffix ok; default\n"
@@ -56,10 +59,13 @@ const char* cli_help_text() {
          "  --finisher ADDR        exit device (SiFive test finisher) base (default 0x100000)\n"
          "  --machine FILE         memory map from a file of key = value lines\n"
          "                         (ram = BASE:SIZE, uart = ADDR, finisher = ADDR)\n"
+         "  --board FILE           model a board description (boards/NAME.board): its ISA,\n"
+         "                         RAM/ROM, UART kind, halt method and reset address\n"
          "Debugging:\n"
          "  --stats                print instructions, cycles, host MIPS... on stderr\n"
          "  --trace                print every executed instruction with the registers\n"
          "                         and memory it writes, on stderr\n"
+         "  --commit-log FILE      the same in spike's --log-commits layout, to FILE\n"
          "  --gdb PORT             wait for GDB on 127.0.0.1:PORT (0 = any free port;\n"
          "                         the port is printed on stderr) and run under its control\n"
          "  -h, --help             this help\n"
@@ -103,13 +109,21 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     else if (a == "--uart") o.uart_base = value(a);
     else if (a == "--finisher") o.finisher_base = value(a);
     else if (a == "--machine") o.machine_file = value(a);
+    else if (a == "--board") o.board_file = value(a);
     else if (a == "--flame-out") o.flame_out = value(a);
     else if (a == "--gdb") {
       const uint64_t port = parse_port(a, value(a));
       o.gdb_port = static_cast<int>(port);
     } else if (a == "--stats") o.stats = true;
     else if (a == "--trace") o.trace = true;
+    else if (a == "--commit-log") o.commit_log = value(a);
+    else if (a == "--load-hex") {
+      if (o.load_hex || !o.elf.empty()) throw UsageError("--load-hex replaces the ELF: give one image");
+      o.elf = value(a);
+      o.load_hex = true;
+    }
     else if (a.size() > 1 && a[0] == '-') throw UsageError("unknown option " + a);
+    else if (o.load_hex) throw UsageError("--load-hex replaces the ELF: drop '" + a + "'");
     else if (o.elf.empty()) o.elf = a;
     else throw UsageError("unexpected argument '" + a + "' (firmware arguments go after --)");
   }
@@ -118,9 +132,12 @@ CliOptions parse_cli(const std::vector<std::string>& argv) {
     if (!o.elf.empty()) throw UsageError("--fpu-check runs no firmware: drop '" + o.elf + "'");
     return o;
   }
-  if (o.elf.empty()) throw UsageError("missing ELF file");
+  if (o.elf.empty()) throw UsageError("missing ELF file (or --load-hex FILE)");
   if (o.pty && (!o.uart_in.empty() || !o.uart_out.empty()))
     throw UsageError("--pty cannot be combined with --uart-in/--uart-out");
+  if (!o.board_file.empty() && !o.machine_file.empty())
+    throw UsageError("--board and --machine cannot be combined (the board file holds the map)");
+  if (o.trace && !o.commit_log.empty()) throw UsageError("--trace and --commit-log cannot be combined");
   if (o.gdb_port >= 0 && o.pty) throw UsageError("--gdb cannot be combined with --pty");
   return o;
 }

@@ -9,7 +9,8 @@
 namespace fwsim {
 
 struct CliOptions {
-  std::string elf;
+  std::string elf;                // the ELF, or with load_hex the image file
+  bool load_hex = false;          // --load-hex: elf names a $readmemh/.mem/.coe image
   std::vector<std::string> args;  // after "--", passed to main(argc, argv)
   std::string uart_in, uart_out;  // empty = stdin / stdout
   bool pty = false;
@@ -24,9 +25,11 @@ struct CliOptions {
   // Memory map (memory_map.hpp): the machine file first, then --ram,
   // --ram-size, --uart and --finisher on top of it; empty = unchanged.
   std::string machine_file;
+  std::string board_file;         // --board: board description (board_file.hpp)
   std::string ram_spec, uart_base, finisher_base;
   bool stats = false;
   bool trace = false;
+  std::string commit_log;         // --commit-log FILE (spike's commit-log layout)
   std::string flame_out;          // flame graph SVG
   int gdb_port = -1;              // -1 = no GDB stub; 0 = any free port
   bool help = false, version = false;

@@ -41,4 +41,31 @@ void write_commit_trace(std::FILE* out, uint32_t pc, uint32_t word, const HartSt
   else std::fprintf(out, "%08x: %08x  %s\n", pc, word, text.c_str());
 }
 
+void write_spike_commit(std::FILE* out, uint32_t pc, uint32_t word, const HartState& hart) {
+  const DecodedInsn d = decode(word);
+  std::fprintf(out, "core   0: 3 0x%08x (0x%08x)", pc, word);
+  switch (op_info(d.op).format) {
+    case Format::R: case Format::I: case Format::Shift: case Format::Load: case Format::U:
+    case Format::J: case Format::Jalr: case Format::Csr: case Format::CsrI: case Format::FCmp:
+    case Format::FCvtXF: case Format::FMvXF:
+      if (d.rd != 0) std::fprintf(out, " x%-2u 0x%08x", static_cast<unsigned>(d.rd), hart.x[d.rd]);
+      break;
+    case Format::FR: case Format::FR4: case Format::FUnary: case Format::FSgn: case Format::FCvtFX:
+    case Format::FMvFX: case Format::FLoad:
+      std::fprintf(out, " f%-2u 0x%08x", static_cast<unsigned>(d.rd), hart.f[d.rd]);
+      break;
+    case Format::Store: case Format::FStore: {
+      const uint32_t addr = hart.x[d.rs1] + static_cast<uint32_t>(d.imm);
+      const uint32_t value = op_info(d.op).format == Format::FStore ? hart.f[d.rs2] : hart.x[d.rs2];
+      if (d.op == Op::SB) std::fprintf(out, " mem 0x%08x 0x%02x", addr, value & 0xff);
+      else if (d.op == Op::SH) std::fprintf(out, " mem 0x%08x 0x%04x", addr, value & 0xffff);
+      else std::fprintf(out, " mem 0x%08x 0x%08x", addr, value);
+      break;
+    }
+    default:
+      break;
+  }
+  std::fputc('\n', out);
+}
+
 }  // namespace fwsim

@@ -71,6 +71,23 @@ class CycleModel {
     if (dcache_.enabled() && !dcache_.access(addr)) cycles += cfg_.dcache.miss_penalty;
   }
 
+  // For the block-costed timed loop (block_costs.hpp), which adds a
+  // pre-computed cost per instruction instead of calling instruction():
+  // whether it may run (no cache to consult per access), an instruction's
+  // fixed latency, the load-use stall `next` suffers right after `prev`, and
+  // the executions and stalls it counted, added afterwards.
+  bool per_access_state() const { return icache_on_ || dcache_.enabled(); }
+  uint32_t latency(const Entry& e) const { return op_timing_[e.op].latency; }
+  bool load_use(const Entry& prev, const Entry& next) const {
+    const OpTiming& t = op_timing_[prev.op];
+    if (!t.load_dest) return false;
+    const uint8_t r = t.load_dest == 1 ? (prev.rd == 32 ? kNoReg : prev.rd) : static_cast<uint8_t>(32 + prev.rd);
+    return r != kNoReg && reads(next, op_timing_[next.op].uses, r);
+  }
+  uint32_t load_use_stall() const { return cfg_.load_use_stall; }
+  void add_executions(uint8_t op, uint64_t n) { op_count_[op] += n; }
+  void add_load_use_stalls(uint64_t n) { load_use_stalls_ += n; }
+
   uint64_t op_count(Op op) const { return op_count_[static_cast<size_t>(op)]; }
   uint64_t branches() const { return branches_; }
   uint64_t mispredicts() const { return mispredicts_; }

@@ -7,6 +7,12 @@ namespace fwsim {
 void DecodeCache::fill(uint32_t index, uint32_t word) {
   const DecodedInsn d = decode(word);
   Entry e{static_cast<uint8_t>(d.op), d.rd, d.rs1, d.rs2, d.imm};
+  // An instruction the board lacks (or a compressed one) traps with a
+  // message naming the extension (the interpreter decodes it again then).
+  if (check_isa_ && (d.op != Op::ILLEGAL || (word & 3) != 3) && missing_extension(isa_, word, d)) {
+    entries_[index] = Entry{static_cast<uint8_t>(Op::OUTSIDE_ISA), 0, 0, 0, 0};
+    return;
+  }
   const Format fmt = op_info(d.op).format;
   // Integer destinations of x0 go to the sink register.
   switch (fmt) {
@@ -36,7 +42,18 @@ void DecodeCache::fill(uint32_t index, uint32_t word) {
     e.imm = d.imm / 4;
     if (e.op == static_cast<uint8_t>(Op::SLOW_CTI)) e.imm = d.imm;
   }
+  if (self_jump_halts_ && (fmt == Format::Branch || fmt == Format::J) && d.imm == 0)
+    e.op = static_cast<uint8_t>(Op::SELF_JUMP);
   entries_[index] = e;
+  if (index > 0) fuse(index - 1);
+  fuse(index);
+}
+
+void DecodeCache::fuse(uint32_t index) {
+  if (index + 1 >= count_) return;
+  Entry& first = entries_[index];
+  const Op f = fused_op(base_op(static_cast<Op>(first.op)), base_op(static_cast<Op>(entries_[index + 1].op)));
+  if (f != Op::UNDECODED) first.op = static_cast<uint8_t>(f);
 }
 
 }  // namespace fwsim

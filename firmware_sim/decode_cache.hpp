@@ -1,5 +1,5 @@
-// Pre-decoded instructions, one compact entry per RAM word, indexed by
-// (pc - RAM base) / 4. Entries are decoded lazily on first execution (op 0 =
+// Pre-decoded instructions, one compact entry per word of code memory (RAM,
+// or the board's ROM), indexed by (pc - code base) / 4. Entries are decoded lazily on first execution (op 0 =
 // UNDECODED), so any code in RAM works; code written after it first ran is
 // not re-decoded (self-modifying code is unsupported).
 #pragma once
@@ -8,6 +8,7 @@
 #include <new>
 
 #include "decoder.hpp"
+#include "isa_subset.hpp"
 
 namespace fwsim {
 
@@ -41,16 +42,41 @@ class DecodeCache {
 
   Entry* entries() { return entries_; }
   uint32_t count() const { return count_; }
+  // The board's instruction set: words outside it decode to OUTSIDE_ISA.
+  // With `self_jump_halts`, a jump or branch to itself decodes to SELF_JUMP
+  // (the board's "loop" halt).
+  void configure(const IsaSpec& isa, bool self_jump_halts) {
+    isa_ = isa;
+    check_isa_ = true;
+    self_jump_halts_ = self_jump_halts;
+  }
+  const IsaSpec& isa() const { return isa_; }
   // Fills entry `index` from the instruction word at that position.
   void fill(uint32_t index, uint32_t word);
   // Debugger support: a breakpoint replaces the entry (the instruction in RAM
   // stays as it is); invalidating makes the word decode again on its next run.
-  void set_breakpoint(uint32_t index) { entries_[index] = Entry{static_cast<uint8_t>(Op::BREAKPOINT), 0, 0, 0, 0}; }
-  void invalidate(uint32_t index) { entries_[index] = Entry{}; }
+  void set_breakpoint(uint32_t index) {
+    entries_[index] = Entry{static_cast<uint8_t>(Op::BREAKPOINT), 0, 0, 0, 0};
+    unfuse_before(index);
+  }
+  void invalidate(uint32_t index) {
+    entries_[index] = Entry{};
+    unfuse_before(index);
+  }
 
  private:
+  // Pairs (fused_op): entry i fuses with i+1 once both are decoded; a
+  // changed entry i+1 undoes it.
+  void fuse(uint32_t index);
+  void unfuse_before(uint32_t index) {
+    if (index > 0) entries_[index - 1].op = static_cast<uint8_t>(base_op(static_cast<Op>(entries_[index - 1].op)));
+  }
+
   Entry* entries_;
   uint32_t count_;
+  IsaSpec isa_;
+  bool check_isa_ = false;  // without a board: today's rv32imf, nothing filtered
+  bool self_jump_halts_ = false;
 };
 
 }  // namespace fwsim

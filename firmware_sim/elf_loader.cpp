@@ -67,9 +67,10 @@ LoadedElf load_elf(const std::string& path, Bus& bus) {
   if (::stat(path.c_str(), &st) != 0) fail(path, std::string("cannot open file: ") + std::strerror(errno));
   if (!S_ISREG(st.st_mode))
     fail(path, S_ISDIR(st.st_mode) ? std::string("cannot read: ") + std::strerror(EISDIR) : "not a regular file");
-  if (static_cast<uint64_t>(st.st_size) > bus.ram_size())
+  const uint64_t room = uint64_t{bus.ram_size()} + (bus.code() != bus.ram() ? bus.code_size() : 0);
+  if (static_cast<uint64_t>(st.st_size) > room)
     fail(path, "file of " + std::to_string(st.st_size) + " bytes is larger than the " +
-                   std::to_string(bus.ram_size()) + "-byte RAM it would load into");
+                   std::to_string(room) + (bus.code() != bus.ram() ? "-byte RAM and ROM" : "-byte RAM") + " it would load into");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open file: ") + std::strerror(errno));
   std::vector<uint8_t> f((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -87,14 +88,16 @@ LoadedElf load_elf(const std::string& path, Bus& bus) {
     auto ph = read_at<Elf32_Phdr>(f, eh.e_phoff + uint64_t{i} * sizeof(Elf32_Phdr), path);
     if (ph.p_type != PT_LOAD || ph.p_memsz == 0) continue;
     if (ph.p_filesz > ph.p_memsz) fail(path, "segment file size exceeds memory size");
-    if (!bus.in_ram(ph.p_paddr, ph.p_memsz)) {
-      char buf[160];
-      std::snprintf(buf, sizeof buf, "segment 0x%08x..0x%08x lies outside RAM 0x%08x..0x%08x (--ram BASE:SIZE moves RAM)",
-                    ph.p_paddr, ph.p_paddr + ph.p_memsz, bus.ram_base(), bus.ram_base() + bus.ram_size());
+    uint8_t* const dest = bus.host_at(ph.p_paddr, ph.p_memsz);
+    if (!dest) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "segment 0x%08x..0x%08x lies outside RAM 0x%08x..0x%08x%s",
+                    ph.p_paddr, ph.p_paddr + ph.p_memsz, bus.ram_base(), bus.ram_base() + bus.ram_size(),
+                    bus.code() != bus.ram() ? " and ROM" : " (--ram BASE:SIZE moves RAM)");
       fail(path, buf);
     }
     if (uint64_t{ph.p_offset} + ph.p_filesz > f.size()) fail(path, "segment beyond end of file");
-    std::memcpy(bus.ram_at(ph.p_paddr), f.data() + ph.p_offset, ph.p_filesz);
+    std::memcpy(dest, f.data() + ph.p_offset, ph.p_filesz);
     if (ph.p_flags & PF_X) {
       if (!have_text || ph.p_paddr < out.text_begin) out.text_begin = ph.p_paddr;
       if (!have_text || ph.p_paddr + ph.p_memsz > out.text_end) out.text_end = ph.p_paddr + ph.p_memsz;
@@ -102,7 +105,8 @@ LoadedElf load_elf(const std::string& path, Bus& bus) {
     }
   }
   if (!have_text) fail(path, "no executable segment");
-  if (!bus.in_ram(out.entry, 4) || (out.entry & 3)) fail(path, "entry point outside RAM or misaligned");
+  if (!bus.in_code(out.entry, 4) || (out.entry & 3))
+    fail(path, bus.code() != bus.ram() ? "entry point outside ROM or misaligned" : "entry point outside RAM or misaligned");
   read_symbols(f, eh, path, out);
   return out;
 }

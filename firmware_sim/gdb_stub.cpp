@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "decoder.hpp"
@@ -25,6 +26,7 @@ namespace {
 // GDB's register numbers for RISC-V: x0..x31, pc, f0..f31, then CSRs at
 // 65 + the CSR number (fflags 1, frm 2, fcsr 3).
 constexpr unsigned kRegPc = 32, kRegF0 = 33, kRegFflags = 66, kRegFrm = 67, kRegFcsr = 68;
+constexpr unsigned kRegCsr0 = 65;
 // Instructions run between checks for gdb's interrupt (Ctrl-C) while continuing.
 constexpr uint64_t kInterruptCheckInterval = 1u << 22;
 
@@ -76,6 +78,8 @@ bool read_register(Machine& m, unsigned n, uint32_t& v) {
   else if (n == kRegFflags) v = h.fflags;
   else if (n == kRegFrm) v = h.frm;
   else if (n == kRegFcsr) v = static_cast<uint32_t>(h.frm) << 5 | h.fflags;
+  // Other CSRs: gdb numbers CSR c as register kRegCsr0 + c.
+  else if (n >= kRegCsr0 && n < kRegCsr0 + 4096) return m.csr().access(h, n - kRegCsr0, CsrOp::Set, 0, false, v);
   else return false;
   return true;
 }
@@ -91,6 +95,9 @@ bool write_register(Machine& m, unsigned n, uint32_t v) {
   else if (n == kRegFcsr) {
     h.fflags = v & 0x1f;
     h.frm = (v >> 5) & 7;
+  } else if (n >= kRegCsr0 && n < kRegCsr0 + 4096) {
+    uint32_t old;
+    return m.csr().access(h, n - kRegCsr0, CsrOp::Write, v, true, old);
   } else return false;
   return true;
 }
@@ -114,7 +121,17 @@ const std::string& gdb_target_xml() {
            std::to_string(kRegF0 + i) + "\"/>\n";
     s += "  <reg name=\"fflags\" bitsize=\"32\" type=\"int\" regnum=\"66\"/>\n"
          "  <reg name=\"frm\" bitsize=\"32\" type=\"int\" regnum=\"67\"/>\n"
-         "  <reg name=\"fcsr\" bitsize=\"32\" type=\"int\" regnum=\"68\"/>\n</feature>\n</target>\n";
+         "  <reg name=\"fcsr\" bitsize=\"32\" type=\"int\" regnum=\"68\"/>\n</feature>\n"
+         "<feature name=\"org.gnu.gdb.riscv.csr\">\n";
+    // The machine-mode CSRs firmware-sim keeps (csr.cpp), and the counters.
+    const std::pair<const char*, unsigned> csrs[] = {
+        {"mstatus", 0x300}, {"misa", 0x301}, {"mie", 0x304}, {"mtvec", 0x305}, {"mscratch", 0x340},
+        {"mepc", 0x341},    {"mcause", 0x342}, {"mtval", 0x343}, {"mip", 0x344}, {"cycle", 0xc00},
+        {"instret", 0xc02}, {"cycleh", 0xc80}, {"instreth", 0xc82}};
+    for (const auto& [name, csr] : csrs)
+      s += std::string("  <reg name=\"") + name + "\" bitsize=\"32\" type=\"int\" regnum=\"" +
+           std::to_string(kRegCsr0 + csr) + "\"/>\n";
+    s += "</feature>\n</target>\n";
     return s;
   }();
   return xml;
@@ -231,6 +248,12 @@ std::string GdbStub::stop_reply(const StopInfo& s) const {
       sig = kSigBus;
       break;
     case StopCause::None: sig = kSigInt; break;  // interrupted by gdb
+    case StopCause::Watchpoint: {
+      char t[48];
+      std::snprintf(t, sizeof t, "T%02x%s:%08x;", kSigTrap,
+                    s.watch_kind == 2 ? "watch" : s.watch_kind == 3 ? "rwatch" : "awatch", s.addr);
+      return t;
+    }
     default: break;  // breakpoint, step, ebreak: SIGTRAP
   }
   std::snprintf(buf, sizeof buf, "S%02x", sig);
@@ -245,9 +268,9 @@ StopInfo GdbStub::step(Machine& m, uint64_t max_instructions) {
   HartState& h = m.hart();
   const uint32_t pc = h.pc;
   std::vector<uint32_t> next{pc + 4};
-  if (m.bus().in_ram(pc, 4) && !(pc & 3)) {
+  if (m.bus().in_code(pc, 4) && !(pc & 3)) {
     uint32_t word;
-    std::memcpy(&word, m.bus().ram_at(pc), 4);
+    std::memcpy(&word, m.bus().code_at(pc), 4);
     const DecodedInsn d = decode(word);
     const Format f = op_info(d.op).format;
     if (f == Format::Branch) next.push_back(pc + static_cast<uint32_t>(d.imm));
@@ -314,6 +337,41 @@ std::string GdbStub::handle_query(const std::string& q) {
   return "";  // unsupported
 }
 
+std::string GdbStub::handle_monitor(Machine& m, const std::string& hex_command, const HartState& reset_state,
+                                    StopInfo& last) {
+  std::string command;
+  for (size_t i = 0; i + 1 < hex_command.size(); i += 2) {
+    const int hi = hex_digit(hex_command[i]), lo = hex_digit(hex_command[i + 1]);
+    if (hi < 0 || lo < 0) return "E01";
+    command += static_cast<char>(hi << 4 | lo);
+  }
+  std::string text;
+  if (command == "icount") {
+    text = "instructions: " + std::to_string(m.hart().instret) + ", cycles: " + std::to_string(m.hart().cycles) + "\n";
+  } else if (command == "reset") {
+    // Like a hardware reset: registers, pc and counters as at the start;
+    // memory keeps what the program wrote.
+    m.hart() = reset_state;
+    last = StopInfo{};
+    last.cause = StopCause::Breakpoint;
+    last.pc = m.hart().pc;
+    char pc[16];
+    std::snprintf(pc, sizeof pc, "0x%08x", m.hart().pc);
+    text = std::string("reset: pc ") + pc + "\n";
+  } else {
+    text = "monitor commands: icount (instructions and cycles so far), reset (registers, pc and counters)\n";
+    if (command != "help") text = "unknown monitor command '" + command + "'; " + text;
+  }
+  std::string out = "O";
+  for (unsigned char c : text) {
+    char b[3];
+    std::snprintf(b, sizeof b, "%02x", c);
+    out += b;
+  }
+  send_packet(out);
+  return "OK";
+}
+
 StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
   killed = false;
   std::fprintf(stderr, "firmware-sim: waiting for gdb on 127.0.0.1:%d\n", port_);
@@ -330,6 +388,7 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
   StopInfo last;
   last.cause = StopCause::Breakpoint;  // "stopped at the entry point"
   last.pc = m.hart().pc;
+  const HartState reset_state = m.hart();  // for "monitor reset"
   auto finished = [](const StopInfo& s) {
     return s.cause == StopCause::Exit || s.cause == StopCause::UartStall || s.cause == StopCause::HostIo ||
            s.cause == StopCause::InstructionLimit;
@@ -337,6 +396,7 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
   auto run_free = [&] {  // gdb gone: no breakpoints, run to the end
     for (uint32_t a : breakpoints_) m.clear_breakpoint(a);
     breakpoints_.clear();
+    m.clear_watchpoints();
     return finished(last) ? last : m.run(max_instructions);
   };
   std::string p;
@@ -350,6 +410,8 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
     const std::string args = p.substr(1);
     if (cmd == '?') {
       send_packet(stop_reply(last));
+    } else if (p.rfind("qRcmd,", 0) == 0) {
+      send_packet(handle_monitor(m, p.substr(6), reset_state, last));
     } else if (cmd == 'q') {
       send_packet(handle_query(p));
     } else if (cmd == 'Q') {
@@ -393,21 +455,21 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
       if (!parsed) {
         send_packet("E01");
       } else if (cmd == 'm') {
-        // RAM only: device registers have side effects a debugger must not trigger.
+        // RAM and ROM only: device registers have side effects a debugger must not trigger.
         std::string out;
-        for (uint64_t i = 0; i < len && m.bus().in_ram(static_cast<uint32_t>(addr + i), 1); ++i) {
+        for (uint64_t i = 0; i < len && m.bus().host_at(static_cast<uint32_t>(addr + i), 1); ++i) {
           char b[3];
-          std::snprintf(b, sizeof b, "%02x", *m.bus().ram_at(static_cast<uint32_t>(addr + i)));
+          std::snprintf(b, sizeof b, "%02x", *m.bus().host_at(static_cast<uint32_t>(addr + i), 1));
           out += b;
         }
         send_packet(out.empty() && len ? "E01" : out);
       } else {
         bool ok = colon != std::string::npos && args.size() - colon - 1 == 2 * len &&
-                  (len == 0 || m.bus().in_ram(static_cast<uint32_t>(addr), static_cast<uint32_t>(len)));
+                  (len == 0 || m.bus().host_at(static_cast<uint32_t>(addr), static_cast<uint32_t>(len)));
         for (uint64_t i = 0; ok && i < len; ++i) {
           const int hi = hex_digit(args[colon + 1 + 2 * i]), lo = hex_digit(args[colon + 2 + 2 * i]);
           if (hi < 0 || lo < 0) ok = false;
-          else *m.bus().ram_at(static_cast<uint32_t>(addr + i)) = static_cast<uint8_t>(hi << 4 | lo);
+          else *m.bus().host_at(static_cast<uint32_t>(addr + i), 1) = static_cast<uint8_t>(hi << 4 | lo);
         }
         if (ok && len) {
           m.invalidate_code(static_cast<uint32_t>(addr), static_cast<uint32_t>(len));
@@ -415,6 +477,21 @@ StopInfo GdbStub::serve(Machine& m, uint64_t max_instructions, bool& killed) {
           for (uint32_t a : breakpoints_) m.set_breakpoint(a);
         }
         send_packet(ok ? "OK" : "E01");
+      }
+    } else if ((cmd == 'Z' || cmd == 'z') && !args.empty() && args[0] >= '2' && args[0] <= '4') {
+      // Z2/Z3/Z4: write, read and access watchpoints over ADDR,LEN.
+      const size_t c1 = args.find(','), c2 = args.find(',', c1 + 1);
+      uint64_t addr = 0, len = 0;
+      const bool ok = c1 == 1 && c2 != std::string::npos && parse_hex(args.substr(c1 + 1, c2 - c1 - 1), addr) &&
+                      parse_hex(args.substr(c2 + 1), len) && addr <= UINT32_MAX && len > 0 && len <= UINT32_MAX;
+      const uint8_t kind = static_cast<uint8_t>(args[0] - '0');
+      if (!ok) send_packet("E01");
+      else if (cmd == 'Z') {
+        m.add_watchpoint(static_cast<uint32_t>(addr), static_cast<uint32_t>(len), kind);
+        send_packet("OK");
+      } else {
+        m.remove_watchpoint(static_cast<uint32_t>(addr), static_cast<uint32_t>(len), kind);
+        send_packet("OK");
       }
     } else if (cmd == 'Z' || cmd == 'z') {
       // Z0/z0: software breakpoints (hardware ones, Z1, are the same to us).

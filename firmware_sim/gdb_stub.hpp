@@ -30,6 +30,8 @@ class GdbStub {
   bool read_packet(std::string& packet);  // false: connection closed
   void send_packet(const std::string& payload);
   std::string handle_query(const std::string& q);
+  // "monitor CMD" (qRcmd): icount, reset, help; output goes as an O packet.
+  std::string handle_monitor(Machine& m, const std::string& hex_command, const HartState& reset_state, StopInfo& last);
   // Runs one instruction or until a breakpoint/stop/interrupt.
   StopInfo step(Machine& m, uint64_t max_instructions);
   StopInfo resume(Machine& m, uint64_t max_instructions);

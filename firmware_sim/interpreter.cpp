@@ -20,16 +20,25 @@
 #include "fpu.hpp"
 #include "fpu_approx.hpp"
 #include "host_fma.hpp"
+#include "isa_subset.hpp"
+#include "block_costs.hpp"
 #include "machine.hpp"
 
 namespace fwsim {
 namespace {
 
 inline float as_float(uint32_t b) { return std::bit_cast<float>(b); }
+// r != r is a quiet compare (ucomiss): it raises nothing for the quiet NaNs
+// arithmetic produces.
 inline uint32_t host_result(float r) {
-  const uint32_t b = std::bit_cast<uint32_t>(r);
-  return fpu::is_nan(b) ? fpu::kCanonicalNaN : b;
+  return __builtin_expect(r != r, 0) ? fpu::kCanonicalNaN : std::bit_cast<uint32_t>(r);
 }
+// Host compares give the RISC-V results and flags: < and <= compile to
+// comiss (invalid on any NaN, like flt.s/fle.s), == to ucomiss (invalid on a
+// signaling NaN only, like feq.s); unordered operands compare false.
+inline uint32_t host_lt(uint32_t a, uint32_t b) { return as_float(a) < as_float(b); }
+inline uint32_t host_le(uint32_t a, uint32_t b) { return as_float(a) <= as_float(b); }
+inline uint32_t host_eq(uint32_t a, uint32_t b) { return as_float(a) == as_float(b); }
 
 bool branch_condition(Op op, uint32_t a, uint32_t b) {
   switch (op) {
@@ -58,13 +67,14 @@ uint32_t rem_s(uint32_t a, uint32_t b) {
 
 void Machine::trace_instruction(uint32_t pc) {
   uint32_t word = 0;
-  std::memcpy(&word, bus_.ram_at(pc), 4);
-  write_commit_trace(trace_, pc, word, hart_);
+  std::memcpy(&word, bus_.code_at(pc), 4);
+  if (spike_trace_) write_spike_commit(trace_, pc, word, hart_);
+  else write_commit_trace(trace_, pc, word, hart_);
 }
 
 StopInfo Machine::run(uint64_t max_instructions) {
   StopInfo s;
-  if (!bus_.in_ram(hart_.pc, 4)) {
+  if (!bus_.in_code(hart_.pc, 4)) {
     s.cause = StopCause::FetchFault;
     s.pc = s.addr = hart_.pc;
     return s;
@@ -75,21 +85,34 @@ StopInfo Machine::run(uint64_t max_instructions) {
     return s;
   }
   fpu::clear_host_flags();
-  s = (model_ || profiler_ || trace_) ? run_loop<true>(max_instructions) : run_loop<false>(max_instructions);
+  // Plain; timed with pre-computed costs; timed with per-instruction hooks
+  // (trace, caches), which the pre-computed costs cannot express.
+  if (!model_ && !profiler_ && !trace_ && watches_.empty()) s = run_loop<0>(max_instructions);
+  else if (model_ && !trace_ && watches_.empty() && !model_->per_access_state()) s = run_loop<1>(max_instructions);
+  else s = run_loop<2>(max_instructions);
   hart_.fflags |= fpu::take_host_flags();
   return s;
 }
 
-template <bool Timed>
+template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
+  constexpr bool Timed = Mode != 0;
+  constexpr bool Hooks = Mode == 2;  // per-instruction model calls
+  // Fused ops run as their first instruction except in the plain loop's
+  // RNE table (kLabelsFused), where one handler runs the pair.
   static const void* const kLabels[] = {
 #define FWSIM_LABEL(name, mn, cls, fmt) &&L_##name,
       FWSIM_OPS(FWSIM_LABEL)
 #undef FWSIM_LABEL
+#define FWSIM_FUSED_LABEL(name, a, b) &&L_##a,
+      FWSIM_FUSED(FWSIM_FUSED_LABEL)
+#undef FWSIM_FUSED_LABEL
   };
+  static_assert(sizeof kLabels / sizeof kLabels[0] == static_cast<size_t>(Op::Count));
   // While frm is RNE (almost always), FP arithmetic dispatches through this
   // table to handlers that skip the rounding-mode decode.
   static const void* kLabelsRne[sizeof kLabels / sizeof kLabels[0]];
+  static const void* kLabelsFused[sizeof kLabels / sizeof kLabels[0]];
   static bool rne_table_ready = false;
   if (!rne_table_ready) {
     std::memcpy(kLabelsRne, kLabels, sizeof kLabels);
@@ -104,6 +127,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     kLabelsRne[static_cast<int>(Op::FNMADD_S)] = &&R_FNMADD_S;
     kLabelsRne[static_cast<int>(Op::FCVT_S_W)] = &&R_FCVT_S_W;
     kLabelsRne[static_cast<int>(Op::FCVT_S_WU)] = &&R_FCVT_S_WU;
+    for (unsigned op = kBaseOpCount; op < static_cast<unsigned>(Op::Count); ++op)
+      kLabelsRne[op] = kLabelsRne[static_cast<unsigned>(base_op(static_cast<Op>(op)))];
+    std::memcpy(kLabelsFused, kLabelsRne, sizeof kLabels);
+#define FWSIM_FUSED_ROUTE(name, a, b) kLabelsFused[static_cast<int>(Op::name)] = &&F_##name;
+    FWSIM_FUSED(FWSIM_FUSED_ROUTE)
+#undef FWSIM_FUSED_ROUTE
     rne_table_ready = true;
   }
   // With an FPU model, the ops it replaces dispatch to the M_ handlers in
@@ -112,7 +141,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* model_labels[kOpCount];
   const void* model_labels_rne[kOpCount];
   const void* const* labels_any = kLabels;
-  const void* const* labels_rne = kLabelsRne;
+  const void* const* labels_rne = Mode == 0 ? kLabelsFused : kLabelsRne;
   const FpuApprox* const approx = fpu_model_;
   if (approx) {
     std::memcpy(model_labels, kLabels, sizeof kLabels);
@@ -129,6 +158,11 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     if (approx->models_div()) ROUTE(Op::FDIV_S, &&M_FDIV_S);
     if (approx->models_sqrt()) ROUTE(Op::FSQRT_S, &&M_FSQRT_S);
 #undef ROUTE
+    for (unsigned op = kBaseOpCount; op < static_cast<unsigned>(Op::Count); ++op) {
+      const unsigned b = static_cast<unsigned>(base_op(static_cast<Op>(op)));
+      model_labels[op] = model_labels[b];
+      model_labels_rne[op] = model_labels_rne[b];
+    }
     labels_any = model_labels;
     labels_rne = model_labels_rne;
   }
@@ -142,29 +176,63 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   // Hoisted so the hooks test registers, not members, per instruction.
   const bool tracing = trace_ != nullptr;
   Profiler* const profiler = profiler_;
+  const bool halt_on_ecall = bus_.map().halt == HaltKind::Ecall;
 
   Entry* const base = code_.entries();
   const uint32_t ram_base = bus_.ram_base();
-  Entry* ip = base + (hart_.pc - ram_base) / 4;
+  // Code memory: RAM, or the board's ROM (data accesses to it take the bus).
+  const uint32_t code_base = bus_.code_base();
+  const uint32_t code_size = bus_.code_size();
+  const uint8_t* const code_mem = bus_.code();
+  Entry* ip = base + (hart_.pc - code_base) / 4;
   uint32_t* const x = hart_.x;
   // f[] directly follows x[] in HartState: addressing it from x saves a register.
   static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
   uint32_t* const f = x + 33;
   uint8_t* const ram = bus_.ram();
   const uint32_t ram_size = bus_.ram_size();
+  // RAM size in units of 1, 2 and 4 bytes: the limits of the rotated offsets.
+  const uint32_t ram_units[3] = {ram_size, ram_size >> 1, ram_size >> 2};
   const uint64_t start = hart_.instret;
   const uint64_t limit = max_instructions > start ? max_instructions - start : 0;
-  // Instructions are counted per straight-line run: `n` holds the count up
-  // to `block` (the last jump target), so the running count is
-  // n + (ip - block) and straight-line code pays nothing for counting.
-  uint64_t n = 0;
-  Entry* block = ip;
+  // Instructions are counted per straight-line run, in bytes of entries:
+  // `k` is (count up to the last jump target) * sizeof(Entry) minus that
+  // target's address, so the running count is (k + ip) / sizeof(Entry), a
+  // taken jump updates k with one subtraction and straight-line code pays
+  // nothing for counting.
+  static_assert(sizeof(Entry) == 8);
+  uint64_t k = 0 - reinterpret_cast<uint64_t>(ip);
+  // Block-costed timing (Mode 1): slots, enters and leaves parallel the
+  // entries with the same stride, so each is `ip` plus a fixed distance.
+  Entry* const start_ip = ip;
+  Entry* run_start = ip;      // first entry of the current straight-line run
+  uint32_t discount = 0;      // stall not charged at run_start (entered by a jump)
+  bool discounted = false;    // run_start was entered by a jump
+  intptr_t slot_bias = 0, enter_bias = 0, leave_bias = 0;
+  if constexpr (Mode == 1) {
+    if (costs_.built_for() != model_) costs_.build(code_, model);
+    slot_bias = reinterpret_cast<char*>(costs_.slots()) - reinterpret_cast<char*>(base);
+    enter_bias = reinterpret_cast<char*>(costs_.enters()) - reinterpret_cast<char*>(base);
+    leave_bias = reinterpret_cast<char*>(costs_.leaves()) - reinterpret_cast<char*>(base);
+  }
+#define SLOT(p) (*reinterpret_cast<CostSlot*>(reinterpret_cast<char*>(p) + slot_bias))
+#define ENTERS(p) (*reinterpret_cast<uint64_t*>(reinterpret_cast<char*>(p) + enter_bias))
+#define LEAVES(p) (*reinterpret_cast<uint64_t*>(reinterpret_cast<char*>(p) + leave_bias))
+  if constexpr (Mode == 1) {
+    ++ENTERS(ip);
+    // Resuming right after the previous run's last instruction: the stall
+    // (if any) applies as in straight-line code.
+    discounted = resume_pc_ != hart_.pc;
+    discount = discounted ? SLOT(ip).stall : 0;
+    cycles -= discount;
+  }
+  const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
   StopInfo stop;
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
-#define PC_OF(p) (ram_base + static_cast<uint32_t>((p) - base) * 4u)
-#define RETIRED() (n + static_cast<uint64_t>(ip - block))
+#define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
+#define RETIRED() ((k + reinterpret_cast<uint64_t>(ip)) >> 3)
 #define NOW() (Timed ? cycles : start + RETIRED())
 #define SYNC()                                                 \
   do {                                                         \
@@ -174,26 +242,44 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define DISPATCH() goto* labels[ip->op]
 #define STEP()                                           \
   do {                                                   \
-    if constexpr (Timed) {                               \
-      model.instruction(*ip, PC_OF(ip), cycles);                 \
+    if constexpr (Hooks) {                               \
+      model.instruction(*ip, PC_OF(ip), cycles);         \
       if (tracing) trace_instruction(PC_OF(ip));         \
+    } else if constexpr (Timed) {                        \
+      cycles += SLOT(ip).cost;                           \
     }                                                    \
   } while (0)
-#define NEXT()   \
-  do {           \
-    STEP();      \
-    ++ip;        \
-    DISPATCH();  \
+#define NEXT_THEN(cont) \
+  do {                  \
+    STEP();             \
+    ++ip;               \
+    cont;               \
   } while (0)
-  // Closes the straight-line run at the current instruction (which retires).
-#define END_BLOCK() (n += static_cast<uint64_t>(ip - block) + 1)
-#define JUMP(target)                       \
-  do {                                     \
-    STEP();                                \
-    END_BLOCK();                           \
-    ip = block = (target);                 \
-    if (n > limit) goto limit_reached;     \
-    DISPATCH();                            \
+#define NEXT() NEXT_THEN(DISPATCH())
+  // Closes the straight-line run at the current instruction (which retires)
+  // and starts one at `target`; `done` is the count so far, in bytes.
+#define ENTER(target, done)                                   \
+  do {                                                        \
+    if constexpr (Mode == 1) {                                \
+      ++LEAVES(ip);                                           \
+      ++ENTERS(target);                                       \
+      run_start = (target);                                   \
+      discounted = true;                                      \
+      discount = SLOT(run_start).stall;                       \
+      cycles -= discount;                                     \
+    }                                                         \
+    k = (done) - reinterpret_cast<uint64_t>(target);          \
+    ip = (target);                                            \
+    if ((done) > limit8) goto limit_reached;                  \
+  } while (0)
+#define DONE() (k + reinterpret_cast<uint64_t>(ip + 1))
+#define JUMP(target)                          \
+  do {                                        \
+    STEP();                                   \
+    Entry* const to_ = (target);              \
+    const uint64_t done_ = DONE();            \
+    ENTER(to_, done_);                        \
+    DISPATCH();                               \
   } while (0)
 #define FAULT(c, a)      \
   do {                   \
@@ -201,27 +287,45 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     stop.addr = (a);     \
     goto fault;          \
   } while (0)
-#define BRANCH(cond)                                                   \
+#define BRANCH_THEN(cond, cont)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
     if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0, cycles);  \
     if (taken) JUMP(ip + ip->imm);                                     \
-    NEXT();                                                            \
+    NEXT_THEN(cont);                                                            \
   } while (0)
+#define BRANCH(cond) BRANCH_THEN(cond, DISPATCH())
 #define RS1 x[ip->rs1]
 #define RS2 x[ip->rs2]
 #define RD x[ip->rd]
-#define ALU(expr) \
+#define ALU_THEN(expr, cont) \
   do {            \
     RD = (expr);  \
-    NEXT();       \
+    NEXT_THEN(cont);       \
   } while (0)
+#define ALU(expr) ALU_THEN(expr, DISPATCH())
   // Memory: one range+alignment check for RAM, everything else on the bus.
-#define IN_RAM(T) (off <= ram_size - sizeof(T) && !(off & (sizeof(T) - 1)))
+  // Debugger watchpoints, checked only in the hooked loop.
+#define WATCH(size, store)                                                 \
+  do {                                                                     \
+    if constexpr (Hooks) {                                                 \
+      if (!watches_.empty()) {                                             \
+        if (const uint8_t kind_ = watch_hit(addr, (size), (store))) {      \
+          stop.addr = addr;                                                \
+          stop.watch_kind = kind_;                                         \
+          goto watch_stop;                                                 \
+        }                                                                  \
+      }                                                                    \
+    }                                                                      \
+  } while (0)
+  // Rotating the offset right by log2(size) moves misaligned low bits to the
+  // top, so one unsigned compare checks both range and alignment.
+#define IN_RAM(T)                                                                   \
+  __builtin_expect(std::rotr(off, std::countr_zero(sizeof(T))) < ram_units[std::countr_zero(sizeof(T))], 1)
 #define BUS_FAULTS(misaligned, fault)                                 \
   if (bus_result == Bus::Result::Misaligned) FAULT(misaligned, addr); \
   if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
-#define LOAD(T, dest)                                                                   \
+#define LOAD_THEN(T, dest, cont)                                                                   \
   do {                                                                                  \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                         \
     const uint32_t off = addr - ram_base;                                               \
@@ -239,11 +343,13 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       }                                                                                 \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
-    if constexpr (Timed) model.data(addr, cycles);                                              \
+    if constexpr (Hooks) model.data(addr, cycles);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
-    NEXT();                                                                             \
+    WATCH(sizeof(T), false);                                                            \
+    NEXT_THEN(cont);                                                                             \
   } while (0)
-#define STORE(T, value)                                                                  \
+#define LOAD(T, dest) LOAD_THEN(T, dest, DISPATCH())
+#define STORE_THEN(T, value, cont)                                                                  \
   do {                                                                                   \
     const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
     const uint32_t off = addr - ram_base;                                                \
@@ -260,9 +366,11 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
         goto device_stop;                                                                \
       }                                                                                  \
     }                                                                                    \
-    if constexpr (Timed) model.data(addr, cycles);                                               \
-    NEXT();                                                                              \
+    if constexpr (Hooks) model.data(addr, cycles);                                               \
+    WATCH(sizeof(T), true);                                                              \
+    NEXT_THEN(cont);                                                                              \
   } while (0)
+#define STORE(T, value) STORE_THEN(T, value, DISPATCH())
 #define CSR(op, operand, write)                                                         \
   do {                                                                                  \
     SYNC();                                                                             \
@@ -303,15 +411,16 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   } while (0)
 
   // RNE-table handlers: fall back to the generic handler for static modes.
-#define FP_RNE(generic, expr)                                        \
+#define FP_RNE_THEN(generic, expr, cont)                                        \
   do {                                                               \
     if (!(ip->imm & kRneOrDyn)) goto generic;                        \
     const float a = as_float(f[ip->rs1]), b = as_float(f[ip->rs2]);  \
     (void)a;                                                         \
     (void)b;                                                         \
     f[ip->rd] = host_result(expr);                                   \
-    NEXT();                                                          \
+    NEXT_THEN(cont);                                                          \
   } while (0)
+#define FP_RNE(generic, expr) FP_RNE_THEN(generic, expr, DISPATCH())
 #define FP_RNE_FUSED(generic, neg_product, neg_addend)                                   \
   do {                                                                                   \
     const uint32_t c = f[entry_rs3(*ip)];                                                \
@@ -351,19 +460,105 @@ R_FNMADD_S: FP_RNE_FUSED(L_FNMADD_S, true, true);
 R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(x[ip->rs1])));
 R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
 
+  // Fused pairs (isa_table.hpp FWSIM_FUSED): the first instruction's body,
+  // then straight to the second's handler without a dispatch.
+#define BODY_FLW(cont) LOAD_THEN(uint32_t, f[ip->rd], cont)
+#define BODY_LW(cont) LOAD_THEN(uint32_t, RD, cont)
+#define BODY_FMUL_S(cont) FP_RNE_THEN(L_FMUL_S, a * b, cont)
+#define BODY_FADD_S(cont) FP_RNE_THEN(L_FADD_S, a + b, cont)
+#define BODY_FSUB_S(cont) FP_RNE_THEN(L_FSUB_S, a - b, cont)
+#define BODY_FSGNJX_S(cont)                                      \
+  do {                                                           \
+    f[ip->rd] = f[ip->rs1] ^ (f[ip->rs2] & 0x80000000u);         \
+    NEXT_THEN(cont);                                             \
+  } while (0)
+#define BODY_FLT_S(cont) ALU_THEN(host_lt(f[ip->rs1], f[ip->rs2]), cont)
+#define BODY_FLE_S(cont) ALU_THEN(host_le(f[ip->rs1], f[ip->rs2]), cont)
+#define BODY_ADDI(cont) ALU_THEN(RS1 + static_cast<uint32_t>(ip->imm), cont)
+#define BODY_ADD(cont) ALU_THEN(RS1 + RS2, cont)
+#define BODY_SLLI(cont) ALU_THEN(RS1 << ip->imm, cont)
+#define BODY_AND(cont) ALU_THEN(RS1 & RS2, cont)
+#define BODY_BEQ(cont) BRANCH_THEN(RS1 == RS2, cont)
+#define BODY_BNE(cont) BRANCH_THEN(RS1 != RS2, cont)
+#define BODY_BGE(cont) BRANCH_THEN(static_cast<int32_t>(RS1) >= static_cast<int32_t>(RS2), cont)
+#define BODY_LUI(cont) ALU_THEN(static_cast<uint32_t>(ip->imm), cont)
+#define BODY_SLT(cont) ALU_THEN(static_cast<int32_t>(RS1) < static_cast<int32_t>(RS2), cont)
+#define BODY_SLTU(cont) ALU_THEN(RS1 < RS2, cont)
+#define BODY_LBU(cont) LOAD_THEN(uint8_t, RD, cont)
+#define BODY_FSW(cont) STORE_THEN(uint32_t, f[ip->rs2], cont)
+#define BODY_FMV_W_X(cont) \
+  do {                     \
+    f[ip->rd] = RS1;       \
+    NEXT_THEN(cont);       \
+  } while (0)
+  // The second instruction's handler in the RNE table.
+#define SECOND_FLW L_FLW
+#define SECOND_LW L_LW
+#define SECOND_FMUL_S R_FMUL_S
+#define SECOND_FADD_S R_FADD_S
+#define SECOND_FSUB_S R_FSUB_S
+#define SECOND_FSGNJX_S L_FSGNJX_S
+#define SECOND_FLT_S L_FLT_S
+#define SECOND_FLE_S L_FLE_S
+#define SECOND_XORI L_XORI
+#define SECOND_ADDI L_ADDI
+#define SECOND_ADD L_ADD
+#define SECOND_BEQ L_BEQ
+#define SECOND_BNE L_BNE
+#define SECOND_BGE L_BGE
+#define SECOND_LUI L_LUI
+#define SECOND_FMV_W_X L_FMV_W_X
+#define SECOND_FSW L_FSW
+#define SECOND_AND L_AND
+#define SECOND_SLT L_SLT
+#define SECOND_SLTU L_SLTU
+#define FWSIM_FUSED_HANDLER(name, a, b) \
+  F_##name:                             \
+  BODY_##a(goto SECOND_##b);
+  FWSIM_FUSED(FWSIM_FUSED_HANDLER)
+#undef FWSIM_FUSED_HANDLER
+
 L_UNDECODED: {
   uint32_t word;
-  std::memcpy(&word, ram + (PC_OF(ip) - ram_base), 4);
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   code_.fill(static_cast<uint32_t>(ip - base), word);
+  if constexpr (Mode == 1) {
+    costs_.update(code_, model, static_cast<uint32_t>(ip - base));
+    // A run entered here by a jump was discounted before the stall was known.
+    if (ip == run_start && discounted) {
+      cycles += discount;
+      discount = SLOT(ip).stall;
+      cycles -= discount;
+    }
+  }
   DISPATCH();
 }
 L_ILLEGAL: FAULT(StopCause::IllegalInstruction, 0);
+L_OUTSIDE_ISA: {
+  uint32_t word;
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
+  stop.detail = missing_extension(code_.isa(), word, decode(word));
+  FAULT(StopCause::OutsideIsa, 0);
+}
+L_SELF_JUMP: {
+  // The board's "loop" halt: a taken jump or branch to itself ends the run.
+  uint32_t word;
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
+  const DecodedInsn d = decode(word);
+  if (branch_condition(d.op, x[d.rs1], x[d.rs2])) {
+    if (d.op == Op::JAL && d.rd != 0) x[d.rd] = PC_OF(ip) + 4;
+    stop.exit_code = static_cast<int>(x[10]);
+    goto halt_exit;
+  }
+  if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
+  NEXT();
+}
 L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
 L_BREAKPOINT: FAULT(StopCause::Breakpoint, PC_OF(ip));
 L_SLOW_CTI: {
-  // A branch or jal whose target is outside RAM or not word aligned.
+  // A branch or jal whose target is outside code memory or not word aligned.
   uint32_t word;
-  std::memcpy(&word, ram + (PC_OF(ip) - ram_base), 4);
+  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   const DecodedInsn d = decode(word);
   const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
   if (!taken) {
@@ -380,31 +575,29 @@ L_JAL: {
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
-  END_BLOCK();
+  const uint64_t done = DONE();
   if constexpr (Timed) {
-    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + n, cycles});
+    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + (done >> 3), cycles});
   }
-  ip = block = target;
-  if (n > limit) goto limit_reached;
+  ENTER(target, done);
   DISPATCH();
 }
 L_JALR: {
   const uint32_t target = (RS1 + static_cast<uint32_t>(ip->imm)) & ~1u;
   if (target & 3) FAULT(StopCause::MisalignedFetch, target);
-  if (target - ram_base >= ram_size) FAULT(StopCause::FetchFault, target);
+  if (target - code_base >= code_size) FAULT(StopCause::FetchFault, target);
   const uint32_t link = PC_OF(ip) + 4;
   RD = link;
   STEP();
-  END_BLOCK();
+  const uint64_t done = DONE();
   if constexpr (Timed) {
     if (profiler) {
-      const Cost now{start + n, cycles};
+      const Cost now{start + (done >> 3), cycles};
       if (ip->rd == 1) profiler->call(target, link, now);
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
   }
-  ip = block = base + (target - ram_base) / 4;
-  if (n > limit) goto limit_reached;
+  ENTER(base + (target - code_base) / 4, done);
   DISPATCH();
 }
 L_BEQ: BRANCH(RS1 == RS2);
@@ -441,7 +634,12 @@ L_SRA: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> (RS2 & 31)));
 L_OR: ALU(RS1 | RS2);
 L_AND: ALU(RS1 & RS2);
 L_FENCE: NEXT();
-L_ECALL: FAULT(StopCause::Ecall, 0);
+L_ECALL:
+  if (halt_on_ecall && x[17] == kEcallExit) {
+    stop.exit_code = static_cast<int>(x[10]);
+    goto halt_exit;
+  }
+  FAULT(StopCause::Ecall, 0);
 L_EBREAK: FAULT(StopCause::Ebreak, 0);
 L_MUL: ALU(RS1 * RS2);
 L_MULH: ALU(static_cast<uint32_t>((int64_t{static_cast<int32_t>(RS1)} * static_cast<int32_t>(RS2)) >> 32));
@@ -497,9 +695,9 @@ L_FCVT_WU_S: {
   ALU(fpu::to_uint32(f[ip->rs1], rm, hart_.fflags));
 }
 L_FMV_X_W: ALU(f[ip->rs1]);
-L_FEQ_S: ALU(fpu::eq(f[ip->rs1], f[ip->rs2], hart_.fflags));
-L_FLT_S: ALU(fpu::lt(f[ip->rs1], f[ip->rs2], hart_.fflags));
-L_FLE_S: ALU(fpu::le(f[ip->rs1], f[ip->rs2], hart_.fflags));
+L_FEQ_S: ALU(host_eq(f[ip->rs1], f[ip->rs2]));
+L_FLT_S: ALU(host_lt(f[ip->rs1], f[ip->rs2]));
+L_FLE_S: ALU(host_le(f[ip->rs1], f[ip->rs2]));
 L_FCLASS_S: ALU(fpu::classify(f[ip->rs1]));
 L_FCVT_S_W: {
   ROUNDING(rm);
@@ -527,12 +725,27 @@ device_stop:
   stop.pc = PC_OF(ip) - (retire_stopper ? 4 : 0);
   if (bus_.finished()) {
     stop.cause = StopCause::Exit;
-    stop.exit_code = bus_.finisher().code();
+    stop.exit_code = bus_.exit_code();
   } else if (bus_.uart() && bus_.uart()->stalled()) {
     stop.cause = StopCause::UartStall;
   } else {
     stop.cause = StopCause::HostIo;
   }
+  goto out;
+watch_stop:
+  __attribute__((unused));  // reached only from the hooked loop
+  // The accessing instruction has run: report the stop after it.
+  STEP();
+  ++ip;
+  stop.pc = PC_OF(ip) - 4;
+  stop.cause = StopCause::Watchpoint;
+  goto out;
+halt_exit:
+  // The board's ecall or jump-to-self halt: the instruction retires.
+  STEP();
+  ++ip;
+  stop.pc = PC_OF(ip) - 4;
+  stop.cause = StopCause::Exit;
   goto out;
 limit_reached:
   stop.cause = StopCause::InstructionLimit;
@@ -541,15 +754,32 @@ limit_reached:
 fault:
   stop.pc = PC_OF(ip);
 out:
+  if constexpr (Mode == 1) {
+    if (ip != run_start) {
+      ++LEAVES(ip - 1);
+      resume_pc_ = PC_OF(ip);
+    } else {
+      // Nothing of this run retired: undo its entry.
+      --ENTERS(ip);
+      cycles += discount;
+      if (ip != start_ip) resume_pc_ = ~0u;
+    }
+    costs_.fold(code_, code_mem, model);
+  }
   hart_.pc = PC_OF(ip);
   SYNC();  // ip is not retired: the count runs up to it
   x[0] = 0;
   return stop;
 
 #undef PC_OF
+#undef f
 #undef NOW
 #undef RETIRED
-#undef END_BLOCK
+#undef ENTER
+#undef SLOT
+#undef ENTERS
+#undef LEAVES
+#undef DONE
 #undef SYNC
 #undef DISPATCH
 #undef STEP
@@ -563,6 +793,7 @@ out:
 #undef ALU
 #undef LOAD
 #undef IN_RAM
+#undef WATCH
 #undef BUS_FAULTS
 #undef STORE
 #undef CSR
@@ -574,7 +805,8 @@ out:
 #undef FP_MODEL
 }
 
-template StopInfo Machine::run_loop<true>(uint64_t);
-template StopInfo Machine::run_loop<false>(uint64_t);
+template StopInfo Machine::run_loop<0>(uint64_t);
+template StopInfo Machine::run_loop<1>(uint64_t);
+template StopInfo Machine::run_loop<2>(uint64_t);
 
 }  // namespace fwsim

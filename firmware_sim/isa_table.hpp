@@ -37,6 +37,8 @@ enum class Format : uint8_t {
   X(FETCH_FAULT, "<fetch fault>", Internal, None)      \
   X(SLOW_CTI, "<far jump>", Internal, None)            \
   X(BREAKPOINT, "<breakpoint>", Internal, None)        \
+  X(OUTSIDE_ISA, "<outside the board's ISA>", Internal, None) \
+  X(SELF_JUMP, "<jump to itself>", Internal, None)     \
   X(LUI, "lui", Alu, U)                                \
   X(AUIPC, "auipc", Alu, U)                            \
   X(JAL, "jal", Jump, J)                               \
@@ -118,12 +120,81 @@ enum class Format : uint8_t {
   X(FCVT_S_WU, "fcvt.s.wu", FpCvt, FCvtFX)             \
   X(FMV_W_X, "fmv.w.x", FpMove, FMvFX)
 
+// Fused pairs: X(enumerator, first, second). The decode cache gives an
+// entry a fused op when it and the next entry are these two instructions;
+// the plain interpreter then runs both with one dispatch (the second entry
+// keeps its own op, for jumps to it). Everything else (timing, statistics)
+// treats a fused entry as its first instruction.
+#define FWSIM_FUSED(X)            \
+  X(FLW_FLW, FLW, FLW)            \
+  X(FLW_FMUL, FLW, FMUL_S)        \
+  X(FLW_FADD, FLW, FADD_S)        \
+  X(FLW_FSUB, FLW, FSUB_S)        \
+  X(FLW_LW, FLW, LW)              \
+  X(FLW_FLE, FLW, FLE_S)          \
+  X(FMUL_FADD, FMUL_S, FADD_S)    \
+  X(FMUL_FMUL, FMUL_S, FMUL_S)    \
+  X(FMUL_FLW, FMUL_S, FLW)        \
+  X(FADD_FMUL, FADD_S, FMUL_S)    \
+  X(FADD_FSGNJX, FADD_S, FSGNJX_S) \
+  X(FSUB_FSUB, FSUB_S, FSUB_S)    \
+  X(FSUB_FMUL, FSUB_S, FMUL_S)    \
+  X(FSGNJX_FLT, FSGNJX_S, FLT_S)  \
+  X(FLT_BEQ, FLT_S, BEQ)          \
+  X(FLT_BNE, FLT_S, BNE)          \
+  X(FLE_XORI, FLE_S, XORI)        \
+  X(LW_LW, LW, LW)                \
+  X(LW_ADDI, LW, ADDI)            \
+  X(LW_ADD, LW, ADD)              \
+  X(LW_BEQ, LW, BEQ)              \
+  X(LW_FLW, LW, FLW)              \
+  X(ADDI_BEQ, ADDI, BEQ)          \
+  X(ADDI_BNE, ADDI, BNE)          \
+  X(ADDI_ADDI, ADDI, ADDI)        \
+  X(ADD_LW, ADD, LW)              \
+  X(ADD_BEQ, ADD, BEQ)            \
+  X(SLLI_ADD, SLLI, ADD)          \
+  X(AND_BEQ, AND, BEQ)            \
+  X(BEQ_FLW, BEQ, FLW)            \
+  X(BEQ_LW, BEQ, LW)              \
+  X(BEQ_BNE, BEQ, BNE)            \
+  X(BEQ_ADDI, BEQ, ADDI)          \
+  X(BNE_FLW, BNE, FLW)            \
+  X(FLW_FLT, FLW, FLT_S)          \
+  X(FLW_LUI, FLW, LUI)            \
+  X(FLW_FMV_W_X, FLW, FMV_W_X)    \
+  X(FMV_W_X_FLT, FMV_W_X, FLT_S)  \
+  X(LUI_FLW, LUI, FLW)            \
+  X(BGE_ADDI, BGE, ADDI)          \
+  X(AND_BNE, AND, BNE)            \
+  X(FSW_FLW, FSW, FLW)            \
+  X(FSW_FSW, FSW, FSW)            \
+  X(FSW_LW, FSW, LW)              \
+  X(ADDI_FLW, ADDI, FLW)          \
+  X(ADDI_BGE, ADDI, BGE)          \
+  X(ADDI_SLT, ADDI, SLT)          \
+  X(FLT_XORI, FLT_S, XORI)        \
+  X(FLT_FLT, FLT_S, FLT_S)        \
+  X(FLT_AND, FLT_S, AND)          \
+  X(FMUL_FSUB, FMUL_S, FSUB_S)    \
+  X(FSUB_BEQ, FSUB_S, BEQ)        \
+  X(LBU_FLW, LBU, FLW)            \
+  X(LBU_SLTU, LBU, SLTU)          \
+  X(SLTU_ADDI, SLTU, ADDI)        \
+  X(SLT_AND, SLT, AND)
+
 enum class Op : uint8_t {
 #define FWSIM_ENUM(name, mn, cls, fmt) name,
   FWSIM_OPS(FWSIM_ENUM)
 #undef FWSIM_ENUM
+  BaseCount,
+  FusedBefore = BaseCount - 1,  // the fused ops follow the base ops
+#define FWSIM_FUSED_ENUM(name, a, b) name,
+  FWSIM_FUSED(FWSIM_FUSED_ENUM)
+#undef FWSIM_FUSED_ENUM
   Count
 };
+inline constexpr unsigned kBaseOpCount = static_cast<unsigned>(Op::BaseCount);
 
 struct OpInfo {
   const char* mnemonic;
@@ -131,11 +202,37 @@ struct OpInfo {
   Format format;
 };
 
-inline constexpr OpInfo kOpInfo[] = {
+inline constexpr OpInfo kBaseOpInfo[] = {
 #define FWSIM_INFO(name, mn, cls, fmt) {mn, InsnClass::cls, Format::fmt},
     FWSIM_OPS(FWSIM_INFO)
 #undef FWSIM_INFO
 };
+inline constexpr OpInfo kOpInfo[] = {
+#define FWSIM_INFO(name, mn, cls, fmt) {mn, InsnClass::cls, Format::fmt},
+    FWSIM_OPS(FWSIM_INFO)
+#undef FWSIM_INFO
+#define FWSIM_FUSED_INFO(name, a, b) kBaseOpInfo[static_cast<unsigned>(Op::a)],
+    FWSIM_FUSED(FWSIM_FUSED_INFO)
+#undef FWSIM_FUSED_INFO
+};
+static_assert(sizeof kOpInfo / sizeof kOpInfo[0] == static_cast<size_t>(Op::Count));
+
+// The first instruction of a fused op (any other op: itself).
+constexpr Op base_op(Op op) {
+  switch (op) {
+#define FWSIM_FUSED_BASE(name, a, b) case Op::name: return Op::a;
+    FWSIM_FUSED(FWSIM_FUSED_BASE)
+#undef FWSIM_FUSED_BASE
+    default: return op;
+  }
+}
+// The fused op for `first` followed by `second`, or Op::UNDECODED (none).
+constexpr Op fused_op(Op first, Op second) {
+#define FWSIM_FUSED_PAIR(name, a, b) if (first == Op::a && second == Op::b) return Op::name;
+  FWSIM_FUSED(FWSIM_FUSED_PAIR)
+#undef FWSIM_FUSED_PAIR
+  return Op::UNDECODED;
+}
 
 inline const OpInfo& op_info(Op op) { return kOpInfo[static_cast<unsigned>(op)]; }
 

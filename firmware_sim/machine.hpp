@@ -4,10 +4,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include "bus.hpp"
 #include "csr.hpp"
 #include "cycle_model.hpp"
+#include "block_costs.hpp"
 #include "decode_cache.hpp"
 #include "hart_state.hpp"
 #include "profiler.hpp"
@@ -19,12 +21,17 @@ class FpuApprox;
 
 class Machine {
  public:
-  explicit Machine(const MemoryMap& map) : bus_(map), code_(map.ram_size) {}
-  explicit Machine(uint32_t ram_size) : Machine(MemoryMap{kRamBase, ram_size}) {}
+  explicit Machine(const MemoryMap& map) : bus_(map), code_(bus_.code_size()) {
+    if (map.halt == HaltKind::Loop) code_.configure(kReferenceIsa, true);
+  }
+  explicit Machine(uint32_t ram_size) : Machine(map_with_ram(ram_size)) {}
 
   Bus& bus() { return bus_; }
   HartState& hart() { return hart_; }
   CsrFile& csr() { return csr_; }
+  // The board's instruction set: instructions outside it stop the run with
+  // StopCause::OutsideIsa. Call before running.
+  void set_isa(const IsaSpec& isa) { code_.configure(isa, bus_.map().halt == HaltKind::Loop); }
 
   // With a model (and optionally a profiler or a trace stream) the timed
   // variant runs; without, the plain one, which counts instructions only.
@@ -33,24 +40,43 @@ class Machine {
     if (m) csr_.set_clock_hz(m->config().clock_hz);
   }
   void set_profiler(Profiler* p) { profiler_ = p; }
-  void set_trace(std::FILE* out) { trace_ = out; }
+  // `spike` = spike's commit-log layout (--commit-log) instead of --trace's.
+  void set_trace(std::FILE* out, bool spike = false) {
+    trace_ = out;
+    spike_trace_ = spike;
+  }
   // Null (the default) = exact IEEE arithmetic; otherwise the model's
   // arithmetic for the ops it replaces (fpu_approx.hpp).
   void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
 
   // Debugger support (gdb_stub.hpp). A breakpoint stops a run with
   // StopCause::Breakpoint before the instruction at `pc` executes; false when
-  // `pc` is not a word in RAM. Code written from outside (a debugger's memory
+  // `pc` is not a word of code memory. Code written from outside (a debugger's memory
   // write) must be invalidated to be decoded again.
   bool set_breakpoint(uint32_t pc) {
-    if (!bus_.in_ram(pc, 4) || (pc & 3)) return false;
-    code_.set_breakpoint((pc - bus_.ram_base()) / 4);
+    if (!bus_.in_code(pc, 4) || (pc & 3)) return false;
+    code_.set_breakpoint((pc - bus_.code_base()) / 4);
     return true;
   }
   void clear_breakpoint(uint32_t pc) { invalidate_code(pc, 4); }
   void invalidate_code(uint32_t addr, uint32_t len) {
     for (uint32_t a = addr & ~3u; a - (addr & ~3u) < len + (addr & 3); a += 4)
-      if (bus_.in_ram(a, 4)) code_.invalidate((a - bus_.ram_base()) / 4);
+      if (bus_.in_code(a, 4)) code_.invalidate((a - bus_.code_base()) / 4);
+  }
+
+  // Debugger watchpoints: a load (kind 3), store (2) or either (4)
+  // touching [addr, addr + len) stops the run with StopCause::Watchpoint
+  // after that instruction. While any is set, runs take the timed loop with
+  // per-access hooks.
+  void add_watchpoint(uint32_t addr, uint32_t len, uint8_t kind) { watches_.push_back({addr, len, kind}); }
+  void clear_watchpoints() { watches_.clear(); }
+  bool remove_watchpoint(uint32_t addr, uint32_t len, uint8_t kind) {
+    for (size_t i = 0; i < watches_.size(); ++i)
+      if (watches_[i].addr == addr && watches_[i].len == len && watches_[i].kind == kind) {
+        watches_.erase(watches_.begin() + static_cast<long>(i));
+        return true;
+      }
+    return false;
   }
 
   // Runs from hart().pc until the firmware stops, faults, or more than
@@ -58,17 +84,32 @@ class Machine {
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
 
  private:
-  template <bool Timed>
+  template <int Mode>  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
+  // The kind of the first watchpoint an access hits, or 0.
+  uint8_t watch_hit(uint32_t addr, uint32_t size, bool store) const {
+    for (const Watch& w : watches_)
+      if (addr - w.addr < w.len || w.addr - addr < size)
+        if (w.kind == 4 || (w.kind == 2) == store) return w.kind;
+    return 0;
+  }
+  struct Watch {
+    uint32_t addr, len;
+    uint8_t kind;
+  };
+  std::vector<Watch> watches_;
 
   Bus bus_;
   HartState hart_;
   CsrFile csr_;
   DecodeCache code_;
+  BlockCosts costs_;
+  uint32_t resume_pc_ = ~0u;  // where the last timed run stopped after straight-line code
   CycleModel* model_ = nullptr;
   Profiler* profiler_ = nullptr;
   std::FILE* trace_ = nullptr;
+  bool spike_trace_ = false;
   const FpuApprox* fpu_model_ = nullptr;
 };
 

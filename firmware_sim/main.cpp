@@ -9,8 +9,10 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "board_file.hpp"
 #include "boot_args.hpp"
 #include "cli_options.hpp"
 #include "disassembler.hpp"
@@ -20,6 +22,7 @@
 #include "fpu_check.hpp"
 #include "fpu_model_config.hpp"
 #include "gdb_stub.hpp"
+#include "hex_image.hpp"
 #include "machine.hpp"
 #include "memory_map.hpp"
 #include "output_check.hpp"
@@ -110,9 +113,15 @@ int run(const std::vector<std::string>& argv) {
   std::unique_ptr<FpuApprox> fpu_model;
   if (!fpu_cfg.is_ieee()) fpu_model = std::make_unique<FpuApprox>(fpu_cfg);
 
-  // The memory map: the board's, then the machine file, then the options.
+  // The memory map: the board file's (default: the reference board), or the
+  // machine file, then the options.
   MemoryMap map;
+  std::optional<Board> board;
   try {
+    if (!opt.board_file.empty()) {
+      board = parse_board_file(read_text(opt.board_file, "board file"), opt.board_file);
+      map = board->map;
+    }
     if (!opt.machine_file.empty()) parse_machine_file(read_text(opt.machine_file, "machine file"), opt.machine_file, map);
     if (!opt.ram_spec.empty()) parse_ram_spec(opt.ram_spec, map);
     if (opt.ram_size) map.ram_size = opt.ram_size;
@@ -124,7 +133,7 @@ int run(const std::vector<std::string>& argv) {
   }
 
   // Output files are written after the run: check now that they can be.
-  for (const std::string* out : {&opt.profile_out, &opt.folded_out, &opt.flame_out}) {
+  for (const std::string* out : {&opt.profile_out, &opt.folded_out, &opt.flame_out, &opt.commit_log}) {
     if (out->empty()) continue;
     const std::string problem = output_path_problem(*out);
     if (!problem.empty()) die(kExitUsage, problem);
@@ -152,16 +161,30 @@ int run(const std::vector<std::string>& argv) {
     if (::access(opt.elf.c_str(), R_OK) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
   }
   Machine m(map);
+  if (board) m.set_isa(board->isa);
   LoadedElf elf;
   try {
-    elf = load_elf(opt.elf, m.bus());
+    if (opt.load_hex) {
+      // The image starts at the board's ROM, else its reset address, else RAM.
+      const uint32_t base = map.rom_size ? map.rom_base : board ? board->reset : map.ram_base;
+      const LoadedImage img = load_hex_image(opt.elf, m.bus(), base);
+      elf.entry = base;
+      elf.text_begin = img.begin;
+      elf.text_end = img.end;
+    } else {
+      elf = load_elf(opt.elf, m.bus());
+    }
     std::vector<std::string> fw_args{opt.elf};
     fw_args.insert(fw_args.end(), opt.args.begin(), opt.args.end());
     place_boot_args(m.bus(), m.hart(), fw_args);
   } catch (const std::runtime_error& e) {
     die(kExitLoad, e.what());
   }
-  m.hart().pc = elf.entry;
+  // A board starts at its reset address, whatever the ELF's entry says.
+  m.hart().pc = board ? board->reset : elf.entry;
+  if (board && elf.entry != board->reset)
+    std::fprintf(stderr, "firmware-sim: warning: %s: entry 0x%08x is not board %s's reset address 0x%08x; starting at reset\n",
+                 opt.elf.c_str(), elf.entry, board->name.c_str(), board->reset);
   m.csr().set_clock_hz(model_cfg.clock_hz);
 
   // Listen before anything slow, so a busy port fails at once.
@@ -175,6 +198,7 @@ int run(const std::vector<std::string>& argv) {
   }
 
   Uart::Config ucfg;
+  ucfg.layout = map.uart;
   if (opt.pty) {
     try {
       ucfg.in_fd = ucfg.out_fd = open_uart_pty();
@@ -204,6 +228,11 @@ int run(const std::vector<std::string>& argv) {
     if (!trace) die(kExitIo, std::string("cannot open the trace stream: ") + std::strerror(errno));
     std::setvbuf(trace, nullptr, _IOFBF, 1 << 16);
     m.set_trace(trace);
+  } else if (!opt.commit_log.empty()) {
+    trace = opt.commit_log == "-" ? ::fdopen(::dup(STDOUT_FILENO), "w") : std::fopen(opt.commit_log.c_str(), "w");
+    if (!trace) die(kExitIo, opt.commit_log + ": " + std::strerror(errno));
+    std::setvbuf(trace, nullptr, _IOFBF, 1 << 16);
+    m.set_trace(trace, true);
   }
   m.set_fpu_model(fpu_model.get());
 
@@ -233,7 +262,7 @@ int run(const std::vector<std::string>& argv) {
                  m.hart().pc, static_cast<unsigned long long>(m.hart().instret), kExitKilled);
   } else if (stop.cause != StopCause::Exit) {
     uint32_t word = 0;
-    if (m.bus().in_ram(stop.pc, 4)) std::memcpy(&word, m.bus().ram_at(stop.pc), 4);
+    if (const uint8_t* p = m.bus().host_at(stop.pc, 4)) std::memcpy(&word, p, 4);
     std::fprintf(stderr, "firmware-sim: error: %s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
   }
   if (profiler) {

@@ -88,6 +88,16 @@ void parse_machine_file(const std::string& text, const std::string& origin, Memo
   }
 }
 
+uint32_t uart_region_size(const UartLayout& u) {
+  switch (u.kind) {
+    case UartKind::Ns16550: return kUartSize;
+    case UartKind::Litex: return 0x100;   // rxtx .. ev_enable, 32-bit CSRs
+    case UartKind::Sifive: return 0x1000;
+    case UartKind::Generic: return (u.data > u.status ? u.data : u.status) + u.width;
+  }
+  return kUartSize;
+}
+
 void check_memory_map(const MemoryMap& m) {
   if (m.ram_base % kRamAlign || m.ram_size % kRamAlign)
     fail("RAM base and size must be multiples of 4096 (RAM " + hex(m.ram_base) + ", size " + hex(m.ram_size) + ")");
@@ -96,27 +106,46 @@ void check_memory_map(const MemoryMap& m) {
   // RAM must end below 4 GiB: a2 and the boot block hold its end address.
   if (uint64_t{m.ram_base} + m.ram_size >= (uint64_t{1} << 32))
     fail("RAM " + hex(m.ram_base) + "+" + hex(m.ram_size) + " must end below the top of the 32-bit address space");
-  if (m.uart_base % 8 || uint64_t{m.uart_base} + kUartSize > (uint64_t{1} << 32))
-    fail("UART base " + hex(m.uart_base) + " must be 8-byte aligned and leave room for its registers");
-  if (m.finisher_base % 4 || uint64_t{m.finisher_base} + kFinisherSize > (uint64_t{1} << 32))
-    fail("finisher base " + hex(m.finisher_base) + " must be 4-byte aligned and leave room for it");
+  const uint32_t uart_size = uart_region_size(m.uart);
+  if (m.uart_base % 4 || uint64_t{m.uart_base} + uart_size > (uint64_t{1} << 32))
+    fail("UART base " + hex(m.uart_base) + " must be 4-byte aligned and leave room for its registers");
+  const bool has_device = m.halt == HaltKind::Finisher || m.halt == HaltKind::Store;
+  const uint32_t halt_size = m.halt == HaltKind::Store ? kStoreHaltSize : kFinisherSize;
+  if (has_device && (m.finisher_base % 4 || uint64_t{m.finisher_base} + halt_size > (uint64_t{1} << 32)))
+    fail("halt device " + hex(m.finisher_base) + " must be 4-byte aligned and leave room for it");
+  if (m.rom_size) {
+    if (m.rom_base % kRamAlign || m.rom_size % kRamAlign)
+      fail("ROM base and size must be multiples of 4096 (ROM " + hex(m.rom_base) + ", size " + hex(m.rom_size) + ")");
+    if (uint64_t{m.rom_base} + m.rom_size >= (uint64_t{1} << 32) || m.rom_size > 0x7ffff000u)
+      fail("ROM " + hex(m.rom_base) + "+" + hex(m.rom_size) + " must end below the top of the 32-bit address space");
+  }
   struct Region {
     const char* name;
     uint64_t begin, end;
   };
-  const Region r[] = {{"RAM", m.ram_base, uint64_t{m.ram_base} + m.ram_size},
-                      {"UART", m.uart_base, uint64_t{m.uart_base} + kUartSize},
-                      {"finisher", m.finisher_base, uint64_t{m.finisher_base} + kFinisherSize}};
-  for (size_t i = 0; i < 3; ++i)
-    for (size_t j = i + 1; j < 3; ++j)
+  Region r[4] = {{"RAM", m.ram_base, uint64_t{m.ram_base} + m.ram_size},
+                 {"UART", m.uart_base, uint64_t{m.uart_base} + uart_size}};
+  size_t count = 2;
+  if (has_device) r[count++] = {m.halt == HaltKind::Store ? "halt store" : "finisher", m.finisher_base, uint64_t{m.finisher_base} + halt_size};
+  if (m.rom_size) r[count++] = {"ROM", m.rom_base, uint64_t{m.rom_base} + m.rom_size};
+  for (size_t i = 0; i < count; ++i)
+    for (size_t j = i + 1; j < count; ++j)
       if (r[i].begin < r[j].end && r[j].begin < r[i].end)
         fail(std::string(r[i].name) + " " + hex(r[i].begin) + ".." + hex(r[i].end) + " overlaps " + r[j].name +
              " " + hex(r[j].begin) + ".." + hex(r[j].end));
 }
 
 std::string describe(const MemoryMap& m) {
-  return "RAM " + hex(m.ram_base) + ".." + hex(uint64_t{m.ram_base} + m.ram_size) + ", UART " + hex(m.uart_base) +
-         ", finisher " + hex(m.finisher_base);
+  std::string s = "RAM " + hex(m.ram_base) + ".." + hex(uint64_t{m.ram_base} + m.ram_size);
+  if (m.rom_size) s += ", ROM " + hex(m.rom_base) + ".." + hex(uint64_t{m.rom_base} + m.rom_size);
+  s += ", UART " + hex(m.uart_base);
+  switch (m.halt) {
+    case HaltKind::Finisher: s += ", finisher " + hex(m.finisher_base); break;
+    case HaltKind::Store: s += ", halt store " + hex(m.finisher_base); break;
+    case HaltKind::Ecall: s += ", halt by ecall"; break;
+    case HaltKind::Loop: s += ", halt by jump-to-self"; break;
+  }
+  return s;
 }
 
 }  // namespace fwsim

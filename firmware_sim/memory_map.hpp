@@ -10,12 +10,41 @@
 
 namespace fwsim {
 
+// The UART's register interface (board files, docs/firmware_sim.md).
+enum class UartKind : uint8_t { Ns16550, Litex, Sifive, Generic };
+struct UartLayout {
+  UartKind kind = UartKind::Ns16550;
+  // Generic kind only: register offsets, status masks, register width.
+  uint32_t data = 0, status = 0, tx_ready = 0, rx_ready = 0;
+  uint32_t width = 4;
+};
+// Bytes of address space the UART kind decodes.
+uint32_t uart_region_size(const UartLayout& u);
+
+// How the firmware stops the machine: the SiFive test finisher at
+// finisher_base, ecall with a7 = 93 (status in a0), a status word stored to
+// finisher_base, or a jump to itself (status in a0).
+enum class HaltKind : uint8_t { Finisher, Ecall, Store, Loop };
+inline constexpr uint32_t kEcallExit = 93;  // a7 value of the exit call
+inline constexpr uint32_t kStoreHaltSize = 4;
+
 struct MemoryMap {
   uint32_t ram_base = MINRT_RAM_BASE;
   uint32_t ram_size = MINRT_RAM_DEFAULT_SIZE;
+  // Separate read-only instruction memory; size 0 = code runs from RAM.
+  uint32_t rom_base = 0, rom_size = 0;
   uint32_t uart_base = MINRT_UART_BASE;
-  uint32_t finisher_base = MINRT_FINISHER_BASE;
+  uint32_t finisher_base = MINRT_FINISHER_BASE;  // halt device address
+  UartLayout uart;
+  HaltKind halt = HaltKind::Finisher;
 };
+
+// The default map with RAM of `ram_size` bytes at the default base.
+inline MemoryMap map_with_ram(uint32_t ram_size) {
+  MemoryMap m;
+  m.ram_size = ram_size;
+  return m;
+}
 
 // Region sizes are the devices' own (memory_map.h), not configurable.
 inline constexpr uint32_t kUartSize = MINRT_UART_SIZE;

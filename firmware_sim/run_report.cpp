@@ -13,9 +13,14 @@ std::string describe_stop(const StopInfo& s, uint32_t word, const SymbolTable& s
                         s.cause == StopCause::FetchFault || s.cause == StopCause::MisalignedFetch;
   std::string where = syms.describe(s.pc);
   std::string insn = word ? disassemble(word, s.pc) : std::string("(no instruction)");
+  if (word && (word & 3) != 3) {
+    std::snprintf(buf, sizeof buf, "compressed instruction 0x%04x", word & 0xffff);
+    insn = buf;
+  }
   std::snprintf(buf, sizeof buf, "%s at pc 0x%08x (%s): %s", describe(s.cause), s.pc,
                 where.c_str(), insn.c_str());
   std::string msg = buf;
+  if (s.detail) msg += std::string(": needs ") + s.detail;
   if (has_addr) {
     std::snprintf(buf, sizeof buf, ", address 0x%08x", s.addr);
     msg += buf;

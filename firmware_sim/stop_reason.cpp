@@ -19,6 +19,8 @@ const char* describe(StopCause c) {
     case StopCause::UartStall: return "UART input at end of file and firmware keeps polling it";
     case StopCause::HostIo: return "host I/O error";
     case StopCause::Breakpoint: return "breakpoint";
+    case StopCause::Watchpoint: return "watchpoint";
+    case StopCause::OutsideIsa: return "instruction outside the board's ISA";
   }
   return "?";
 }

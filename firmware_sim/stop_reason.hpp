@@ -30,6 +30,8 @@ enum class StopCause : uint8_t {
   UartStall,
   HostIo,
   Breakpoint,          // a debugger breakpoint (gdb_stub.hpp); the instruction has not run
+  OutsideIsa,          // an instruction the board's ISA lacks (--board)
+  Watchpoint,          // a debugger watchpoint (gdb_stub.hpp); the accessing instruction has run
 };
 
 struct StopInfo {
@@ -37,6 +39,8 @@ struct StopInfo {
   uint32_t pc = 0;        // pc of the instruction that stopped the run
   uint32_t addr = 0;      // faulting data address / jump target
   int exit_code = 0;      // for StopCause::Exit
+  const char* detail = nullptr;  // OutsideIsa: what the instruction needs
+  uint8_t watch_kind = 0;        // Watchpoint: 2 write, 3 read, 4 access (gdb's Z numbers)
 };
 
 const char* describe(StopCause c);

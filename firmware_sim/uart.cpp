@@ -12,6 +12,11 @@ namespace fwsim {
 namespace {
 constexpr uint8_t kLcrDlab = 0x80;
 constexpr uint32_t kRegIer = 1, kRegLcr = 3, kRegScr = 7;
+// LiteX CSR UART (32-bit CSRs) and SiFive UART register offsets.
+constexpr uint32_t kLitexRxtx = 0x00, kLitexTxfull = 0x04, kLitexRxempty = 0x08;
+constexpr uint32_t kSifiveTxdata = 0x00, kSifiveRxdata = 0x04, kSifiveTxctrl = 0x08, kSifiveRxctrl = 0x0c,
+                   kSifiveDiv = 0x18;
+constexpr uint32_t kSifiveFlag = 0x80000000u;  // txdata: full; rxdata: empty
 // Empty polls answered at full speed before the host is waited for.
 constexpr uint64_t kSpinPolls = 4096;
 }  // namespace
@@ -53,49 +58,55 @@ bool Uart::data_ready(uint64_t now) {
   return now >= rx_ready_at_;
 }
 
-uint8_t Uart::read(uint32_t offset, uint64_t now) {
+bool Uart::poll_rx(uint64_t now) {
+  if (data_ready(now)) return true;
+  if (eof_) ++eof_polls_;
+  else if (++idle_polls_ == 64) flush();  // the firmware is waiting for input: show what it printed
+  return false;
+}
+
+int Uart::take_rx(uint64_t now) {
+  eof_polls_ = idle_polls_ = 0;
+  if (!data_ready(now)) return -1;
+  holding_ = false;
+  ++bytes_in_;
+  return in_buf_[in_pos_++];
+}
+
+void Uart::send(uint8_t value, uint64_t now) {
+  eof_polls_ = idle_polls_ = 0;
+  out_buf_.push_back(value);
+  ++bytes_out_;
+  tx_free_at_ = (now > tx_free_at_ ? now : tx_free_at_) + cfg_.cycles_per_byte;
+  if (out_buf_.size() >= 65536 || (cfg_.interactive && value == '\n')) flush();
+}
+
+uint8_t Uart::read_ns16550(uint32_t offset, uint64_t now) {
   const bool dlab = lcr_ & kLcrDlab;
   switch (offset) {
     case MINRT_UART_REG_DATA: {
       if (dlab) return dll_;
-      eof_polls_ = idle_polls_ = 0;
-      if (!data_ready(now)) return 0;
-      holding_ = false;
-      ++bytes_in_;
-      return in_buf_[in_pos_++];
+      const int c = take_rx(now);
+      return c < 0 ? 0 : static_cast<uint8_t>(c);
     }
     case kRegIer: return dlab ? dlm_ : 0;
     case kRegLcr: return lcr_;
     case kRegScr: return scr_;
     case MINRT_UART_REG_LSR: {
-      uint8_t lsr = 0;
-      if (data_ready(now)) {
-        lsr |= MINRT_UART_LSR_DATA_READY;
-      } else if (eof_) {
-        ++eof_polls_;
-      } else if (++idle_polls_ == 64) {
-        flush();  // the firmware is waiting for input: show what it printed
-      }
-      if (now >= tx_free_at_) lsr |= MINRT_UART_LSR_THR_EMPTY | 0x40;  // THRE + TEMT
+      uint8_t lsr = poll_rx(now) ? MINRT_UART_LSR_DATA_READY : 0;
+      if (tx_ready(now)) lsr |= MINRT_UART_LSR_THR_EMPTY | 0x40;  // THRE + TEMT
       return lsr;
     }
     default: return 0;
   }
 }
 
-void Uart::write(uint32_t offset, uint8_t value, uint64_t now) {
+void Uart::write_ns16550(uint32_t offset, uint8_t value, uint64_t now) {
   const bool dlab = lcr_ & kLcrDlab;
   switch (offset) {
     case MINRT_UART_REG_DATA:
-      if (dlab) {
-        dll_ = value;
-        return;
-      }
-      eof_polls_ = idle_polls_ = 0;
-      out_buf_.push_back(value);
-      ++bytes_out_;
-      tx_free_at_ = (now > tx_free_at_ ? now : tx_free_at_) + cfg_.cycles_per_byte;
-      if (out_buf_.size() >= 65536 || (cfg_.interactive && value == '\n')) flush();
+      if (dlab) dll_ = value;
+      else send(value, now);
       return;
     case kRegIer:
       if (dlab) dlm_ = value;
@@ -103,6 +114,64 @@ void Uart::write(uint32_t offset, uint8_t value, uint64_t now) {
     case kRegLcr: lcr_ = value; return;
     case kRegScr: scr_ = value; return;
     default: return;
+  }
+}
+
+uint32_t Uart::read(uint32_t offset, uint64_t now) {
+  const UartLayout& l = cfg_.layout;
+  switch (l.kind) {
+    case UartKind::Ns16550: return read_ns16550(offset, now);
+    case UartKind::Litex:
+      switch (offset) {
+        case kLitexRxtx: {
+          const int c = take_rx(now);
+          return c < 0 ? 0 : static_cast<uint32_t>(c);
+        }
+        case kLitexTxfull: return tx_ready(now) ? 0 : 1;
+        case kLitexRxempty: return poll_rx(now) ? 0 : 1;
+        default: return 0;
+      }
+    case UartKind::Sifive:
+      switch (offset) {
+        case kSifiveTxdata: return tx_ready(now) ? 0 : kSifiveFlag;
+        case kSifiveRxdata: {
+          if (!poll_rx(now)) return kSifiveFlag;
+          return static_cast<uint32_t>(take_rx(now));
+        }
+        case kSifiveTxctrl: return sifive_txctrl_;
+        case kSifiveRxctrl: return sifive_rxctrl_;
+        case kSifiveDiv: return sifive_div_;
+        default: return 0;
+      }
+    case UartKind::Generic:
+      if (offset == l.status) return (tx_ready(now) ? l.tx_ready : 0) | (poll_rx(now) ? l.rx_ready : 0);
+      if (offset == l.data) {
+        const int c = take_rx(now);
+        return c < 0 ? 0 : static_cast<uint32_t>(c);
+      }
+      return 0;
+  }
+  return 0;
+}
+
+void Uart::write(uint32_t offset, uint32_t value, uint64_t now) {
+  const UartLayout& l = cfg_.layout;
+  switch (l.kind) {
+    case UartKind::Ns16550: write_ns16550(offset, static_cast<uint8_t>(value), now); return;
+    case UartKind::Litex:
+      if (offset == kLitexRxtx) send(static_cast<uint8_t>(value), now);
+      return;
+    case UartKind::Sifive:
+      switch (offset) {
+        case kSifiveTxdata: send(static_cast<uint8_t>(value), now); return;
+        case kSifiveTxctrl: sifive_txctrl_ = value; return;
+        case kSifiveRxctrl: sifive_rxctrl_ = value; return;
+        case kSifiveDiv: sifive_div_ = value; return;
+        default: return;
+      }
+    case UartKind::Generic:
+      if (offset == l.data) send(static_cast<uint8_t>(value), now);
+      return;
   }
 }
 

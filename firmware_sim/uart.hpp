@@ -1,11 +1,15 @@
-// NS16550A-style UART as seen by the firmware: data register at +0, line
-// status at +5, divisor latch behind LCR.DLAB so a real init sequence works,
-// every other register reads 0 and ignores writes. The host side is a pair of
-// file descriptors (stdin/stdout, files, or a pty master).
+// The board's UART as seen by the firmware, in one of four register
+// layouts (memory_map.hpp UartKind): NS16550A (data at +0, line status at +5,
+// divisor latch behind LCR.DLAB so a real init sequence works), LiteX CSR
+// UART, SiFive UART, or a generic data/status pair with masks. Registers not
+// described read 0 and ignore writes. The host side is a pair of file
+// descriptors (stdin/stdout, files, or a pty master).
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "memory_map.hpp"
 
 namespace fwsim {
 
@@ -16,7 +20,8 @@ class Uart {
     int out_fd = 1;
     bool interactive = false;        // pty: flush output eagerly
     uint64_t cycles_per_byte = 0;    // 0 = no pacing
-    uint64_t stall_polls = 2000000;  // LSR polls after input EOF before giving up
+    uint64_t stall_polls = 2000000;  // status polls after input EOF before giving up
+    UartLayout layout;               // register interface
   };
 
   explicit Uart(const Config& cfg) : cfg_(cfg) {}
@@ -25,8 +30,8 @@ class Uart {
   Uart& operator=(const Uart&) = delete;
 
   // `now` is the current simulated cycle, used only for baud pacing.
-  uint8_t read(uint32_t offset, uint64_t now);
-  void write(uint32_t offset, uint8_t value, uint64_t now);
+  uint32_t read(uint32_t offset, uint64_t now);
+  void write(uint32_t offset, uint32_t value, uint64_t now);
 
   bool stalled() const { return eof_polls_ >= cfg_.stall_polls; }
   bool io_error() const { return io_error_; }
@@ -38,6 +43,13 @@ class Uart {
  private:
   bool fill_input();  // true when at least one byte is buffered
   bool data_ready(uint64_t now);
+  // Kind-independent halves of the register behaviour.
+  bool poll_rx(uint64_t now);  // a status read: is a byte available?
+  int take_rx(uint64_t now);   // a data read: the byte, or -1 (none)
+  bool tx_ready(uint64_t now) const { return now >= tx_free_at_; }
+  void send(uint8_t value, uint64_t now);
+  uint8_t read_ns16550(uint32_t offset, uint64_t now);
+  void write_ns16550(uint32_t offset, uint8_t value, uint64_t now);
 
   Config cfg_;
   std::vector<uint8_t> in_buf_;
@@ -50,6 +62,7 @@ class Uart {
   uint64_t idle_polls_ = 0;     // LSR reads without data since the last data access
   std::vector<uint8_t> out_buf_;
   uint8_t lcr_ = 0, dll_ = 0, dlm_ = 0, scr_ = 0;
+  uint32_t sifive_txctrl_ = 0, sifive_rxctrl_ = 0, sifive_div_ = 0;
   uint64_t bytes_out_ = 0, bytes_in_ = 0;
   bool io_error_ = false;
 };

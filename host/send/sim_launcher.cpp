@@ -91,6 +91,10 @@ bool SimLauncher::start(const SimConfig& config, std::string& error) {
     args.push_back("--ram-size");
     args.push_back(config.ram_size);
   }
+  if (!config.board.empty()) {
+    args.push_back("--board");
+    args.push_back(config.board);
+  }
   args.push_back(config.firmware);
   if (!config.firmware_args.empty()) {
     args.push_back("--");

@@ -18,6 +18,7 @@ struct SimConfig {
   std::string firmware;   // ELF
   std::uint32_t baud = 0; // 0: no --baud (unpaced)
   std::string ram_size;   // --ram-size for the simulator ("" = its default, 4 MiB)
+  std::string board;      // --board FILE for the simulator ("" = its reference board)
   std::vector<std::string> firmware_args;  // after "--"
   int startup_timeout_ms = 10000;
   // When set: the whole command line, used as is (for helpers such as

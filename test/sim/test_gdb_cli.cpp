@@ -153,3 +153,79 @@ TEST_CASE("gdb option errors", "[cli][gdb][usage]") {
     CHECK(r.err.rfind("firmware-sim: error: --gdb", 0) == 0);
   }
 }
+
+namespace {
+std::string hex_text(const std::string& text) {
+  std::string out;
+  char b[3];
+  for (unsigned char c : text) {
+    std::snprintf(b, sizeof b, "%02x", c);
+    out += b;
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("gdb stub: monitor icount, monitor reset, CSR registers", "[cli][gdb]") {
+  StubSession s("spin");
+  CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 0, cycles: 0\n"));
+  CHECK(s.reply() == "OK");
+  CHECK(s.request("s") == "S05");
+  CHECK(s.request("s") == "S05");
+  CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 2, cycles: 2\n"));
+  CHECK(s.reply() == "OK");
+  CHECK(s.request("p20") == "08000080");  // pc after two instructions
+  CHECK(s.request("P5=78563412") == "OK");
+  CHECK(s.request("qRcmd," + hex_text("reset")) == "O" + hex_text("reset: pc 0x80000000\n"));
+  CHECK(s.reply() == "OK");
+  CHECK(s.request("p20") == "00000080");
+  CHECK(s.request("p5") == "00000000");
+  CHECK(s.request("qRcmd," + hex_text("icount")) == "O" + hex_text("instructions: 0, cycles: 0\n"));
+  CHECK(s.reply() == "OK");
+  // CSRs as gdb numbers them (65 + CSR), listed in the target description.
+  const std::string xml = s.request("qXfer:features:read:target.xml:0,3fff");
+  CHECK(xml.find("<reg name=\"mstatus\" bitsize=\"32\" type=\"int\" regnum=\"833\"/>") != std::string::npos);
+  CHECK(s.request("p381") == "00000000");  // mscratch (0x340)
+  CHECK(s.request("P381=efbeadde") == "OK");
+  CHECK(s.request("p381") == "efbeadde");
+  CHECK(s.request("pc43") == "00000000");  // instret (0xc02) after the reset
+  CHECK(s.request("p801") == "E01");       // CSR 0x7c0: not kept
+  const std::string help = s.request("qRcmd," + hex_text("frobnicate"));
+  CHECK(help.rfind("O" + hex_text("unknown monitor command 'frobnicate'"), 0) == 0);
+  CHECK(s.reply() == "OK");
+  s.send_raw("$k#6b");
+  CHECK(s.wait_status() == 8);
+}
+
+namespace {
+// The word at the hex little-endian address `pc_le` minus 4, as gdb reads it.
+uint32_t word_before(StubSession& s, const std::string& pc_le) {
+  const uint32_t pc = static_cast<uint32_t>(std::stoul(pc_le.substr(6, 2) + pc_le.substr(4, 2) + pc_le.substr(2, 2) +
+                                                       pc_le.substr(0, 2), nullptr, 16));
+  char req[32];
+  std::snprintf(req, sizeof req, "m%x,4", pc - 4);
+  const std::string w = s.request(req);
+  return static_cast<uint32_t>(std::stoul(w.substr(6, 2) + w.substr(4, 2) + w.substr(2, 2) + w.substr(0, 2), nullptr, 16));
+}
+}  // namespace
+
+TEST_CASE("gdb stub: write, read and access watchpoints", "[cli][gdb]") {
+  StubSession s("spin");
+  // Any store to RAM: the stop comes after the store, which is the word before pc.
+  CHECK(s.request("Z2,80000000,400000") == "OK");
+  const std::string w = s.request("c");
+  CHECK(w.rfind("T05watch:8", 0) == 0);
+  CHECK((word_before(s, s.request("p20")) & 0x7f) == 0x23);  // a store
+  CHECK(s.request("z2,80000000,400000") == "OK");
+  // Any load from RAM.
+  CHECK(s.request("Z3,80000000,400000") == "OK");
+  CHECK(s.request("c").rfind("T05rwatch:8", 0) == 0);
+  const uint32_t load = word_before(s, s.request("p20"));
+  CHECK(((load & 0x7f) == 0x03 || (load & 0x7f) == 0x07));  // lw.. or flw
+  CHECK(s.request("z3,80000000,400000") == "OK");
+  CHECK(s.request("Z4,80000000,400000") == "OK");
+  CHECK(s.request("c").rfind("T05awatch:8", 0) == 0);
+  CHECK(s.request("Z2,80000000,0") == "E01");
+  s.send_raw("$k#6b");
+  CHECK(s.wait_status() == 8);
+}

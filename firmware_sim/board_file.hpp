@@ -1,0 +1,27 @@
+// Board description files (boards/NAME.board, shared with the firmware
+// build): `key = value` lines giving the ISA, memory map, UART kind, halt
+// method and reset address of a target board. firmware-sim --board FILE
+// models that board.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "isa_subset.hpp"
+#include "memory_map.hpp"
+
+namespace fwsim {
+
+struct Board {
+  std::string name, mirrors;
+  IsaSpec isa;
+  uint32_t reset = 0;
+  MemoryMap map;                          // RAM, ROM, UART, halt
+  std::optional<uint32_t> uart_divisor;   // for the firmware's UART set-up
+};
+
+// Throws std::runtime_error("ORIGIN:LINE: reason") for a bad line, a
+// missing or repeated key, or a map whose regions overlap.
+Board parse_board_file(const std::string& text, const std::string& origin);
+
+}  // namespace fwsim
