@@ -17,6 +17,7 @@
 #include "render/general/eastray_view.hpp"
 #include "render/general/features.hpp"
 #include "render/general/tracer.hpp"
+#include "render/general/wide_bvh.hpp"
 
 namespace minrt::general {
 
@@ -56,6 +57,10 @@ class Renderer {
     // EASTRAY's meshes may go without their hierarchy (every ray then tests
     // every triangle: the same image, slower), as on a board short of room.
     if (!build_bvh<M>(scene, arena, bvh_) && scene.finish != model::Finish::kEastray) return false;
+    // Without room for the wide form the binary tree is walked: the same image.
+    if constexpr (kWideBvh) {
+      if (scene.finish != model::Finish::kEastray) build_wide_bvh(bvh_, arena, bvh_.wide);
+    }
     auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
     if (dirs == nullptr) return false;
     for (uint32_t i = 0; i < scene.light_count; ++i)

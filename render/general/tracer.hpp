@@ -18,6 +18,7 @@
 #include "render/general/intersect.hpp"
 #include "render/general/sampling.hpp"
 #include "render/general/solid_intersect.hpp"
+#include "render/general/wide_traversal.hpp"
 
 namespace minrt::general {
 
@@ -74,6 +75,14 @@ class Tracer {
       }
     }
     if (bvh_.node_count == 0) return;
+    if constexpr (kWideBvh) {
+      if (bvh_.wide.node_count != 0) {
+        wide_nearest(
+            bvh_.wide, ray, [&] { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
+            [&](uint32_t first, uint32_t count) { leaf(first, count, ray, eps, h); });
+        return;
+      }
+    }
     // Ordered traversal: both children's boxes are tested at the parent, the
     // nearer one is entered first and the farther one waits on the stack with
     // its entry distance, so it is dropped if a closer hit turns up first.
@@ -110,7 +119,7 @@ class Tracer {
           continue;
         }
       } else {
-        leaf(node, ray, eps, h);
+        leaf(node.index, node.count, ray, eps, h);
       }
       // Next waiting node that may still hold something closer.
       bool found = false;
@@ -126,9 +135,10 @@ class Tracer {
     }
   }
 
-  void leaf(const BvhNode<R>& node, const Ray<R>& ray, R eps, Hit<R>& h) const {
-    for (uint32_t k = 0; k < node.count; ++k) {
-      const uint32_t ref = bvh_.refs[node.index + k];
+  // References first .. first+count-1 of the BVH.
+  [[gnu::always_inline]] inline void leaf(uint32_t first, uint32_t count, const Ray<R>& ray, R eps, Hit<R>& h) const {
+    for (uint32_t k = 0; k < count; ++k) {
+      const uint32_t ref = bvh_.refs[first + k];
       if constexpr ((F & kSolids) != 0) {
         if ((ref & kSolidBit) != 0) {
           const uint32_t i = ref & ~kSolidBit;
@@ -191,6 +201,20 @@ class Tracer {
     if (bvh_.node_count == 0) return false;
     uint32_t* cached = light < kShadowCache ? &shadow_cache_[light] : nullptr;
     if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
+    if constexpr (kWideBvh) {
+      if (bvh_.wide.node_count != 0) {
+        return wide_any(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) {
+          for (uint32_t k = 0; k < count; ++k) {
+            const uint32_t ref = bvh_.refs[first + k];
+            if (blocks(ref, ray, eps, limit)) {
+              if (cached != nullptr) *cached = ref;
+              return true;
+            }
+          }
+          return false;
+        });
+      }
+    }
     const Vec3<R> inv = inverse_dir(ray.dir);
     uint32_t stack[kBvhStack];
     int top = 0;
