@@ -59,7 +59,8 @@ class Renderer {
     if (!build_bvh<M>(scene, arena, bvh_) && scene.finish != model::Finish::kEastray) return false;
     // Without room for the wide form the binary tree is walked: the same image.
     if constexpr (kWideBvh) {
-      if (scene.finish != model::Finish::kEastray) build_wide_bvh(bvh_, arena, bvh_.wide);
+      if (scene.finish != model::Finish::kEastray && build_wide_bvh(bvh_, arena, bvh_.wide))
+        build_sphere_lanes(scene, arena, bvh_);
     }
     auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
     if (dirs == nullptr) return false;

@@ -18,6 +18,7 @@
 #include "render/general/intersect.hpp"
 #include "render/general/sampling.hpp"
 #include "render/general/solid_intersect.hpp"
+#include "render/general/sphere_lanes.hpp"
 #include "render/general/wide_traversal.hpp"
 
 namespace minrt::general {
@@ -77,9 +78,17 @@ class Tracer {
     if (bvh_.node_count == 0) return;
     if constexpr (kWideBvh) {
       if (bvh_.wide.node_count != 0) {
+        const SphereLanes<R>& lanes = bvh_.wide.spheres;
         wide_nearest(
             bvh_.wide, ray, [&] { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
-            [&](uint32_t first, uint32_t count) { leaf(first, count, ray, eps, h); });
+            [&](uint32_t first, uint32_t count) {
+              if (lanes.r2 == nullptr) return leaf(first, count, ray, eps, h);
+              spheres_in_leaf<M>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) {
+                const uint32_t i = bvh_.refs[pos];
+                h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
+              });
+              if constexpr ((F & (kTriangles | kSolids)) != 0) leaf<false>(first, count, ray, eps, h);
+            });
         return;
       }
     }
@@ -135,7 +144,9 @@ class Tracer {
     }
   }
 
-  // References first .. first+count-1 of the BVH.
+  // References first .. first+count-1 of the BVH (their spheres too unless
+  // the caller has tested those).
+  template <bool kWithSpheres = true>
   [[gnu::always_inline]] inline void leaf(uint32_t first, uint32_t count, const Ray<R>& ray, R eps, Hit<R>& h) const {
     for (uint32_t k = 0; k < count; ++k) {
       const uint32_t ref = bvh_.refs[first + k];
@@ -160,6 +171,7 @@ class Tracer {
           continue;
         }
       }
+      if constexpr (!kWithSpheres) continue;
       const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
       if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
     }
@@ -203,9 +215,22 @@ class Tracer {
     if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
     if constexpr (kWideBvh) {
       if (bvh_.wide.node_count != 0) {
+        const SphereLanes<R>& lanes = bvh_.wide.spheres;
         return wide_any(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) {
+          if (lanes.r2 != nullptr) {
+            uint32_t blocker = kNoBlocker;
+            spheres_in_leaf<M>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) {
+              if (t < limit) blocker = pos;
+            });
+            if (blocker != kNoBlocker) {
+              if (cached != nullptr) *cached = bvh_.refs[blocker];
+              return true;
+            }
+            if constexpr ((F & (kTriangles | kSolids)) == 0) return false;
+          }
           for (uint32_t k = 0; k < count; ++k) {
             const uint32_t ref = bvh_.refs[first + k];
+            if (lanes.r2 != nullptr && (ref & (kTriangleBit | kSolidBit)) == 0) continue;
             if (blocks(ref, ray, eps, limit)) {
               if (cached != nullptr) *cached = ref;
               return true;

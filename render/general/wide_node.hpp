@@ -31,17 +31,35 @@ struct WideNode {
   uint32_t used;               // children 0 .. used-1 are set
 };
 
+// The spheres' centres and squared radii by position in the BVH's reference
+// array (sphere_lanes.hpp), so that a leaf's spheres load as vectors; other
+// primitives' positions hold a negative squared radius, which no ray meets.
+// Padded to whole vector groups.
+template <class R>
+struct SphereLanes {
+  const R* x = nullptr;
+  const R* y = nullptr;
+  const R* z = nullptr;
+  const R* r2 = nullptr;  // nullptr: not built
+};
+
 template <class R>
 struct WideBvh {
   const WideNode<R>* nodes = nullptr;
   uint32_t node_count = 0;  // 0: walk the binary tree
+  SphereLanes<R> spheres{};
 };
 
+// Sphere lane arrays hold this many positions past the last reference.
+inline constexpr uint32_t kSphereLanePad = 4;
+
 // Arena bytes of the wide tree over n primitives (no more nodes than the
-// binary tree has).
+// binary tree has) and its sphere lanes.
 template <class R>
 constexpr size_t wide_bvh_footprint(uint32_t n) {
-  return kWideBvh ? Arena::footprint<WideNode<R>>(2 * static_cast<size_t>(n) + 1) : 0;
+  return kWideBvh ? Arena::footprint<WideNode<R>>(2 * static_cast<size_t>(n) + 1) +
+                        4 * Arena::footprint<R>(static_cast<size_t>(n) + kSphereLanePad)
+                  : 0;
 }
 
 }  // namespace minrt::general
