@@ -5,7 +5,8 @@
 # and CPU seconds of each large scene of make_cs418_large.py (spheres,
 # spiral, chair; 800x800) on every core, one run each (--large-aa N renders
 # them with N samples a pixel instead of their own, for a quicker look).
-# Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--large-aa N] [--shared DIR]
+# --minrt PATH times another build of minrt (default build/release/host/minrt).
+# Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--large-aa N] [--shared DIR] [--minrt PATH]
 . "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -13,16 +14,17 @@ shared=$root/../shared
 runs=9
 large=0
 large_aa=
+minrt=$root/build/release/host/minrt
 while [ $# -gt 0 ]; do
   case $1 in
     --runs) runs=$2; shift 2 ;;
     --large) large=1; shift ;;
     --large-aa) large=1; large_aa=$2; shift 2 ;;
     --shared) shared=$2; shift 2 ;;
+    --minrt) minrt=$2; shift 2 ;;
     *) echo "cs418_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-minrt=$root/build/release/host/minrt
 [ -x "$minrt" ] || { echo "cs418_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -59,8 +59,10 @@ class Renderer {
     if (!build_bvh<M>(scene, arena, bvh_) && scene.finish != model::Finish::kEastray) return false;
     // Without room for the wide form the binary tree is walked: the same image.
     if constexpr (kWideBvh) {
-      if (scene.finish != model::Finish::kEastray && build_wide_bvh(bvh_, arena, bvh_.wide))
+      if (scene.finish != model::Finish::kEastray && build_wide_bvh(bvh_, arena, bvh_.wide)) {
         build_sphere_lanes(scene, arena, bvh_);
+        bvh_.wide.avx2 = cpu_has_avx2();
+      }
     }
     auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
     if (dirs == nullptr) return false;
@@ -86,6 +88,12 @@ class Renderer {
   // same image (tests).
   const CsgObjects<R>& objects() const { return objects_; }
   void drop_object_bvh() { objects_ = CsgObjects<R>{nullptr, nullptr, nullptr, 0}; }
+  // The binary tree's walk, or the wide one's with 16-byte vectors only,
+  // instead of the widest this CPU has: the same image (tests).
+  void drop_wide_bvh() { bvh_.wide = WideBvh<R>{}; }
+  void use_16_byte_vectors() { bvh_.wide.avx2 = false; }
+  bool wide_walk() const { return bvh_.wide.node_count != 0; }
+  bool avx2_walk() const { return bvh_.wide.node_count != 0 && bvh_.wide.avx2; }
 
   // One row of RGBA bytes (4 * width). Safe to call from several threads.
   void render_row(int y, uint8_t* rgba) const {

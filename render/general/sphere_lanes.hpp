@@ -1,5 +1,5 @@
 // Ray against a leaf's spheres a vector group at a time (wide_traversal.hpp's
-// 16-byte lanes). The vector part is hit_sphere's arithmetic up to the
+// lanes). The vector part is hit_sphere's arithmetic up to the
 // square root, operation for operation (plain + - * and compares, exact in
 // every lane), and rejects the spheres the ray misses; each remaining one is
 // finished in scalar code with the policy's square root, so a hit has the
@@ -50,13 +50,13 @@ bool build_sphere_lanes(const model::Scene<R>& scene, Arena& arena, Bvh<R>& tree
 
 // Calls `found(position, t)` for each sphere among positions first ..
 // first+count-1 that the ray meets beyond eps, with hit_sphere's distance.
-template <class M, class Found>
+template <class M, int kBytes, class Found>
 [[gnu::always_inline]] inline void spheres_in_leaf(const SphereLanes<typename M::real>& s, uint32_t first,
                                                    uint32_t count, const Ray<typename M::real>& ray,
                                                    typename M::real eps, Found found) {
   using R = typename M::real;
-  using V = Lanes<R>;
-  constexpr int kL = kLanes<R>;
+  using V = Lanes<R, kBytes>;
+  constexpr int kL = kLanes<R, kBytes>;
   const V zero{};
   const V ox = zero + ray.origin.x, oy = zero + ray.origin.y, oz = zero + ray.origin.z;
   const V dx = zero + ray.dir.x, dy = zero + ray.dir.y, dz = zero + ray.dir.z;

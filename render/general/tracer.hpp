@@ -18,6 +18,7 @@
 #include "render/general/intersect.hpp"
 #include "render/general/sampling.hpp"
 #include "render/general/solid_intersect.hpp"
+#include "render/general/simd_dispatch.hpp"
 #include "render/general/sphere_lanes.hpp"
 #include "render/general/wide_traversal.hpp"
 
@@ -78,18 +79,10 @@ class Tracer {
     if (bvh_.node_count == 0) return;
     if constexpr (kWideBvh) {
       if (bvh_.wide.node_count != 0) {
-        const SphereLanes<R>& lanes = bvh_.wide.spheres;
-        wide_nearest(
-            bvh_.wide, ray, [&] { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
-            [&](uint32_t first, uint32_t count) {
-              if (lanes.r2 == nullptr) return leaf(first, count, ray, eps, h);
-              spheres_in_leaf<M>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) {
-                const uint32_t i = bvh_.refs[pos];
-                h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
-              });
-              if constexpr ((F & (kTriangles | kSolids)) != 0) leaf<false>(first, count, ray, eps, h);
-            });
-        return;
+#if MINRT_AVX2_DISPATCH
+        if (bvh_.wide.avx2) return nearest_wide_avx2(ray, eps, h);
+#endif
+        return nearest_wide<16>(ray, eps, h);
       }
     }
     // Ordered traversal: both children's boxes are tested at the parent, the
@@ -177,6 +170,59 @@ class Tracer {
     }
   }
 
+  // The wide tree's walks (wide_traversal.hpp) with vectors of kBytes; the
+  // AVX2 copies are the same code compiled for AVX2 (simd_dispatch.hpp).
+  template <int kBytes>
+  [[gnu::always_inline]] inline void nearest_wide(const Ray<R>& ray, R eps, Hit<R>& h) const {
+    const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    wide_nearest<kBytes>(
+        bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
+        [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
+          if (lanes.r2 == nullptr) return leaf(first, count, ray, eps, h);
+          spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+            const uint32_t i = bvh_.refs[pos];
+            h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
+          });
+          if constexpr ((F & (kTriangles | kSolids)) != 0) leaf<false>(first, count, ray, eps, h);
+        });
+  }
+
+  template <int kBytes>
+  [[gnu::always_inline]] inline bool occluded_wide(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
+    const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    return wide_any<kBytes>(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
+      if (lanes.r2 != nullptr) {
+        uint32_t blocker = kNoBlocker;
+        spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+          if (t < limit) blocker = pos;
+        });
+        if (blocker != kNoBlocker) {
+          if (cached != nullptr) *cached = bvh_.refs[blocker];
+          return true;
+        }
+        if constexpr ((F & (kTriangles | kSolids)) == 0) return false;
+      }
+      for (uint32_t k = 0; k < count; ++k) {
+        const uint32_t ref = bvh_.refs[first + k];
+        if (lanes.r2 != nullptr && (ref & (kTriangleBit | kSolidBit)) == 0) continue;
+        if (blocks(ref, ray, eps, limit)) {
+          if (cached != nullptr) *cached = ref;
+          return true;
+        }
+      }
+      return false;
+    });
+  }
+
+#if MINRT_AVX2_DISPATCH
+  MINRT_TARGET_AVX2 void nearest_wide_avx2(const Ray<R>& ray, R eps, Hit<R>& h) const {
+    nearest_wide<kAvx2Bytes<R>>(ray, eps, h);
+  }
+  MINRT_TARGET_AVX2 bool occluded_wide_avx2(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
+    return occluded_wide<kAvx2Bytes<R>>(ray, eps, limit, cached);
+  }
+#endif
+
   // Is anything between eps and `limit` along the ray? (Shadow rays.)
   // Does the primitive `ref` (a BVH reference) block the ray before `limit`?
   bool blocks(uint32_t ref, const Ray<R>& ray, R eps, R limit) const {
@@ -215,29 +261,10 @@ class Tracer {
     if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
     if constexpr (kWideBvh) {
       if (bvh_.wide.node_count != 0) {
-        const SphereLanes<R>& lanes = bvh_.wide.spheres;
-        return wide_any(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) {
-          if (lanes.r2 != nullptr) {
-            uint32_t blocker = kNoBlocker;
-            spheres_in_leaf<M>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) {
-              if (t < limit) blocker = pos;
-            });
-            if (blocker != kNoBlocker) {
-              if (cached != nullptr) *cached = bvh_.refs[blocker];
-              return true;
-            }
-            if constexpr ((F & (kTriangles | kSolids)) == 0) return false;
-          }
-          for (uint32_t k = 0; k < count; ++k) {
-            const uint32_t ref = bvh_.refs[first + k];
-            if (lanes.r2 != nullptr && (ref & (kTriangleBit | kSolidBit)) == 0) continue;
-            if (blocks(ref, ray, eps, limit)) {
-              if (cached != nullptr) *cached = ref;
-              return true;
-            }
-          }
-          return false;
-        });
+#if MINRT_AVX2_DISPATCH
+        if (bvh_.wide.avx2) return occluded_wide_avx2(ray, eps, limit, cached);
+#endif
+        return occluded_wide<16>(ray, eps, limit, cached);
       }
     }
     const Vec3<R> inv = inverse_dir(ray.dir);

@@ -48,6 +48,7 @@ struct WideBvh {
   const WideNode<R>* nodes = nullptr;
   uint32_t node_count = 0;  // 0: walk the binary tree
   SphereLanes<R> spheres{};
+  bool avx2 = false;  // walk with the AVX2 copy (simd_dispatch.hpp)
 };
 
 // Sphere lane arrays hold this many positions past the last reference.

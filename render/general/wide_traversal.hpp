@@ -11,35 +11,37 @@
 
 namespace minrt::general {
 
-// 16 bytes of values side by side (two doubles, four floats): a GCC/Clang
-// vector, which the compiler maps to one SSE2 register on any x86-64 and to
-// scalar code where there is none. A node's four boxes are tested in
-// kWideArity / kLanes such groups. Only passed by reference: a vector by
-// value would depend on the target's ABI.
-template <class R>
+// kBytes of values side by side (16: two doubles or four floats; 32: four
+// doubles): a GCC/Clang vector, which the compiler maps to the target's
+// vector registers (16 bytes: one SSE2 register on any x86-64; 32: one AVX
+// register, in code compiled for AVX2, simd_dispatch.hpp) or to scalar code
+// where there are none. A node's four boxes are tested in groups of
+// kLanes. Only passed by reference: a vector by value would depend on the
+// target's ABI.
+template <class R, int kBytes>
 struct LanesOf {
-  typedef R type __attribute__((vector_size(16)));
+  typedef R type __attribute__((vector_size(kBytes)));
 };
-template <class R>
-using Lanes = typename LanesOf<R>::type;
-template <class R>
-inline constexpr int kLanes = static_cast<int>(16 / sizeof(R));
-static_assert(kWideArity % kLanes<double> == 0 && kWideArity % kLanes<float> == 0, "whole groups per node");
+template <class R, int kBytes>
+using Lanes = typename LanesOf<R, kBytes>::type;
+template <class R, int kBytes>
+inline constexpr int kLanes = kBytes / static_cast<int>(sizeof(R));
+static_assert(kWideArity % kLanes<float, 16> == 0 && kWideArity % kLanes<double, 32> == 0, "whole groups per node");
 
 // A ray as the box test wants it: for each axis, which bound it meets first
 // (by the sign of the direction), and origin and 1/d in every lane.
-template <class R>
+template <class R, int kBytes>
 struct WideRay {
-  Lanes<R> origin[3];
-  Lanes<R> inv[3];
+  Lanes<R, kBytes> origin[3];
+  Lanes<R, kBytes> inv[3];
   bool negative[3];
 
   [[gnu::always_inline]] explicit WideRay(const Ray<R>& ray) {
     const Vec3<R> d = inverse_dir(ray.dir);
     const R o[3] = {ray.origin.x, ray.origin.y, ray.origin.z}, i[3] = {d.x, d.y, d.z};
     for (int a = 0; a < 3; ++a) {
-      origin[a] = Lanes<R>{} + o[a];
-      inv[a] = Lanes<R>{} + i[a];
+      origin[a] = Lanes<R, kBytes>{} + o[a];
+      inv[a] = Lanes<R, kBytes>{} + i[a];
       negative[a] = i[a] < R(0);
     }
   }
@@ -51,11 +53,11 @@ struct WideRay {
 // box_entry: for a positive 1/d the low bound gives the smaller distance, so
 // picking the bound by the sign replaces the min/max of the two, and
 // starting from [0, limit] replaces the clamp and the limit test.
-template <class R>
-[[gnu::always_inline]] inline uint32_t wide_entry(const WideNode<R>& n, const WideRay<R>& r, R limit,
+template <class R, int kBytes>
+[[gnu::always_inline]] inline uint32_t wide_entry(const WideNode<R>& n, const WideRay<R, kBytes>& r, R limit,
                                                   R (&entry)[kWideArity]) {
-  using V = Lanes<R>;
-  constexpr int kL = kLanes<R>;
+  using V = Lanes<R, kBytes>;
+  constexpr int kL = kLanes<R, kBytes>;
   uint32_t mask = 0;
   for (int g = 0; g < kWideArity; g += kL) {
     V tmin{}, tmax = V{} + limit;
@@ -80,9 +82,9 @@ template <class R>
 // lower it. The children a ray meets are pushed farthest first, so the
 // nearest is taken next and the others are dropped when a closer hit has
 // turned up by the time they come off the stack.
-template <class R, class Limit, class Leaf>
+template <int kBytes, class R, class Limit, class Leaf>
 [[gnu::always_inline]] inline void wide_nearest(const WideBvh<R>& tree, const Ray<R>& ray, Limit limit, Leaf leaf) {
-  const WideRay<R> r(ray);
+  const WideRay<R, kBytes> r(ray);
   struct Entry {
     uint32_t child;
     uint32_t count;
@@ -125,9 +127,9 @@ template <class R, class Limit, class Leaf>
 
 // Any-hit walk for shadow rays: `leaf(first, count)` says whether one of
 // those references blocks the ray before `limit`.
-template <class R, class Leaf>
+template <int kBytes, class R, class Leaf>
 [[gnu::always_inline]] inline bool wide_any(const WideBvh<R>& tree, const Ray<R>& ray, R limit, Leaf leaf) {
-  const WideRay<R> r(ray);
+  const WideRay<R, kBytes> r(ray);
   struct Entry {
     uint32_t child;
     uint32_t count;
