@@ -79,9 +79,9 @@ template <class R, int kBytes>
 
 // Nearest-hit walk. `limit()` is the distance of the best hit so far;
 // `leaf(first, count)` tests references first .. first+count-1 and may
-// lower it. The children a ray meets are pushed farthest first, so the
-// nearest is taken next and the others are dropped when a closer hit has
-// turned up by the time they come off the stack.
+// lower it. A single child met is entered at once; several are pushed
+// farthest first, so the nearest is taken next and the others are dropped
+// when a closer hit has turned up by the time they come off the stack.
 template <int kBytes, class R, class Limit, class Leaf>
 [[gnu::always_inline]] inline void wide_nearest(const WideBvh<R>& tree, const Ray<R>& ray, Limit limit, Leaf leaf) {
   const WideRay<R, kBytes> r(ray);
@@ -97,18 +97,27 @@ template <int kBytes, class R, class Limit, class Leaf>
     const WideNode<R>& node = tree.nodes[current];
     R entry[kWideArity];
     uint32_t mask = wide_entry(node, r, limit(), entry);
-    // Insert the met children in order of decreasing entry distance.
-    const int base = top;
-    while (mask != 0) {
+    if (mask != 0 && (mask & (mask - 1)) == 0) {
       const int k = __builtin_ctz(mask);
-      mask &= mask - 1;
-      const Entry e{node.child[k], node.count[k], entry[k]};
-      int i = top++;
-      while (i > base && stack[i - 1].t < e.t) {
-        stack[i] = stack[i - 1];
-        --i;
+      if (node.count[k] == 0) {
+        current = node.child[k];
+        continue;
       }
-      stack[i] = e;
+      leaf(node.child[k], node.count[k]);
+    } else {
+      // Insert the met children in order of decreasing entry distance.
+      const int base = top;
+      while (mask != 0) {
+        const int k = __builtin_ctz(mask);
+        mask &= mask - 1;
+        const Entry e{node.child[k], node.count[k], entry[k]};
+        int i = top++;
+        while (i > base && stack[i - 1].t < e.t) {
+          stack[i] = stack[i - 1];
+          --i;
+        }
+        stack[i] = e;
+      }
     }
     bool descend = false;
     while (top > 0) {
@@ -126,30 +135,26 @@ template <int kBytes, class R, class Limit, class Leaf>
 }
 
 // Any-hit walk for shadow rays: `leaf(first, count)` says whether one of
-// those references blocks the ray before `limit`.
+// those references blocks the ray before `limit`. Leaves are tested as
+// soon as their box is met; inner children wait on the stack.
 template <int kBytes, class R, class Leaf>
 [[gnu::always_inline]] inline bool wide_any(const WideBvh<R>& tree, const Ray<R>& ray, R limit, Leaf leaf) {
   const WideRay<R, kBytes> r(ray);
-  struct Entry {
-    uint32_t child;
-    uint32_t count;
-  };
-  Entry stack[kWideStack];
+  uint32_t stack[kWideStack];
   int top = 0;
-  stack[top++] = Entry{0, 0};
+  stack[top++] = 0;
   while (top > 0) {
-    const Entry e = stack[--top];
-    if (e.count != 0) {
-      if (leaf(e.child, e.count)) return true;
-      continue;
-    }
-    const WideNode<R>& node = tree.nodes[e.child];
+    const WideNode<R>& node = tree.nodes[stack[--top]];
     R entry[kWideArity];
     uint32_t mask = wide_entry(node, r, limit, entry);
     while (mask != 0) {
       const int k = __builtin_ctz(mask);
       mask &= mask - 1;
-      stack[top++] = Entry{node.child[k], node.count[k]};
+      if (node.count[k] == 0) {
+        stack[top++] = node.child[k];
+      } else if (leaf(node.child[k], node.count[k])) {
+        return true;
+      }
     }
   }
   return false;
