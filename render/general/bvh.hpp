@@ -60,7 +60,9 @@ struct Bvh {
   const BvhNode<R>* nodes = nullptr;
   const uint32_t* refs = nullptr;  // sphere index, triangle index | kTriangleBit, solid index | kSolidBit
   uint32_t node_count = 0;
-  WideBvh<R> wide{};  // the same tree four-wide, where it is built (wide_bvh.hpp)
+  // The same tree four-wide (wide_bvh.hpp) where it is built; elsewhere an
+  // empty member, so that the board's layout has nothing more.
+  [[no_unique_address]] WideSlot<R> wide{};
 };
 
 namespace bvh_detail {

@@ -90,10 +90,18 @@ class Renderer {
   void drop_object_bvh() { objects_ = CsgObjects<R>{nullptr, nullptr, nullptr, 0}; }
   // The binary tree's walk, or the wide one's with 16-byte vectors only,
   // instead of the widest this CPU has: the same image (tests).
-  void drop_wide_bvh() { bvh_.wide = WideBvh<R>{}; }
-  void use_16_byte_vectors() { bvh_.wide.avx2 = false; }
-  bool wide_walk() const { return bvh_.wide.node_count != 0; }
-  bool avx2_walk() const { return bvh_.wide.node_count != 0 && bvh_.wide.avx2; }
+  void drop_wide_bvh() { bvh_.wide = WideSlot<R>{}; }
+  void use_16_byte_vectors() {
+    if constexpr (kWideBvh) bvh_.wide.avx2 = false;
+  }
+  bool wide_walk() const {
+    if constexpr (kWideBvh) return bvh_.wide.node_count != 0;
+    return false;
+  }
+  bool avx2_walk() const {
+    if constexpr (kWideBvh) return bvh_.wide.node_count != 0 && bvh_.wide.avx2;
+    return false;
+  }
 
   // One row of RGBA bytes (4 * width). Safe to call from several threads.
   void render_row(int y, uint8_t* rgba) const {

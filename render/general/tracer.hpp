@@ -121,7 +121,7 @@ class Tracer {
           continue;
         }
       } else {
-        leaf(node.index, node.count, ray, eps, h);
+        leaf(node, ray, eps, h);
       }
       // Next waiting node that may still hold something closer.
       bool found = false;
@@ -137,10 +137,41 @@ class Tracer {
     }
   }
 
-  // References first .. first+count-1 of the BVH (their spheres too unless
-  // the caller has tested those).
-  template <bool kWithSpheres = true>
-  [[gnu::always_inline]] inline void leaf(uint32_t first, uint32_t count, const Ray<R>& ray, R eps, Hit<R>& h) const {
+  void leaf(const BvhNode<R>& node, const Ray<R>& ray, R eps, Hit<R>& h) const {
+    for (uint32_t k = 0; k < node.count; ++k) {
+      const uint32_t ref = bvh_.refs[node.index + k];
+      if constexpr ((F & kSolids) != 0) {
+        if ((ref & kSolidBit) != 0) {
+          const uint32_t i = ref & ~kSolidBit;
+          uint8_t part = 0;
+          const R t = hit_solid<M>(s_.solids[i], ray, eps, part);
+          if (t > eps && h.offer(t, HitKind::kSolid, i, s_.solids[i].order)) h.part = part;
+          continue;
+        }
+      }
+      if constexpr ((F & kTriangles) != 0) {
+        if ((ref & kTriangleBit) != 0) {
+          const uint32_t i = ref & ~kTriangleBit;
+          R b1, b2;
+          const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
+          if (t > eps && h.offer(t, HitKind::kTriangle, i, s_.triangles[i].order)) {
+            h.b1 = b1;
+            h.b2 = b2;
+          }
+          continue;
+        }
+      }
+      const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+      if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
+    }
+  }
+
+  // References first .. first+count-1 for the wide walk: leaf()'s tests,
+  // and its spheres too unless the caller has tested them by vector group.
+  // (leaf() stays as it is: it is the board's code, whose counts are measured.)
+  template <bool kWithSpheres>
+  [[gnu::always_inline]] inline void leaf_refs(uint32_t first, uint32_t count, const Ray<R>& ray, R eps,
+                                               Hit<R>& h) const {
     for (uint32_t k = 0; k < count; ++k) {
       const uint32_t ref = bvh_.refs[first + k];
       if constexpr ((F & kSolids) != 0) {
@@ -164,9 +195,10 @@ class Tracer {
           continue;
         }
       }
-      if constexpr (!kWithSpheres) continue;
-      const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
-      if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
+      if constexpr (kWithSpheres) {
+        const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+        if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
+      }
     }
   }
 
@@ -178,12 +210,12 @@ class Tracer {
     wide_nearest<kBytes>(
         bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
-          if (lanes.r2 == nullptr) return leaf(first, count, ray, eps, h);
+          if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
           spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
             const uint32_t i = bvh_.refs[pos];
             h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
           });
-          if constexpr ((F & (kTriangles | kSolids)) != 0) leaf<false>(first, count, ray, eps, h);
+          if constexpr ((F & (kTriangles | kSolids)) != 0) leaf_refs<false>(first, count, ray, eps, h);
         });
   }
 

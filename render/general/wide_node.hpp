@@ -51,6 +51,20 @@ struct WideBvh {
   bool avx2 = false;  // walk with the AVX2 copy (simd_dispatch.hpp)
 };
 
+// What Bvh keeps of the wide tree: the tree on the hosts that build it,
+// nothing on the others.
+struct NoWideBvh {};
+template <class R, bool kBuilt = kWideBvh>
+struct WideSlotOf {
+  using type = WideBvh<R>;
+};
+template <class R>
+struct WideSlotOf<R, false> {
+  using type = NoWideBvh;
+};
+template <class R>
+using WideSlot = typename WideSlotOf<R>::type;
+
 // Sphere lane arrays hold this many positions past the last reference.
 inline constexpr uint32_t kSphereLanePad = 4;
 
