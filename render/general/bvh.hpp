@@ -16,8 +16,9 @@ namespace minrt::general {
 inline constexpr int kBvhMaxDepth = 60;     // the traversal stack holds one entry per level
 inline constexpr int kBvhStack = kBvhMaxDepth + 4;
 // The wide tree's (wide_node.hpp): each visit pops one entry and pushes at
-// most four, three more per level.
-inline constexpr int kWideStack = 3 * kBvhMaxDepth + 8;
+// most four, three more per level, and the binary tree, whose depth bounds
+// the wide one's, is never deeper than its build stack.
+inline constexpr int kWideStack = 3 * kBvhStack + 4;
 inline constexpr int kBvhLeafSize = 4;
 inline constexpr int kBvhBins = 12;
 inline constexpr uint32_t kTriangleBit = 0x80000000u;  // in a primitive reference
