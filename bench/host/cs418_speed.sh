@@ -1,24 +1,30 @@
 #!/usr/bin/env bash
 # CS418 speed on the host: ray-many (256x256, 10,000 spheres) parse, BVH and
 # render times as medians of interleaved runs (specialised path, every
-# feature compiled in, one thread, all threads), and with --large the
-# 800x800, 10,000-sphere, aa 40, bounces 16 scene of make_cs418_large.py.
-# Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--shared DIR]
+# feature compiled in, one thread, all threads), and with --large the wall
+# and CPU seconds of each large scene of make_cs418_large.py (spheres,
+# spiral, chair; 800x800) on every core, one run each (--large-aa N renders
+# them with N samples a pixel instead of their own, for a quicker look).
+# --minrt PATH times another build of minrt (default build/release/host/minrt).
+# Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--large-aa N] [--shared DIR] [--minrt PATH]
 . "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 shared=$root/../shared
 runs=9
 large=0
+large_aa=
+minrt=$root/build/release/host/minrt
 while [ $# -gt 0 ]; do
   case $1 in
     --runs) runs=$2; shift 2 ;;
     --large) large=1; shift ;;
+    --large-aa) large=1; large_aa=$2; shift 2 ;;
     --shared) shared=$2; shift 2 ;;
+    --minrt) minrt=$2; shift 2 ;;
     *) echo "cs418_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
-minrt=$root/build/release/host/minrt
 [ -x "$minrt" ] || { echo "cs418_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -49,7 +55,12 @@ for v in "${variants[@]}"; do
   printf '  %-18s %8.4f %8.4f %8.4f %8.4f\n' "$name" "$p" "$b" "$r" "$(awk -v a="$p" -v b="$b" -v c="$r" 'BEGIN{print a+b+c}')"
 done
 if [ "$large" = 1 ]; then
-  python3 "$root/bench/host/make_cs418_large.py" > "$work/large.txt"
-  echo "large 800x800, 10,000 spheres, aa 40, bounces 16, all threads:"
-  "$minrt" --stats "$work/large.txt" -o "$work/large.png" 2>&1 | sed 's/^/  /'
+  echo "large scenes, 800x800, every core (wall and CPU = user + system seconds):"
+  for name in spheres spiral chair; do
+    python3 "$root/bench/host/make_cs418_large.py" "$name" ${large_aa:+--aa "$large_aa"} > "$work/$name.txt"
+    aa=$(sed -n 's/^aa //p' "$work/$name.txt")
+    /usr/bin/time -f '%e %U %S' -o "$work/time" "$minrt" "$work/$name.txt" -o "$work/$name.png"
+    read -r wall user sys < "$work/time"
+    printf '  %-8s aa %-3s wall %7.2f s  CPU %7.2f s\n' "$name" "$aa" "$wall" "$(awk -v u="$user" -v s="$sys" 'BEGIN{print u+s}')"
+  done
 fi

@@ -9,11 +9,16 @@
 #include "core/base/arena.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/intersect.hpp"
+#include "render/general/wide_node.hpp"
 
 namespace minrt::general {
 
 inline constexpr int kBvhMaxDepth = 60;     // the traversal stack holds one entry per level
 inline constexpr int kBvhStack = kBvhMaxDepth + 4;
+// The wide tree's (wide_node.hpp): each visit pops one entry and pushes at
+// most four, three more per level, and the binary tree, whose depth bounds
+// the wide one's, is never deeper than its build stack.
+inline constexpr int kWideStack = 3 * kBvhStack + 4;
 inline constexpr int kBvhLeafSize = 4;
 inline constexpr int kBvhBins = 12;
 inline constexpr uint32_t kTriangleBit = 0x80000000u;  // in a primitive reference
@@ -56,6 +61,9 @@ struct Bvh {
   const BvhNode<R>* nodes = nullptr;
   const uint32_t* refs = nullptr;  // sphere index, triangle index | kTriangleBit, solid index | kSolidBit
   uint32_t node_count = 0;
+  // The same tree four-wide (wide_bvh.hpp) where it is built; elsewhere an
+  // empty member, so that the board's layout has nothing more.
+  [[no_unique_address]] WideSlot<R> wide{};
 };
 
 namespace bvh_detail {
@@ -111,11 +119,12 @@ Bounds<R> bounds_of(const model::Scene<R>& s, uint32_t ref) {
 
 }  // namespace bvh_detail
 
-// Arena bytes the BVH of n primitives may take (for sizing before the build).
+// Arena bytes the BVH of n primitives may take (for sizing before the build),
+// its wide form included where it is built.
 template <class R>
 constexpr size_t bvh_footprint(uint32_t n) {
   return Arena::footprint<BvhNode<R>>(2 * static_cast<size_t>(n) + 1) + Arena::footprint<uint32_t>(n) +
-         Arena::footprint<Bounds<R>>(n) + Arena::footprint<Vec3<R>>(n);
+         Arena::footprint<Bounds<R>>(n) + Arena::footprint<Vec3<R>>(n) + wide_bvh_footprint<R>(n);
 }
 
 // Builds over n items: `item(i, ref, box)` gives the i-th item's reference

@@ -18,6 +18,8 @@
 #include "render/general/eastray_view.hpp"
 #include "render/general/features.hpp"
 #include "render/general/phong_shading.hpp"
+#include "render/general/tracer.hpp"
+#include "render/general/wide_bvh.hpp"
 
 namespace minrt::general {
 
@@ -61,6 +63,13 @@ class Renderer {
     // EASTRAY's meshes may go without their hierarchy (every ray then tests
     // every triangle: the same image, slower), as on a board short of room.
     if (!build_bvh<M>(scene, arena, bvh_) && (features_ & kEastray) == 0) return false;
+    // Without room for the wide form the binary tree is walked: the same image.
+    if constexpr (kWideBvh) {
+      if ((features_ & kEastray) == 0 && build_wide_bvh(bvh_, arena, bvh_.wide)) {
+        build_sphere_lanes(scene, arena, bvh_);
+        bvh_.wide.avx2 = cpu_has_avx2();
+      }
+    }
     auto* dirs = arena.alloc_zeroed<Vec3<R>>(scene.light_count > 0 ? scene.light_count : 1);
     if (dirs == nullptr) return false;
     for (uint32_t i = 0; i < scene.light_count; ++i)
@@ -86,6 +95,20 @@ class Renderer {
   // same image (tests).
   const CsgObjects<R>& objects() const { return objects_; }
   void drop_object_bvh() { objects_ = CsgObjects<R>{nullptr, nullptr, nullptr, 0}; }
+  // The binary tree's walk, or the wide one's with 16-byte vectors only,
+  // instead of the widest this CPU has: the same image (tests).
+  void drop_wide_bvh() { bvh_.wide = WideSlot<R>{}; }
+  void use_16_byte_vectors() {
+    if constexpr (kWideBvh) bvh_.wide.avx2 = false;
+  }
+  bool wide_walk() const {
+    if constexpr (kWideBvh) return bvh_.wide.node_count != 0;
+    return false;
+  }
+  bool avx2_walk() const {
+    if constexpr (kWideBvh) return bvh_.wide.node_count != 0 && bvh_.wide.avx2;
+    return false;
+  }
 
   // One row of RGBA bytes (4 * width). Safe to call from several threads.
   void render_row(int y, uint8_t* rgba) const {

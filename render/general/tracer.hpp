@@ -15,6 +15,9 @@
 #include "render/general/features.hpp"
 #include "render/general/intersect.hpp"
 #include "render/general/solid_intersect.hpp"
+#include "render/general/simd_dispatch.hpp"
+#include "render/general/sphere_lanes.hpp"
+#include "render/general/wide_traversal.hpp"
 
 namespace minrt::general {
 
@@ -57,6 +60,14 @@ class TracerCore {
       }
     }
     if (bvh_.node_count == 0) return;
+    if constexpr (kWideBvh) {
+      if (bvh_.wide.node_count != 0) {
+#if MINRT_AVX2_DISPATCH
+        if (bvh_.wide.avx2) return nearest_wide_avx2(ray, eps, h);
+#endif
+        return nearest_wide<16>(ray, eps, h);
+      }
+    }
     // Ordered traversal: both children's boxes are tested at the parent, the
     // nearer one is entered first and the farther one waits on the stack with
     // its entry distance, so it is dropped if a closer hit turns up first.
@@ -138,6 +149,95 @@ class TracerCore {
     }
   }
 
+  // References first .. first+count-1 for the wide walk: leaf()'s tests,
+  // and its spheres too unless the caller has tested them by vector group.
+  // (leaf() stays as it is: it is the board's code, whose counts are measured.)
+  template <bool kWithSpheres>
+  [[gnu::always_inline]] inline void leaf_refs(uint32_t first, uint32_t count, const Ray<R>& ray, R eps,
+                                               Hit<R>& h) const {
+    for (uint32_t k = 0; k < count; ++k) {
+      const uint32_t ref = bvh_.refs[first + k];
+      if constexpr ((F & kSolids) != 0) {
+        if ((ref & kSolidBit) != 0) {
+          const uint32_t i = ref & ~kSolidBit;
+          uint8_t part = 0;
+          const R t = hit_solid<M>(s_.solids[i], ray, eps, part);
+          if (t > eps && h.offer(t, HitKind::kSolid, i, s_.solids[i].order)) h.part = part;
+          continue;
+        }
+      }
+      if constexpr ((F & kTriangles) != 0) {
+        if ((ref & kTriangleBit) != 0) {
+          const uint32_t i = ref & ~kTriangleBit;
+          R b1, b2;
+          const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
+          if (t > eps && h.offer(t, HitKind::kTriangle, i, s_.triangles[i].order)) {
+            h.b1 = b1;
+            h.b2 = b2;
+          }
+          continue;
+        }
+      }
+      if constexpr (kWithSpheres) {
+        const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
+        if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
+      }
+    }
+  }
+
+  // The wide tree's walks (wide_traversal.hpp) with vectors of kBytes; the
+  // AVX2 copies are the same code compiled for AVX2 (simd_dispatch.hpp).
+  template <int kBytes>
+  [[gnu::always_inline]] inline void nearest_wide(const Ray<R>& ray, R eps, Hit<R>& h) const {
+    const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    wide_nearest<kBytes>(
+        bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
+        [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
+          if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
+          spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+            const uint32_t i = bvh_.refs[pos];
+            h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
+          });
+          if constexpr ((F & (kTriangles | kSolids)) != 0) leaf_refs<false>(first, count, ray, eps, h);
+        });
+  }
+
+  template <int kBytes>
+  [[gnu::always_inline]] inline bool occluded_wide(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
+    const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    return wide_any<kBytes>(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
+      if (lanes.r2 != nullptr) {
+        uint32_t blocker = kNoBlocker;
+        spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+          if (t < limit) blocker = pos;
+        });
+        if (blocker != kNoBlocker) {
+          if (cached != nullptr) *cached = bvh_.refs[blocker];
+          return true;
+        }
+        if constexpr ((F & (kTriangles | kSolids)) == 0) return false;
+      }
+      for (uint32_t k = 0; k < count; ++k) {
+        const uint32_t ref = bvh_.refs[first + k];
+        if (lanes.r2 != nullptr && (ref & (kTriangleBit | kSolidBit)) == 0) continue;
+        if (blocks(ref, ray, eps, limit)) {
+          if (cached != nullptr) *cached = ref;
+          return true;
+        }
+      }
+      return false;
+    });
+  }
+
+#if MINRT_AVX2_DISPATCH
+  MINRT_TARGET_AVX2 void nearest_wide_avx2(const Ray<R>& ray, R eps, Hit<R>& h) const {
+    nearest_wide<kAvx2Bytes<R>>(ray, eps, h);
+  }
+  MINRT_TARGET_AVX2 bool occluded_wide_avx2(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
+    return occluded_wide<kAvx2Bytes<R>>(ray, eps, limit, cached);
+  }
+#endif
+
   // Is anything between eps and `limit` along the ray? (Shadow rays.)
   // Does the primitive `ref` (a BVH reference) block the ray before `limit`?
   bool blocks(uint32_t ref, const Ray<R>& ray, R eps, R limit) const {
@@ -174,6 +274,14 @@ class TracerCore {
     if (bvh_.node_count == 0) return false;
     uint32_t* cached = light < kShadowCache ? &shadow_cache_[light] : nullptr;
     if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
+    if constexpr (kWideBvh) {
+      if (bvh_.wide.node_count != 0) {
+#if MINRT_AVX2_DISPATCH
+        if (bvh_.wide.avx2) return occluded_wide_avx2(ray, eps, limit, cached);
+#endif
+        return occluded_wide<16>(ray, eps, limit, cached);
+      }
+    }
     const Vec3<R> inv = inverse_dir(ray.dir);
     uint32_t stack[kBvhStack];
     int top = 0;

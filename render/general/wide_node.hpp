@@ -1,0 +1,80 @@
+// The nodes of a four-wide bounding-volume hierarchy, collapsed from the
+// binary one (wide_bvh.hpp): each node keeps its four children's boxes side
+// by side, one array per bound and axis, so that one ray is tested against
+// all four in a single pass of the same arithmetic, which the compiler turns
+// into vector instructions (two doubles per SSE2 instruction on every
+// x86-64). The leaves are the binary tree's: ranges of its reference array.
+// Built on 64-bit hosts; the board keeps the binary tree, whose traversal
+// its instruction counts were measured with and whose nodes take a quarter
+// of the memory.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/base/arena.hpp"
+
+namespace minrt::general {
+
+// Whether the renderer builds and walks the wide tree.
+inline constexpr bool kWideBvh = sizeof(void*) >= 8;
+
+inline constexpr int kWideArity = 4;
+
+template <class R>
+struct WideNode {
+  // lo/hi[axis][child]: the children's boxes, side by side.
+  R lo[3][kWideArity];
+  R hi[3][kWideArity];
+  uint32_t child[kWideArity];  // an inner child's node, or a leaf's first reference
+  uint16_t count[kWideArity];  // a leaf's references; 0 for an inner child
+  uint32_t used;               // children 0 .. used-1 are set
+};
+
+// The spheres' centres and squared radii by position in the BVH's reference
+// array (sphere_lanes.hpp), so that a leaf's spheres load as vectors; other
+// primitives' positions hold a negative squared radius, which no ray meets.
+// Padded to whole vector groups.
+template <class R>
+struct SphereLanes {
+  const R* x = nullptr;
+  const R* y = nullptr;
+  const R* z = nullptr;
+  const R* r2 = nullptr;  // nullptr: not built
+};
+
+template <class R>
+struct WideBvh {
+  const WideNode<R>* nodes = nullptr;
+  uint32_t node_count = 0;  // 0: walk the binary tree
+  SphereLanes<R> spheres{};
+  bool avx2 = false;  // walk with the AVX2 copy (simd_dispatch.hpp)
+};
+
+// What Bvh keeps of the wide tree: the tree on the hosts that build it,
+// nothing on the others.
+struct NoWideBvh {};
+template <class R, bool kBuilt = kWideBvh>
+struct WideSlotOf {
+  using type = WideBvh<R>;
+};
+template <class R>
+struct WideSlotOf<R, false> {
+  using type = NoWideBvh;
+};
+template <class R>
+using WideSlot = typename WideSlotOf<R>::type;
+
+// Sphere lane arrays hold this many positions past the last reference.
+inline constexpr uint32_t kSphereLanePad = 4;
+
+// Arena bytes of the wide tree over n primitives (no more nodes than the
+// binary tree has) and its sphere lanes.
+template <class R>
+constexpr size_t wide_bvh_footprint(uint32_t n) {
+  return kWideBvh ? Arena::footprint<WideNode<R>>(2 * static_cast<size_t>(n) + 1) +
+                        4 * Arena::footprint<R>(static_cast<size_t>(n) + kSphereLanePad)
+                  : 0;
+}
+
+}  // namespace minrt::general

@@ -1,0 +1,119 @@
+// The wide BVH (render/general/wide_node.hpp) and its vector walks change
+// only the speed: the binary tree's walk, the wide walk with 16-byte
+// vectors and, on a CPU with AVX2, the AVX2 copy give the same bytes, in
+// double and in float, on scenes of spheres, triangles and planes with
+// reflection, refraction, roughness, shadows from suns and bulbs.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/base/arena.hpp"
+#include "core/base/byte_io.hpp"
+#include "core/base/diagnostic.hpp"
+#include "core/math/math_libm.hpp"
+#include "core/math/math_portable.hpp"
+#include "formats/cs418/cs418_reader.hpp"
+#include "formats/model/scene_builder.hpp"
+#include "render/general/render.hpp"
+
+namespace {
+
+using namespace minrt;
+
+// A deterministic cloud of spheres of the given radius, a floor and a
+// fan of triangles through it.
+std::string cloud_scene(int spheres, double radius) {
+  std::ostringstream s;
+  s << "png 48 40 x.png\naa 3\nbounces 6\ndof 2.5 0.02\n"
+    << "color 1 1 1\nsun 1 2 1\ncolor 0.4 0.3 0.2\nsun -1 0.5 0.3\ncolor 2 2 2\nbulb 0 1.5 -2\n"
+    << "shininess 0.5\nroughness 0.05\ncolor 0.3 0.5 0.1\nplane 0 1 0 1.25\n";
+  uint32_t state = 12345u;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  for (int i = 0; i < spheres; ++i) {
+    const double kind = next();
+    s << "color " << next() << ' ' << next() << ' ' << next() << '\n';
+    s << "shininess " << (kind < 0.3 ? 0.6 : 0.1) << "\ntransparency " << (kind > 0.85 ? 0.8 : 0.0)
+      << "\nroughness " << (kind > 0.6 && kind < 0.7 ? 0.1 : 0.0) << '\n';
+    s << "sphere " << next() * 3.5 - 1.75 << ' ' << next() * 2.5 - 1.75 << ' ' << next() * 2.5 - 4.0 << ' '
+      << radius * (0.5 + next()) << '\n';
+  }
+  s << "shininess 0.2\ntransparency 0\nroughness 0\ncolor 0.8 0.2 0.2\n";
+  for (int i = 0; i < 40; ++i) {
+    const double a = i * 0.157;
+    s << "xyz " << 0.5 * a - 1.5 << " -1.2 " << -2.0 - 0.3 * (i % 3) << '\n';
+    s << "xyz " << 0.5 * a - 1.2 << " 0.4 " << -2.5 - 0.2 * (i % 4) << '\n';
+    s << "xyz " << 0.5 * a - 1.0 << " -0.5 " << -3.0 << '\n';
+    s << "tri -3 -2 -1\n";
+  }
+  return s.str();
+}
+
+template <class M>
+struct Rendered {
+  std::vector<uint8_t> rgba;
+  bool wide = false;
+  bool avx2 = false;
+};
+
+enum class Walk { kBinary, kWide16, kWidest };
+
+template <class M>
+Rendered<M> render(const std::string& text, Walk walk) {
+  using R = typename M::real;
+  const size_t bytes = size_t{64} << 20;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  model::SceneBuilder<R> builder(arena);
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
+  cs418::Header header;
+  model::Scene<R> scene;
+  Diagnostic d;
+  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
+  REQUIRE(builder.finish(scene));
+  general::Renderer<M> renderer;
+  REQUIRE(renderer.setup(scene, arena, 7));
+  if (walk == Walk::kBinary) renderer.drop_wide_bvh();
+  if (walk == Walk::kWide16) renderer.use_16_byte_vectors();
+  Rendered<M> out;
+  out.wide = renderer.wide_walk();
+  out.avx2 = renderer.avx2_walk();
+  out.rgba.resize(static_cast<size_t>(scene.width) * scene.height * 4);
+  for (int y = 0; y < scene.height; ++y) renderer.render_row(y, out.rgba.data() + static_cast<size_t>(y) * scene.width * 4);
+  return out;
+}
+
+template <class M>
+void check_walks(const std::string& text) {
+  const auto binary = render<M>(text, Walk::kBinary);
+  const auto wide16 = render<M>(text, Walk::kWide16);
+  const auto widest = render<M>(text, Walk::kWidest);
+  CHECK_FALSE(binary.wide);
+  if (general::kWideBvh) {
+    CHECK(wide16.wide);
+    CHECK_FALSE(wide16.avx2);
+    CHECK(widest.avx2 == general::cpu_has_avx2());
+  }
+  CHECK(wide16.rgba == binary.rgba);
+  CHECK(widest.rgba == binary.rgba);
+}
+
+}  // namespace
+
+TEST_CASE("wide BVH: binary, 16-byte and widest walks give the same bytes", "[general][bvh]") {
+  for (const auto& [spheres, radius] : {std::pair{600, 0.05}, std::pair{3000, 0.02}, std::pair{40, 0.6}}) {
+    DYNAMIC_SECTION(spheres << " spheres of radius about " << radius) {
+      const std::string text = cloud_scene(spheres, radius);
+      check_walks<LibmDouble>(text);
+      check_walks<LibmFloat>(text);
+      check_walks<PortableFloat>(text);
+    }
+  }
+}
