@@ -103,6 +103,8 @@ void print_help() {
       "                           (PREFIX/share/minrt/firmware), else the build's)\n"
       "  --sim-ram-size NM        RAM of the simulated board (default 4M, the board's);\n"
       "                           for CS418 scenes whose textures do not fit (implies --sim)\n"
+      "  --board FILE             the simulated board's description (boards/*.board: memory\n"
+      "                           map, UART, halt, ISA; implies --sim; default the reference)\n"
       "  --sim-binary PATH        simulator to run (default: $MINRT_FIRMWARE_SIM, else the\n"
       "                           firmware-sim next to host-send, else the build's)\n"
       "  -b, --baud N             line rate, any value (default 115200; with --sim it\n"
@@ -185,6 +187,9 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
       if (has_inline) o.sim_elf = inline_value;
       else if (i + 1 < argc && argv[i + 1][0] != '-' && (is_elf(argv[i + 1]) || ends_with(argv[i + 1], ".elf")))
         o.sim_elf = argv[++i];
+    } else if (a == "--board") {
+      if (!value(o.sim_board)) return ParseResult::kError;
+      o.sim = true;  // a board file describes the simulated board
     } else if (a == "--sim-binary") {
       if (!value(o.sim_binary)) return ParseResult::kError;
       o.sim = true;  // naming a simulator asks for one
@@ -410,6 +415,7 @@ int run(const Options& options) {
   if (use_sim) {
     SimConfig cfg;
     cfg.simulator = o.sim_binary.empty() ? default_simulator() : o.sim_binary;
+    cfg.board = o.sim_board;
     cfg.firmware = o.sim_elf.empty() ? default_firmware() : o.sim_elf;
     cfg.baud = o.baud_given ? o.port_settings.baud : 0;
     cfg.firmware_args = {"--size", std::to_string(o.spec.width) + "x" + std::to_string(o.spec.height), "--format",
