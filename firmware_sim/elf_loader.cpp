@@ -74,8 +74,9 @@ LoadedElf load_elf(const std::string& path, Bus& bus) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open file: ") + std::strerror(errno));
   std::vector<uint8_t> f((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The magic first: a short text file is "not an ELF file", not a truncated one.
+  if (f.size() < SELFMAG || std::memcmp(f.data(), ELFMAG, SELFMAG) != 0) fail(path, "not an ELF file");
   auto eh = read_at<Elf32_Ehdr>(f, 0, path);
-  if (std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0) fail(path, "not an ELF file");
   if (eh.e_ident[EI_CLASS] != ELFCLASS32 || eh.e_ident[EI_DATA] != ELFDATA2LSB)
     fail(path, "not a 32-bit little-endian ELF");
   if (eh.e_machine != EM_RISCV) fail(path, "not a RISC-V ELF");

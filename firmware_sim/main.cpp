@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -294,6 +295,10 @@ int run(const std::vector<std::string>& argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A reader that goes away (host-send stopped, `| head`) makes the UART's
+  // writes fail with EPIPE, which ends the run with the I/O status (7);
+  // the default SIGPIPE would kill the simulator instead (141).
+  std::signal(SIGPIPE, SIG_IGN);
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const ExitNow& e) {

@@ -245,6 +245,20 @@ class Reader {
     }
     return i == n;
   }
+  // Whether a token that is no plain decimal is one with an exponent
+  // ("1e308", "2.5E-3"): the subject's numbers have none.
+  static bool has_exponent(const char* s, int n) {
+    int i = (n > 0 && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
+    bool digits = false;
+    while (i < n && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.')) digits = digits || s[i++] != '.';
+    if (!digits || i >= n || (s[i] != 'e' && s[i] != 'E')) return false;
+    ++i;
+    if (i < n && (s[i] == '-' || s[i] == '+')) ++i;
+    if (i >= n) return false;
+    while (i < n && s[i] >= '0' && s[i] <= '9') ++i;
+    return i == n;
+  }
+
   // A real number token (or part of a triple) for `what`; the message
   // quotes `whole` (the field) and, for a triple's part, the part too.
   bool real(const char* s, int n, R& out, Decimal& dec, int word, const char* what, const char* part) {
@@ -254,7 +268,9 @@ class Reader {
         error_->text(": ").text(part).text(" ");
         quote(s, n);
       }
-      error_->text(n > kMaxNumberBytes ? " is too long for a number" : " is not a number");
+      error_->text(n > kMaxNumberBytes ? " is too long for a number"
+                   : has_exponent(s, n)   ? " has an exponent: write it as a plain decimal (like 0.5)"
+                                          : " is not a number");
       return false;
     }
     if (parse_real<R>(s, n, out) != NumberStatus::kOk) {
