@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include "png_io.hpp"
+#include "ppm_texture.hpp"
 #include "tiff_io.hpp"
 
 namespace minrt::host {
@@ -34,11 +35,16 @@ std::string scene_folder(const std::string& scene_path) {
 
 }  // namespace
 
-bool load_eastray_map(const std::string& base_dir, const std::string& written, RgbTexture& out, std::string& error) {
+namespace {
+
+// The file a map's name as written stands for, and its extension in lower
+// case; false with the reason (an old format, a wrong extension, no file).
+bool find_map_file(const std::string& base_dir, const std::string& written, std::string& path, std::string& ext,
+                   std::string& error) {
   std::string name = written;
   for (char& c : name)
     if (c == '\\') c = '/';
-  const std::string ext = lower_extension(name);
+  ext = lower_extension(name);
   if (ext == ".fal" || ext == ".ipr") {
     error = name + ": " + ext.substr(1) +
             " images (raw RGB with a header) are not read; convert the raw RGB file to TIFF, e.g. "
@@ -49,12 +55,39 @@ bool load_eastray_map(const std::string& base_dir, const std::string& written, R
     error = name + ": map_data images must be .tif, .tiff, .png, .ppm or .pnm";
     return false;
   }
-  std::string path = name;
+  path = name;
   if (name[0] != '/' && !base_dir.empty() && is_file(base_dir + name)) path = base_dir + name;
   if (!is_file(path)) {
     error = name + ": no such file (looked beside the scene and in the current folder)";
     return false;
   }
+  return true;
+}
+
+}  // namespace
+
+bool probe_eastray_map(const std::string& base_dir, const std::string& written, int& width, int& height,
+                       std::string& error) {
+  std::string path, ext, why;
+  if (!find_map_file(base_dir, written, path, ext, error)) return false;
+  bool ok;
+  if (ext == ".png") {
+    ok = png_header_size(path, width, height, why);
+  } else if (ext == ".ppm" || ext == ".pnm") {
+    ok = ppm_header_size(path, width, height, why);
+  } else {  // TIFF: libtiff reads the size from the directory only when decoding; decode it
+    RgbTexture t;
+    ok = read_tiff_rgb(path, t.width, t.height, t.rgb, why);
+    width = t.width;
+    height = t.height;
+  }
+  if (!ok) error = path + ": " + why;
+  return ok;
+}
+
+bool load_eastray_map(const std::string& base_dir, const std::string& written, RgbTexture& out, std::string& error) {
+  std::string path, ext;
+  if (!find_map_file(base_dir, written, path, ext, error)) return false;
   std::string why;
   bool ok;
   if (ext == ".tif" || ext == ".tiff") {

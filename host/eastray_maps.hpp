@@ -22,6 +22,11 @@ namespace minrt::host {
 // current folder. False with "FILE: REASON".
 bool load_eastray_map(const std::string& base_dir, const std::string& name, RgbTexture& out, std::string& error);
 
+// The size load_eastray_map would decode, from a PNG's or PPM's header (a
+// TIFF is decoded): host-send weighs it against the board's memory first.
+bool probe_eastray_map(const std::string& base_dir, const std::string& name, int& width, int& height,
+                       std::string& error);
+
 // The decoded images of a scene's map_data entries, in order.
 class EastrayMaps {
  public:

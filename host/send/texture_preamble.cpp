@@ -136,7 +136,8 @@ bool build_eastray_texture_preamble(const std::vector<std::pair<std::string, std
     names.push_back(m.first);
     where.push_back(m.second);
   }
-  return assemble(names, where, base_dir, &minrt::host::load_eastray_map, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::probe_eastray_map, &minrt::host::load_eastray_map, board_bytes, out,
+                  error);
 }
 
 }  // namespace minrt::send

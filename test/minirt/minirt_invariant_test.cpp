@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 
+#include "formats/minirt/minirt_reader.hpp"
 #include "render_driver.hpp"
 
 namespace {
