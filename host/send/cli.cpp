@@ -378,7 +378,10 @@ int run(const Options& options) {
   if (!upload.refusal.empty() && !o.output_given)
     return fail(kExitFirmware, "scene rejected before sending: " + upload.refusal);
   if (!upload.warning.empty() && !o.output_given) std::fprintf(stderr, "host-send: warning: %s\n", upload.warning.c_str());
-  if (text_format && o.protocol == Protocol::kRaw && scene.find(static_cast<char>(MINRT_END_OF_INPUT)) != std::string::npos)
+  // The texture preamble is binary and counted; the text after it must not
+  // hold the byte that ends a plain raw upload.
+  if (text_format && o.protocol == Protocol::kRaw &&
+      scene.find(static_cast<char>(MINRT_END_OF_INPUT), upload.text_at) != std::string::npos)
     return fail(kExitFirmware, "scene rejected before sending: it contains byte 0x04, the raw protocol's end of input");
   // The output is checked before the transfer, not after minutes of it.
   if (scene_named_output && !o.allow_any_output && !minrt::host::scene_named_output_allowed(o.scene, o.output, why))

@@ -39,6 +39,7 @@ bool prepare_cs418(const UploadRequest& r, std::string scene, Upload& out, std::
   out.output = name;
   std::string preamble;
   if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  out.text_at = preamble.size();
   out.bytes = preamble + scene;
   return true;
 }
@@ -61,6 +62,7 @@ bool prepare_minirt(const UploadRequest& r, std::string scene, Upload& out, std:
   out.height = r.height > 0 ? r.height : f.default_height;
   std::string preamble;
   if (!build_minirt_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  out.text_at = preamble.size();
   out.bytes = preamble + scene;
   return true;
 }
@@ -74,6 +76,7 @@ bool prepare_eastray(const UploadRequest& r, std::string scene, Upload& out, std
   if (!host::eastray_board_text(r.path, scene, text, out.width, out.height, statement, error, &maps)) return false;
   std::string preamble;
   if (!build_eastray_texture_preamble(maps, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  out.text_at = preamble.size();
   out.bytes = preamble + text;
   bool tiff = false;
   std::string unsupported;

@@ -121,37 +121,12 @@ class TracerCore {
   }
 
   void leaf(const BvhNode<R>& node, const Ray<R>& ray, R eps, Hit<R>& h) const {
-    for (uint32_t k = 0; k < node.count; ++k) {
-      const uint32_t ref = bvh_.refs[node.index + k];
-      if constexpr ((F & kSolids) != 0) {
-        if ((ref & kSolidBit) != 0) {
-          const uint32_t i = ref & ~kSolidBit;
-          uint8_t part = 0;
-          const R t = hit_solid<M>(s_.solids[i], ray, eps, part);
-          if (t > eps && h.offer(t, HitKind::kSolid, i, s_.solids[i].order)) h.part = part;
-          continue;
-        }
-      }
-      if constexpr ((F & kTriangles) != 0) {
-        if ((ref & kTriangleBit) != 0) {
-          const uint32_t i = ref & ~kTriangleBit;
-          R b1, b2;
-          const R t = hit_triangle<M>(s_.triangles[i], ray, eps, b1, b2);
-          if (t > eps && h.offer(t, HitKind::kTriangle, i, s_.triangles[i].order)) {
-            h.b1 = b1;
-            h.b2 = b2;
-          }
-          continue;
-        }
-      }
-      const R t = hit_sphere<M>(s_.spheres[ref], ray, eps);
-      if (t > eps) h.offer(t, HitKind::kSphere, ref, s_.spheres[ref].order);
-    }
+    leaf_refs<true>(node.index, node.count, ray, eps, h);
   }
 
-  // References first .. first+count-1 for the wide walk: leaf()'s tests,
-  // and its spheres too unless the caller has tested them by vector group.
-  // (leaf() stays as it is: it is the board's code, whose counts are measured.)
+  // References first .. first+count-1: a leaf's tests (the binary walk's,
+  // the board's), and for the wide walk its spheres too unless the caller
+  // has tested them by vector group.
   template <bool kWithSpheres>
   [[gnu::always_inline]] inline void leaf_refs(uint32_t first, uint32_t count, const Ray<R>& ray, R eps,
                                                Hit<R>& h) const {
