@@ -281,7 +281,10 @@ def main():
                 if synopsis:
                     synopses += 1
                     continue
-                reason = next((why for pattern, why in SKIP if re.search(pattern, cmd.text)), None)
+                # "VAR=value bench/..." is skipped as "bench/..." is.
+                bare = re.sub(r"^(\s*[A-Za-z_][A-Za-z0-9_]*=\S*\s+)+", "", cmd.text)
+                reason = next((why for pattern, why in SKIP
+                               if re.search(pattern, cmd.text) or re.search(pattern, bare)), None)
                 if reason or args.no_run:
                     skipped += 1
                     if args.verbose:
