@@ -3,10 +3,11 @@
 # (the "| default, 128x128 | N ..." row of its count table) is what
 # bench/firmware/count.sh measures now, within 1%: a change that moves the
 # count must restate it, so the page cannot go stale silently.
-#   stated_counts_test.sh REPO_ROOT BUILD_DIR
+#   stated_counts_test.sh REPO_ROOT BUILD_DIR [SHARED_DIR]
 set -uo pipefail
 root=${1:?usage: stated_counts_test.sh REPO_ROOT BUILD_DIR}
 build=${2:?usage: stated_counts_test.sh REPO_ROOT BUILD_DIR}
+[[ -n ${3:-} ]] && export MINRT_SHARED_DIR=$3
 doc=$root/docs/firmware.md
 stated=$(sed -n 's/^| default, 128x128 | \*\{0,2\}\([0-9,]*\).*/\1/p' "$doc" | head -1 | tr -d ,)
 [[ -n $stated ]] || { echo "FAIL: no '| default, 128x128 | N' row in $doc"; exit 1; }
