@@ -4,9 +4,9 @@
 # end); --write-docs regenerates the tracked docs/accuracy.md and
 # docs/accuracy/*.png instead (its figures include this run's timings).
 # Builds accuracy-report (in build/release, the preset's folder), renders
-# every scene of ../shared/scenes and sld/hard at 128x128 in every math variant, measures contest.sld on the
-# firmware (build/release/firmware, build/release/firmware_sim) and under
-# callgrind, and renders the course scenes on the rv32imf firmware under every
+# every scene of ../shared/scenes and sld/hard at 128x128 in every math
+# variant, measures contest.sld on the firmware (build/release/firmware,
+# build/release/firmware_sim) and under callgrind, and renders the course scenes on the rv32imf firmware under every
 # FPU model file in bench/accuracy/fpu-models/ (firmware-sim --fpu-model).
 # Environment: BUILD (default build/release), MINRT_SHARED_DIR (default
 # ../shared), FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS
