@@ -6,8 +6,9 @@
 # Builds accuracy-report (in build/release, the preset's folder), renders
 # every scene of ../shared/scenes and sld/hard at 128x128 in every math
 # variant, measures contest.sld on the firmware (build/release/firmware,
-# build/release/firmware_sim) and under callgrind, and renders the course scenes on the rv32imf firmware under every
-# FPU model file in bench/accuracy/fpu-models/ (firmware-sim --fpu-model).
+# build/release/firmware_sim) and under callgrind, and renders the course
+# scenes on the rv32imf firmware under every FPU model file in
+# bench/accuracy/fpu-models/ (firmware-sim --fpu-model).
 # Environment: BUILD (default build/release), MINRT_SHARED_DIR (default
 # ../shared), FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS
 # (default rv32imf,rv32im), NO_CACHE=1 to rerun the firmware even when its
