@@ -1,25 +1,28 @@
 #!/usr/bin/env bash
 # Renders every EASTRAY scene of ../shared/formats/eastray with minrt in
 # double and in float with the portable shims the board uses, and writes
-#   docs/eastray/<scene>.png   contact sheets: double | float/portable | difference
-#   docs/eastray/table.md      the figures, one row per scene
-#   docs/eastray/own-<scene>.png the same sheets for test/eastray/scenes
-#                              (mapping, bump, anisotropy, stereo: the
-#                              right image, background)
+#   <scene>.png       contact sheets: double | float/portable | difference
+#   table.md          the figures, one row per scene
+#   own-<scene>.png   the same sheets for test/eastray/scenes (mapping, bump,
+#                     anisotropy, stereo: the right image, background)
+# into an output folder, by default build/reports/eastray (printed at the end);
+# --write-docs regenerates the tracked docs/eastray/ instead (the table's
+# timings differ between runs and machines).
 # There is no reference renderer: the sheets are for looking at (the README
 # of the scenes says what each must show; test/eastray/eastray_test.cpp
 # probes it).
-# Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR]
+# Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR | --write-docs]
 # Needs build/release (scripts/render.sh or scripts/test.sh builds it).
 . "$(dirname "$0")/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 shared=$root/../shared
-out=$root/docs/eastray
+out=$root/build/reports/eastray
 while [ $# -gt 0 ]; do
   case $1 in
-    --shared) shared=$2; shift 2 ;;
-    --out) out=$2; shift 2 ;;
+    --shared) shared=${2:?$1 needs a folder}; shift 2 ;;
+    --out) out=${2:?$1 needs a folder}; shift 2 ;;
+    --write-docs) out=$root/docs/eastray; shift ;;
     *) echo "eastray_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done

@@ -1,5 +1,7 @@
 #!/usr/bin/python3
-"""Renders every scene in every math variant and writes docs/accuracy.md.
+"""Renders every scene in every math variant and writes accuracy.md and its
+pictures (accuracy/*.png) into the --out folder (docs/ regenerates the
+tracked docs/accuracy.md). One progress line per finished step on stderr.
 
 Run through bench/accuracy/run.sh, which builds accuracy-report first. Needs
 Debian's python3-numpy and python3-matplotlib (use /usr/bin/python3).
@@ -14,6 +16,7 @@ import hashlib
 import shutil
 import subprocess
 import sys
+import threading
 import time
 
 import numpy as np
@@ -228,6 +231,40 @@ def heat_map(scene, images, outpath):
                    [(name, images[tag]) for name, tag in VARIANTS if tag != REF], outpath)
 
 
+def cpu_model():
+    """The CPU the figures were measured on, as /proc/cpuinfo names it."""
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "unknown CPU"
+
+
+class Progress:
+    """Prints "accuracy: step n of N (elapsed): what" on stderr as each
+    background job finishes, so a run of minutes shows it is moving."""
+
+    def __init__(self, start):
+        self.start, self.jobs, self.done, self.lock = start, [], 0, threading.Lock()
+
+    def track(self, job, what):
+        self.jobs.append((job, what))
+        return job
+
+    def begin(self):
+        """Called once every job is submitted: N is known from here on."""
+        for job, what in self.jobs:
+            job.add_done_callback(lambda _, what=what: self.step(what))
+
+    def step(self, what):
+        with self.lock:
+            self.done += 1
+            print(f"accuracy: step {self.done} of {len(self.jobs)} ({time.time() - self.start:.0f} s): "
+                  f"{what}", file=sys.stderr, flush=True)
+
+
 def main():
     install_signal_handlers()
     ap = argparse.ArgumentParser()
@@ -235,6 +272,7 @@ def main():
     ap.add_argument("--root", required=True)
     ap.add_argument("--shared", required=True)
     ap.add_argument("--work", required=True)
+    ap.add_argument("--out", required=True, help="folder for accuracy.md and accuracy/*.png")
     ap.add_argument("--sim")
     ap.add_argument("--firmware-dir")
     ap.add_argument("--jobs", type=int, default=2)
@@ -245,8 +283,9 @@ def main():
     start = time.time()
     imgdir = os.path.join(args.work, "images")
     os.makedirs(imgdir, exist_ok=True)
-    docdir = os.path.join(args.root, "docs", "accuracy")
+    docdir = os.path.join(args.out, "accuracy")
     os.makedirs(docdir, exist_ok=True)
+    progress = Progress(start)
 
     course = sorted(glob.glob(os.path.join(args.shared, "scenes", "*.sld")))
     hard = sorted(glob.glob(os.path.join(args.root, "sld", "hard", "*.sld")))
@@ -264,11 +303,15 @@ def main():
             elf = os.path.join(args.firmware_dir, f"minrt-{isa}.elf")
             if os.path.exists(elf):
                 out = os.path.join(args.work, f"firmware-{isa}-{SPEED_SCENE}.ppm")
-                fw_jobs[isa] = (pool.submit(run_firmware, args.sim, elf, speed_scene, out,
-                                           cache_dir), out)
-    cg_jobs = {tag: pool.submit(run_callgrind, args.tool, tag, speed_scene)
+                fw_jobs[isa] = (progress.track(pool.submit(run_firmware, args.sim, elf, speed_scene,
+                                                           out, cache_dir),
+                                               f"firmware {isa} on {SPEED_SCENE}.sld"), out)
+    cg_jobs = {tag: progress.track(pool.submit(run_callgrind, args.tool, tag, speed_scene),
+                                   f"callgrind {tag} on {SPEED_SCENE}.sld")
                for _, tag in VARIANTS} if os.path.exists(speed_scene) else {}
-    render_jobs = [pool.submit(render, args.tool, s, imgdir) for s in course + hard]
+    render_jobs = [progress.track(pool.submit(render, args.tool, s, imgdir),
+                                  f"rendered {os.path.basename(s)} in {len(VARIANTS)} variants")
+                   for s in course + hard]
     # FPU models: contest under the cycle model (with the unit's fp_div/fp_sqrt
     # latencies) for the counts, every course scene for the error.
     fpu_jobs = {}  # tag -> {"check": job, "latency": (div, sqrt), scene -> (job, image)}
@@ -279,22 +322,27 @@ def main():
     if fw_jobs and FPU_ISA in fw_jobs and os.path.exists(fpu_elf):
         fpu_dir = os.path.join(args.work, "fpu-models")
         os.makedirs(fpu_dir, exist_ok=True)
-        ieee_check = pool.submit(fpu_check, args.sim, os.path.join(args.root, IEEE_MODEL))
+        ieee_check = progress.track(pool.submit(fpu_check, args.sim, os.path.join(args.root, IEEE_MODEL)),
+                                    "operation check of the IEEE FPU model")
         for _, tag, model, keys in models:
             model = os.path.join(args.root, model)
             div, sqrt = unit_latencies(keys, lat)
             cfg = os.path.join(fpu_dir, tag + ".cfg")
             write_atomically(cfg, f"# the default model with this unit's latencies\nfp_div = {div}\n"
                              f"fp_sqrt = {sqrt}\n")
-            jobs = {"check": pool.submit(fpu_check, args.sim, model), "latency": (div, sqrt)}
+            jobs = {"check": progress.track(pool.submit(fpu_check, args.sim, model),
+                                            f"operation check of FPU model {tag}"),
+                    "latency": (div, sqrt)}
             for scene in course:
                 image = os.path.join(fpu_dir, f"{stem(scene)}.{tag}.ppm")
                 timed = stem(scene) == SPEED_SCENE
                 options = ["--fpu-model", model] + (["--cycle-model", cfg] if timed else [])
-                jobs[stem(scene)] = (pool.submit(run_firmware, args.sim, fpu_elf, scene, image,
-                                                 cache_dir, options, [model] + ([cfg] if timed else [])),
-                                     image)
+                jobs[stem(scene)] = (progress.track(
+                    pool.submit(run_firmware, args.sim, fpu_elf, scene, image, cache_dir, options,
+                                [model] + ([cfg] if timed else [])),
+                    f"firmware {FPU_ISA} on {stem(scene)}.sld under FPU model {tag}"), image)
             fpu_jobs[tag] = jobs
+    progress.begin()
     failures = []
     warnings = {}  # scene -> distinct warning texts (the same in every variant)
     for job in render_jobs:
@@ -716,8 +764,12 @@ def main():
         w(board)
     w("## Regenerating\n")
     w("```sh\n" + args.command + "\n```\n")
+    w("Without `--write-docs`, `bench/accuracy/run.sh` writes the same report into "
+      "`build/reports/accuracy` (or `--out DIR`) and leaves docs/ alone. It prints one "
+      "progress line per step on stderr.\n")
     reused = [isa for isa, (res, _) in firmware.items() if res and res["cached"]]
-    w(f"This run took {elapsed:.0f} s of wall time on the 2-core development machine after the "
+    w(f"This run took {elapsed:.0f} s of wall time on the development machine ({cpu_model()}, "
+      f"{os.cpu_count()} cores) after the "
       "build (renders and callgrind two at a time"
       + (f"; the firmware counts of {', '.join(reused)} came from the cache" if reused else "")
       + "). Without the cache (`NO_CACHE=1`, or after the simulator or an ELF changes) the "
@@ -732,7 +784,7 @@ def main():
           f"at a time; {sum(1 for r in fpu_runs if r['cached'])} of them came from the cache in "
           "this run.")
     w("")
-    path = os.path.join(args.root, "docs", "accuracy.md")
+    path = os.path.join(args.out, "accuracy.md")
     write_atomically(path, "\n".join(out))
     print(f"wrote {path} in {elapsed:.0f} s", file=sys.stderr)
     return 1 if failures or not all(ref_check.values()) else 0

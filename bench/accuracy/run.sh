@@ -1,10 +1,14 @@
 #!/bin/sh
-# Regenerates docs/accuracy.md and docs/accuracy/*.png: builds accuracy-report
-# (in build/release, the preset's folder), renders every scene of ../shared/scenes
-# and sld/hard at 128x128 in every math variant, measures contest.sld on the
-# firmware (build/release/firmware, build/release/firmware_sim) and under
-# callgrind, and renders the course scenes on the rv32imf firmware under every
-# FPU model file in bench/accuracy/fpu-models/ (firmware-sim --fpu-model).
+# Writes accuracy.md and accuracy/*.png (the report docs/accuracy.md shows)
+# into an output folder, by default build/reports/accuracy (printed at the
+# end); --write-docs regenerates the tracked docs/accuracy.md and
+# docs/accuracy/*.png instead (its figures include this run's timings).
+# Builds accuracy-report (in build/release, the preset's folder), renders
+# every scene of ../shared/scenes and sld/hard at 128x128 in every math
+# variant, measures contest.sld on the firmware (build/release/firmware,
+# build/release/firmware_sim) and under callgrind, and renders the course
+# scenes on the rv32imf firmware under every FPU model file in
+# bench/accuracy/fpu-models/ (firmware-sim --fpu-model).
 # Environment: BUILD (default build/release), MINRT_SHARED_DIR (default
 # ../shared), FW_BUILD (default build/release), JOBS (default 2), FIRMWARE_ISAS
 # (default rv32imf,rv32im), NO_CACHE=1 to rerun the firmware even when its
@@ -12,7 +16,8 @@
 # the simulator, ELF, scene, arguments and cycle/FPU model; the soft-float run
 # takes minutes, the FPU-model renders several).
 # Needs Debian's python3-numpy and python3-matplotlib (run with /usr/bin/python3).
-#   [ENV=VALUE ...] bench/accuracy/run.sh   (no arguments; several minutes)
+# Prints one progress line per step on stderr (step n of N, elapsed seconds).
+#   [ENV=VALUE ...] bench/accuracy/run.sh [--out DIR | --write-docs]   (several minutes)
 . "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,6 +25,14 @@ build=${BUILD:-$root/build/release}
 shared=${MINRT_SHARED_DIR:-$root/../shared}
 fw_build=${FW_BUILD:-$root/build/release}
 jobs=${JOBS:-2}
+out=$root/build/reports/accuracy
+while [ $# -gt 0 ]; do
+  case $1 in
+    --out) out=${2:?$1 needs a folder}; shift 2 ;;
+    --write-docs) out=$root/docs; write_docs=1; shift ;;
+    *) echo "run.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
   if [ "$build" = "$root/build/release" ]; then
@@ -28,15 +41,18 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   fi
 fi
+echo "accuracy: building accuracy-report in $build" >&2
 cmake --build "$build" --target accuracy-report -j "$jobs"
+mkdir -p "$out"
 
 command=bench/accuracy/run.sh
 for var in BUILD MINRT_SHARED_DIR FW_BUILD JOBS FIRMWARE_ISAS NO_CACHE; do
   eval "val=\${$var:-}"
   [ -n "$val" ] && command="$var=$val $command"
 done
+[ -n "${write_docs:-}" ] && command="$command --write-docs"
 set -- --tool "$build/tools/accuracy/accuracy-report" --root "$root" --shared "$shared" \
-  --work "$build/accuracy-work" --jobs "$jobs" --command "$command" \
+  --work "$build/accuracy-work" --out "$out" --jobs "$jobs" --command "$command" \
   --firmware-isas "${FIRMWARE_ISAS:-rv32imf,rv32im}"
 [ "${NO_CACHE:-0}" = 1 ] && set -- "$@" --no-cache
 if [ -x "$fw_build/firmware_sim/firmware-sim" ]; then

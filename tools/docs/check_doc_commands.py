@@ -93,10 +93,20 @@ class Command:
         return f"{self.doc}:{self.line}"
 
 
+# One leading "NAME=value": the value may be a $(command) or quoted, with spaces.
+ASSIGNMENT = re.compile(r"""[A-Za-z_][A-Za-z0-9_]*=(?:\$\([^()]*\)|"[^"]*"|'[^']*'|[^\s'"]*)(?:\s+|$)""")
+
+
+def strip_assignments(text):
+    """The command after its leading variable assignments ("" for assignments only)."""
+    rest = text.strip()
+    while (m := ASSIGNMENT.match(rest)):
+        rest = rest[m.end():]
+    return rest
+
+
 def first_word(text):
-    words = text.split()
-    while words and re.match(r"^[A-Za-z_][A-Za-z0-9_]*=", words[0]):
-        words.pop(0)
+    words = strip_assignments(text).split()
     return words[0] if words else ""
 
 
@@ -281,7 +291,10 @@ def main():
                 if synopsis:
                     synopses += 1
                     continue
-                reason = next((why for pattern, why in SKIP if re.search(pattern, cmd.text)), None)
+                # "VAR=value bench/..." is skipped as "bench/..." is.
+                bare = strip_assignments(cmd.text)
+                reason = next((why for pattern, why in SKIP
+                               if re.search(pattern, cmd.text) or re.search(pattern, bare)), None)
                 if reason or args.no_run:
                     skipped += 1
                     if args.verbose:
