@@ -50,8 +50,11 @@ else
 fi
 
 cd "$root"
-echo "setup: configuring build/release (cmake --preset host-release)" >&2
-cmake --preset host-release >/dev/null
+# CI builds with warnings as errors; a user's build only shows them.
+werror=()
+if [[ ${CI:-} == true ]]; then werror=(-DMINRT_WERROR=ON); fi
+echo "setup: configuring build/release (cmake --preset host-release ${werror[*]})" >&2
+cmake --preset host-release "${werror[@]}" >/dev/null
 echo "setup: building with $(nproc) jobs (a first build takes a few minutes; progress below)" >&2
 cmake --build --preset host-release -j "$(nproc)"
 echo "setup: build complete" >&2

@@ -23,6 +23,7 @@ using R = M::real;
 
 // The rows a render hands over, by row.
 struct RowStore {
+  explicit RowStore(int w) : width(w) {}
   int width = 0;
   std::map<int, std::string> rows;
   int repeats = 0;

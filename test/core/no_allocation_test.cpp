@@ -17,6 +17,11 @@ namespace {
 std::atomic<long> g_allocations{0};
 }
 
+// These replacements are malloc and free underneath: GCC cannot see that
+// every new here is the matching one and warns on each free.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void* operator new(std::size_t n) {
   ++g_allocations;
   if (void* p = std::malloc(n ? n : 1)) return p;

@@ -53,7 +53,7 @@ const std::string kSp = "sp 0,0,0 2 255,0,0\n";
 }  // namespace
 
 TEST_CASE("miniRT reader: the subject's boundary values are accepted", "[minirt][reader]") {
-  for (const std::string& text : {
+  for (const char* text : {
            "A 0 0,0,0\nC 0,0,0 -1,-1,-1 0\nL 0,0,0 0 0,0,0\nsp 0,0,0 1 0,0,0\n",
            "A 1 255,255,255\nC 0,0,0 1,1,1 180\nL 0,0,0 1 255,255,255\nsp 0,0,0 1 255,255,255\n",
            "A 1.0 +255,0,0\nC 0,0,0 0,0,1.000 180.0\nL 0,0,0 1.0 0,0,0\nsp 0,0,0 0.0001 0,0,0\n",
