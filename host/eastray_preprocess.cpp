@@ -127,7 +127,26 @@ class Expander {
         ++c;
       }
     }
+    drop_trailing_blanks(out);
     return true;
+  }
+
+  // Blanks at the end of a line mean nothing and may be megabytes of
+  // padding: they are dropped (what comes before them keeps its columns).
+  static void drop_trailing_blanks(std::string& text) {
+    std::size_t w = 0, run = std::string::npos;  // where the current run of blanks starts in the output
+    for (const char ch : text) {
+      if (blank(ch)) {
+        if (run == std::string::npos) run = w;
+      } else {
+        if (ch == '\n' && run != std::string::npos) w = run;
+        run = std::string::npos;
+      }
+      text[w++] = ch;
+    }
+    if (run != std::string::npos) w = run;
+    text.resize(w);
+    text.shrink_to_fit();
   }
 
   bool fail(const std::string& shown, int line, std::size_t col, const std::string& msg) {

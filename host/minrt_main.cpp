@@ -57,6 +57,10 @@ const std::vector<Option>& options_table() {
        "rays that can change a pixel by less than 1/65536 of\n"
        "the brightest radiance are skipped"},
       {"stats", 0, nullptr, "say which format and path rendered the scene and how\nlong the parse, the BVH and the render took"},
+      {"mandatory", 0, nullptr,
+       "miniRT: the subject's mandatory part only: A, C, L, sp,\n"
+       "pl, cy, one L (colour optional, white), ambient and diffuse"},
+      {"cylinder-base", 0, nullptr, "miniRT: a cylinder's point is its base centre, not its\ncentre"},
       {"help", 'h', nullptr, "this text"},
       {"version", 0, nullptr, "version"},
   };
@@ -164,6 +168,9 @@ int run(int argc, char** argv) {
         else if (name == "full-tree") o.full_tree = true;
         else if (name == "stats") o.stats = true;
         else if (name == "quiet") o.quiet = true;
+        else if (name == "mandatory") o.mandatory = true;
+        else if (name == "cylinder-base") o.cylinder_base = true;
+        if (name == "mandatory" || name == "cylinder-base") o.format_options.push_back(name);
         return "";
       },
       error);

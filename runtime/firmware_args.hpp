@@ -19,6 +19,8 @@
 
 #include <stdint.h>
 
+#include <minrt/memory_map.h>
+
 #include "core/base/diagnostic.hpp"
 #include "render/sld/render.hpp"
 
@@ -44,7 +46,7 @@ struct FirmwareOptions {
   Protocol protocol = Protocol::kRaw;
   bool big_endian = false;  // course words
   bool all_features = false;  // CS418 path selection off
-  uint32_t ram_mib = 4;       // --ram-size
+  uint32_t ram_mib = MINRT_RAM_DEFAULT_SIZE >> 20;  // --ram-size; default: the board's RAM
 };
 
 // Fills `options` from argv[1..argc-1]; on a usage error returns false with

@@ -32,5 +32,6 @@ check portable-fast rv32imf ilp32f minrt::PortableFloatFast
 check libm-float rv32imf ilp32f minrt::LibmFloat sqrtf floorf sinf cosf atanf atan2f expf logf
 check libm-double rv32imfd ilp32d minrt::LibmDouble sqrt floor sin cos atan atan2 exp log
 check portable-softfloat rv32im ilp32 minrt::PortableFloat \
-  __addsf3 __subsf3 __mulsf3 __divsf3 __eqsf2 __nesf2 __ltsf2 __lesf2 __gtsf2 __gesf2 __unordsf2
+  __addsf3 __subsf3 __mulsf3 __divsf3 __eqsf2 __nesf2 __ltsf2 __lesf2 __gtsf2 __gesf2 __unordsf2 \
+  __floatsisf __floatunsisf
 echo "freestanding link check passed"
