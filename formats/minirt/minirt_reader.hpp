@@ -250,7 +250,8 @@ class Reader {
   static bool has_exponent(const char* s, int n) {
     int i = (n > 0 && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
     bool digits = false;
-    while (i < n && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.')) digits = digits || s[i++] != '.';
+    for (; i < n && ((s[i] >= '0' && s[i] <= '9') || s[i] == '.'); ++i)
+      if (s[i] != '.') digits = true;
     if (!digits || i >= n || (s[i] != 'e' && s[i] != 'E')) return false;
     ++i;
     if (i < n && (s[i] == '-' || s[i] == '+')) ++i;
