@@ -542,7 +542,7 @@ int run(const Options& options) {
     int n = std::snprintf(line, sizeof line, "host-send: %s: %llu bytes in %.3f s, %.1f kB/s%s", o.output.c_str(),
                           static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0,
                           use_sim ? " from the simulated board (firmware-sim)" : "");
-    if ((paced || o.baud_given) && n > 0)  // a --baud given paces the simulator or stand-in too
+    if ((paced || (use_sim && o.baud_given)) && n > 0)  // the simulator (or stand-in) paces at --baud too
       n += std::snprintf(line + n, sizeof line - n, ", %.1f%% of the 8N1 limit at %u baud", rate * 1000.0 / o.port_settings.baud,
                          static_cast<unsigned>(o.port_settings.baud));
     if (r.retransmitted_rows > 0 && n > 0)
