@@ -67,7 +67,12 @@ const std::vector<Option>& options_table() {
   return table;
 }
 
-void print_help(std::FILE* f) {
+void print_help(std::FILE* f, const std::string& program) {
+  if (program == "miniRT")
+    std::fputs("Usage: miniRT [OPTIONS] SCENE.rt\n"
+               "minrt under the 42 subject's name: exactly one .rt scene, shown in a window\n"
+               "(or written with -o FILE.png); every failure prints 'Error' and a line.\n\n",
+               f);
   std::fputs(
       "Usage: minrt [OPTIONS] [SCENE]\n"
       "Renders a scene in any of five formats, recognised by its extension and\n"
@@ -176,7 +181,7 @@ int run(int argc, char** argv) {
       error);
   if (!parsed) return usage_error(error);
   if (help) {
-    print_help(stdout);
+    print_help(stdout, program);
     return 0;
   }
   if (version) {
