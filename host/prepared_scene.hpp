@@ -71,6 +71,9 @@ class PreparedScene {
   // change the pixels (EASTRAY: 32K colours, an existing file's pixels
   // outside the display window). Returns a warning line, or "".
   virtual std::string finish_image(const std::string&, ImageFile, RgbaImage&) const { return ""; }
+  // The rows as rendered are the file's pixels (finish_image changes
+  // nothing), so the driver may write them as they are done.
+  bool rows_final = false;
 
   // --stats
   const char* path = "";

@@ -10,6 +10,7 @@
 #include "format_sides/host_formats.hpp"
 #include "image_file_output.hpp"
 #include "image_window.hpp"
+#include "row_file_writer.hpp"
 #include "row_pool.hpp"
 
 namespace minrt::host {
@@ -152,13 +153,26 @@ int run_driver(const DriverOptions& options) {
 
   for (int view = 0; view < scene->views; ++view) {
     scene->select_view(view);
+    const std::string target = out_path.empty() ? std::string() : scene->view_output_name(out_path, view);
+    const ImageFile kind = image_file_for(target, format.reply);
+    // Rows final as rendered go to a BMP or PPM file as they are done.
+    AtomicOutput output(options.durability);
+    RowFileWriter rows_to_file;
+    if (scene->rows_final && !target.empty()) {
+      if (!output.open(target, options.write_through, why)) {
+        print_error(style, "minrt: error: " + why);
+        return io_status(style);
+      }
+      rows_to_file.start(output.file(), kind, scene->width, scene->height);
+    }
     RgbaImage image;
     const auto t0 = std::chrono::steady_clock::now();
     // To a window only: closing it (ESC, the close button) ends the program
     // at once, without finishing the render. The window shows the first view.
     LiveWindow* shown = view == 0 ? &window : nullptr;
     const int threads =
-        render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr);
+        render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr,
+                    rows_to_file.started() ? &rows_to_file : nullptr);
     const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (window_only && window.closed()) {
       window.finish_and_wait(why);
@@ -170,17 +184,17 @@ int run_driver(const DriverOptions& options) {
                    "thread%s\n",
                    in.shown.c_str(), format.name, scene->width, scene->height, scene->path, scene->features,
                    scene->parse_seconds, scene->build_seconds, render_seconds, threads, threads == 1 ? "" : "s");
-    if (out_path.empty()) continue;
-    const std::string target = scene->view_output_name(out_path, view);
-    const ImageFile kind = image_file_for(target, format.reply);
-    const std::string warning = scene->finish_image(target, kind, image);
-    if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
-    AtomicOutput output(options.durability);
-    if (!output.open(target, options.write_through, why)) {
-      print_error(style, "minrt: error: " + why);
-      return io_status(style);
+    if (target.empty()) continue;
+    if (!rows_to_file.started()) {
+      const std::string warning = scene->finish_image(target, kind, image);
+      if (!warning.empty() && !options.quiet) std::fprintf(stderr, "minrt: warning: %s\n", warning.c_str());
+      if (output.file() == nullptr && !output.open(target, options.write_through, why)) {
+        print_error(style, "minrt: error: " + why);
+        return io_status(style);
+      }
     }
-    if (!write_image(output.file(), kind, image, why) || !output.commit(why)) {
+    const bool written = rows_to_file.started() ? rows_to_file.finish(why) : write_image(output.file(), kind, image, why);
+    if (!written || !output.commit(why)) {
       output.discard();
       print_error(style, "minrt: error: cannot write " + target + ": " + (why.empty() ? "write error" : why));
       return io_status(style);

@@ -12,12 +12,15 @@
 namespace minrt::host {
 
 class LiveWindow;
+class RowFileWriter;
 
 // Renders every row of `scene` into `image` (resized), handing each to
-// `window` as it is done when the window is open. Returns the thread count
-// used. `stop`, when set by another thread, ends the work early (the
-// image is then incomplete).
+// `window` as it is done when the window is open, and to `file` (started)
+// on the thread that rendered it. Returns the thread count used. `stop`,
+// when set by another thread, ends the work early (the image is then
+// incomplete). Rows that only `file` takes are not kept: `image` then has
+// its size and no pixels, and each thread renders into a row of its own.
 int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
-                const std::atomic<bool>* stop = nullptr);
+                const std::atomic<bool>* stop = nullptr, RowFileWriter* file = nullptr);
 
 }  // namespace minrt::host

@@ -63,6 +63,7 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, std::string& e
     s->height = s->scene.height;
     s->output_name = in.path == "-" ? "-" : jaworski_output_name(in.path);
     s->path = "operation for operation (render/jaworski)";
+    s->rows_final = true;
     return s;
   }
 }
