@@ -45,6 +45,12 @@ bool RowFileWriter::start(std::FILE* f, ImageFile kind, int width, int height) {
   width_ = width;
   height_ = height;
   header_bytes_ = header_bytes;
+  // The file's blocks reserved now: a file still waiting for its blocks
+  // (ext4's delayed allocation) gets them, and its pages sent to the disk,
+  // when it is renamed over an existing one, which is after the last row.
+  // Where the system cannot (EOPNOTSUPP), the rows are written all the same.
+  const auto total = static_cast<off_t>(header_bytes + static_cast<std::size_t>(height) * row_bytes_);
+  if (total > 0) (void)::fallocate(fd, 0, 0, total);
   return put(header, header_bytes, 0);
 }
 
