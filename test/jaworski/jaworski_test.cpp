@@ -167,3 +167,84 @@ TEST_CASE("Jaworski reader: numbers, names, case and comments", "[jaworski][read
   REQUIRE(nested.s.kind == minrt::jaworski::SurfaceKind::kMixed);
   CHECK(s.parts[s.parts[nested.s.first_part].next].weight == 2.0);
 }
+
+namespace {
+
+// Runs `command` in sh with MINRT standing for the binary; the status.
+int shell(const std::string& command) {
+  const int rc = std::system(("MINRT='" + std::string(MINRT_BIN) + "'; " + command).c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+}  // namespace
+
+// The rows go to a BMP or PPM file as they are rendered, each at its place
+// (host/row_file_writer.hpp); standard output that is not an empty file at
+// its start (a pipe, a file opened to append) gets the image written whole
+// after the render. Every way gives the same image.
+TEST_CASE("Jaworski: rows written as rendered: file, standard output, pipe, append and PPM agree",
+          "[jaworski][output]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  const std::string scene = jw_dir() + "colour-names-all.txt";
+  const std::string golden = minrt::test::read_file(jw_dir() + "colour-names-all.bmp");
+  REQUIRE(golden.size() > 54);
+  char dir_buf[] = "/tmp/minrt-jw-XXXXXX";
+  REQUIRE(mkdtemp(dir_buf) != nullptr);
+  const std::string dir = dir_buf;
+  const std::string q = "'" + scene + "'";
+
+  CHECK(shell("$MINRT -q --threads 2 -o - " + q + " >'" + dir + "/stdout.bmp'") == 0);
+  CHECK(minrt::test::read_file(dir + "/stdout.bmp") == golden);
+  CHECK(shell("$MINRT -q --threads 2 -o - " + q + " | cat >'" + dir + "/pipe.bmp'") == 0);
+  CHECK(minrt::test::read_file(dir + "/pipe.bmp") == golden);
+  CHECK(shell("printf before >'" + dir + "/append.bmp' && $MINRT -q -o - " + q + " >>'" + dir + "/append.bmp'") == 0);
+  CHECK(minrt::test::read_file(dir + "/append.bmp") == "before" + golden);
+
+  // The PPM: the BMP's pixels (BGRA, bottom row first) as RGB, top row first.
+  REQUIRE(shell("$MINRT -q --threads 3 -o '" + dir + "/out.ppm' " + q) == 0);
+  const std::string ppm = minrt::test::read_file(dir + "/out.ppm");
+  auto u32 = [&](std::size_t at) {
+    return static_cast<uint32_t>(static_cast<unsigned char>(golden[at])) |
+           static_cast<uint32_t>(static_cast<unsigned char>(golden[at + 1])) << 8 |
+           static_cast<uint32_t>(static_cast<unsigned char>(golden[at + 2])) << 16 |
+           static_cast<uint32_t>(static_cast<unsigned char>(golden[at + 3])) << 24;
+  };
+  const uint32_t w = u32(18), h = u32(22);
+  const std::string header = "P6\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+  REQUIRE(ppm.size() == header.size() + std::size_t{3} * w * h);
+  CHECK(ppm.compare(0, header.size(), header) == 0);
+  std::size_t differ = 0;
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c)
+        differ += ppm[header.size() + 3 * (std::size_t{y} * w + x) + c] !=
+                  golden[54 + 4 * (std::size_t{h - 1 - y} * w + x) + (2 - c)];
+  CHECK(differ == 0);
+  for (const char* name : {"stdout.bmp", "pipe.bmp", "append.bmp", "out.ppm"}) std::remove((dir + "/" + name).c_str());
+  rmdir(dir.c_str());
+}
+
+TEST_CASE("Jaworski: a row that cannot be written: one error line, status 1, the old file kept, nothing left",
+          "[jaworski][output]") {
+  if (!minrt::test::shared_available()) {
+    WARN("shared/ test data not found: skipped");
+    return;
+  }
+  char dir_buf[] = "/tmp/minrt-jw-XXXXXX";
+  REQUIRE(mkdtemp(dir_buf) != nullptr);
+  const std::string dir = dir_buf;
+  const std::string out = dir + "/out.bmp", err = dir + "/err.txt";
+  // The file size limit (32 or 64 KiB, sh's unit) lets the header through
+  // and stops the rows of a 128 KiB image; SIGXFSZ ignored makes it EFBIG.
+  const int status = shell("printf before >'" + out + "' && (trap '' XFSZ; ulimit -f 64; $MINRT -q --threads 2 -o '" +
+                           out + "' '" + jw_dir() + "colour-names-all.txt' 2>'" + err + "')");
+  CHECK(status == 1);
+  CHECK(minrt::test::read_file(err) == "minrt: error: cannot write " + out + ": File too large\n");
+  CHECK(minrt::test::read_file(out) == "before");
+  std::remove(out.c_str());
+  std::remove(err.c_str());
+  CHECK(rmdir(dir.c_str()) == 0);  // no temporary file left beside it
+}
