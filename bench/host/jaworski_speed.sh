@@ -3,22 +3,27 @@
 # built by hand outside this repository: pass its binary) on the issue's scene:
 # 640x480, 20 spheres, a mirror floor, 2 lights, ray depth 4
 # (bench/host/make_jaworski_scene.py).
-#   bench/host/jaworski_speed.sh [--runs N] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]
+#   bench/host/jaworski_speed.sh [--runs N] [--minrt BINARY] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]
 # e.g. bench/host/jaworski_speed.sh /work/ext/jaworski/ray-tracer +RTS -N -RTS
 # Checks first that both write the same BMP, byte for byte; then runs minrt on
 # one thread, minrt on every core and the original in turn, N times each,
 # and prints the medians of the wall and CPU times (user + system, from
 # bash's time), the ratios to the original and what every core gives over
-# one thread. On a loaded machine the CPU times are the
-# steadier measure: a short run's wall time is mostly waiting for a core.
+# one thread. --minrt: the minrt to measure (default build/release/host/minrt).
+# The load average is printed before and after the runs: the cores' gain is
+# a wall-time figure and means something only on an idle machine (load
+# well under 1); on a loaded one the CPU times are the steadier measure, a
+# short run's wall time being mostly waiting for a core.
 . "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=7
-usage() { echo "usage: $0 [--runs N] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2; exit 2; }
+minrt=$root/build/release/host/minrt
+usage() { echo "usage: $0 [--runs N] [--minrt BINARY] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2; exit 2; }
 while (($#)); do
   case $1 in
     --runs) [[ $# -ge 2 ]] || usage; runs=$2; shift 2 ;;
+    --minrt) [[ $# -ge 2 ]] || usage; minrt=$2; shift 2 ;;
     *) break ;;
   esac
 done
@@ -26,8 +31,7 @@ done
 original=$1
 shift
 original_opts=("$@")
-minrt=$root/build/release/host/minrt
-[[ -x $minrt ]] || { echo "build first: scripts/setup.sh" >&2; exit 1; }
+[[ -x $minrt ]] || { echo "not built: $minrt (scripts/setup.sh builds it)" >&2; exit 1; }
 [[ -x $original ]] || { echo "not an executable: $original" >&2; exit 1; }
 
 work=$(mktemp -d)
@@ -53,6 +57,7 @@ seconds() {
 }
 median() { sort -g | awk '{a[NR]=$1} END{print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 
+load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 declare -A wall cpu
 names=(one all theirs)
 for ((i = 0; i < runs; i++)); do
@@ -68,7 +73,8 @@ for ((i = 0; i < runs; i++)); do
 done
 med() { tr ' ' '\n' <<<"$1" | grep . | median; }
 cpu_model=$(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo)
-printf 'cpu: %s, %s cores; load average %s\n' "$cpu_model" "$(nproc)" "$(cut -d' ' -f1-3 /proc/loadavg)"
+printf 'cpu: %s, %s cores; load average %s before the runs, %s after\n' "$cpu_model" "$(nproc)" "$load_before" \
+  "$(cut -d' ' -f1-3 /proc/loadavg)"
 printf '640x480, 20 spheres, 2 lights, ray depth 4; medians of %d interleaved runs (seconds)\n' "$runs"
 printf '  %-26s %8s %8s   %s\n' program wall cpu 'wall times'
 label() {
@@ -83,6 +89,7 @@ for name in "${names[@]}"; do
 done
 awk -v tw="$(med "${wall[theirs]}")" -v tc="$(med "${cpu[theirs]}")" \
   -v ow="$(med "${wall[one]}")" -v oc="$(med "${cpu[one]}")" -v aw="$(med "${wall[all]}")" \
+  -v ac="$(med "${cpu[all]}")" \
   'BEGIN{printf "  ratio, wall: original / minrt 1 thread %.1fx, / minrt all cores %.1fx\n", tw / ow, tw / aw;
          printf "  ratio, cpu:  original / minrt 1 thread %.1fx\n", tc / oc;
-         printf "  all cores / 1 thread, wall: %.2fx\n", ow / aw}'
+         printf "  all cores / 1 thread, wall: %.2fx (cpu: all cores take %.2fx of one thread'"'"'s)\n", ow / aw, ac / oc}'
