@@ -193,7 +193,8 @@ int run_driver(const DriverOptions& options) {
         return io_status(style);
       }
     }
-    const bool written = rows_to_file.started() ? rows_to_file.finish(why) : write_image(output.file(), kind, image, why);
+    const bool written =
+        rows_to_file.started() ? rows_to_file.finish(why) : write_image(output.file(), kind, image, why);
     if (!written || !output.commit(why)) {
       output.discard();
       print_error(style, "minrt: error: cannot write " + target + ": " + (why.empty() ? "write error" : why));

@@ -92,4 +92,4 @@ awk -v tw="$(med "${wall[theirs]}")" -v tc="$(med "${cpu[theirs]}")" \
   -v ac="$(med "${cpu[all]}")" \
   'BEGIN{printf "  ratio, wall: original / minrt 1 thread %.1fx, / minrt all cores %.1fx\n", tw / ow, tw / aw;
          printf "  ratio, cpu:  original / minrt 1 thread %.1fx\n", tc / oc;
-         printf "  all cores / 1 thread, wall: %.2fx (cpu: all cores take %.2fx of one thread'"'"'s)\n", ow / aw, ac / oc}'
+         printf "  all cores / 1 thread, wall: %.2fx (all cores use %.2fx the cpu)\n", ow / aw, ac / oc}'
