@@ -15,7 +15,7 @@ fi
 log=$(mktemp)
 set +e
 "$root/scripts/setup.sh" 2>&1 | tee "$log" |
-  grep --line-buffered -E '^setup:|^\[ *[0-9]+%\] (Built target|Linking)' >&2
+  grep --line-buffered -E '^setup:|^\[ *[0-9]+%\] (Built target|Linking|Performing build step|Training)' >&2
 setup_status=${PIPESTATUS[0]}
 set -e
 if [[ $setup_status -ne 0 ]]; then

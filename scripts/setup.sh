@@ -50,11 +50,15 @@ else
 fi
 
 cd "$root"
-# CI builds with warnings as errors; a user's build only shows them.
-werror=()
-if [[ ${CI:-} == true ]]; then werror=(-DMINRT_WERROR=ON); fi
-echo "setup: configuring build/release (cmake --preset host-release ${werror[*]})" >&2
-cmake --preset host-release "${werror[@]}" >/dev/null
+# The preset sets every option, so a -D given to build/release by hand
+# before is undone here (docs/building.md). CI builds with warnings as
+# errors; a user's build only shows them. Shared data elsewhere than
+# ../shared: MINRT_SHARED_DIR in the environment.
+options=()
+if [[ ${CI:-} == true ]]; then options+=(-DMINRT_WERROR=ON); fi
+if [[ -n ${MINRT_SHARED_DIR:-} ]]; then options+=("-DMINRT_SHARED_DIR=$MINRT_SHARED_DIR"); fi
+echo "setup: configuring build/release (cmake --preset host-release ${options[*]})" >&2
+cmake --preset host-release "${options[@]}" >/dev/null
 echo "setup: building with $(nproc) jobs (a first build takes a few minutes; progress below)" >&2
 cmake --build --preset host-release -j "$(nproc)"
 echo "setup: build complete" >&2
