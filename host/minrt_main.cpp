@@ -3,6 +3,8 @@
 // the other formats like each one's own program (render_driver.hpp).
 // Installed as `miniRT` too, it follows the 42 subject's contract: one .rt
 // argument, every failure "Error" and a line, never standard input.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstring>
 #include <new>
@@ -11,6 +13,7 @@
 #include "core/base/text_numbers.hpp"
 #include "format_sides/minirt_host.hpp"
 #include "posix/command_line.hpp"
+#include "posix/interrupt.hpp"
 #include "render_driver.hpp"
 
 namespace {
@@ -43,7 +46,7 @@ const std::vector<Option>& options_table() {
        "let a scene's own output name (CS418's png line,\n"
        "EASTRAY's output) leave the scene's and the working folder"},
       {"sync", 0, nullptr, "make the -o file durable (fsync) before exiting;\nwithout it the file is still replaced whole or not at all"},
-      {"quiet", 'q', nullptr, "no warnings on standard error"},
+      {"quiet", 'q', nullptr, "no warnings and no progress line on standard error\n(a render over about 2 s draws one on a terminal)"},
       {"no-save", 'n', nullptr, "render without saving the image"},
       {"show", 's', nullptr,
        "show the image in a window as it is rendered; it stays\n"
@@ -93,7 +96,8 @@ void print_help(std::FILE* f, const std::string& program) {
   std::fputs(
       "\n"
       "Errors are printed as FILE:LINE:COL: error: MESSAGE; exit status 2 (1 when\n"
-      "the image cannot be written).\n",
+      "the image cannot be written). Ctrl-C ends minrt with status 130 and leaves no\n"
+      "file behind.\n",
       f);
 }
 
@@ -210,6 +214,7 @@ int run(int argc, char** argv) {
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (host::variant_name(o.variant) == nullptr)
     return usage_error("this combination of --precision and --shims is not built (portable shims are float only)");
+  o.progress = !o.quiet && ::isatty(STDERR_FILENO) != 0;
   // An image is cheap to render again, and syncing took a tenth of a small
   // render's run: atomic replacement by default, durability on request.
   o.durability = sync ? host::Durability::kSynced : host::Durability::kRenameOnly;
@@ -219,6 +224,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   // Memory is taken from the scene's content (host/format_sides/scene_memory.hpp);
   // what the system still refuses ends the run with a line, never an abort.
+  // Ctrl-C and the other ending signals leave no temporary file behind and
+  // end minrt with the signal's status (130 for Ctrl-C): posix/interrupt.hpp.
+  minrt::host::install_signal_cleanup();
   try {
     return run(argc, argv);
   } catch (const std::bad_alloc&) {

@@ -150,6 +150,8 @@ int run_driver(const DriverOptions& options) {
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   }
 
+  WorkProgress progress(options.progress, "minrt: rendering", "rows",
+                        static_cast<std::uint64_t>(scene->height) * scene->views, kProgressAfterSeconds);
   for (int view = 0; view < scene->views; ++view) {
     scene->select_view(view);
     RgbaImage image;
@@ -158,7 +160,8 @@ int run_driver(const DriverOptions& options) {
     // at once, without finishing the render. The window shows the first view.
     LiveWindow* shown = view == 0 ? &window : nullptr;
     const int threads =
-        render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr);
+        render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr, &progress);
+    progress.finish();
     const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (window_only && window.closed()) {
       window.finish_and_wait(why);

@@ -9,7 +9,7 @@
 namespace minrt::host {
 
 int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
-                const std::atomic<bool>* stop) {
+                const std::atomic<bool>* stop, WorkProgress* progress) {
   image.width = scene.width;
   image.height = scene.height;
   image.rgba.assign(static_cast<std::size_t>(scene.width) * scene.height * 4, 0);
@@ -23,6 +23,7 @@ int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveW
       uint8_t* row = image.rgba.data() + static_cast<std::size_t>(y) * scene.width * 4;
       scene.render_row(y, row);
       if (live) window->row_rgba(y, row);
+      if (progress != nullptr) progress->add();
     }
   };
   std::vector<std::thread> pool;

@@ -6,6 +6,8 @@
 
 #include <atomic>
 
+#include "posix/progress_line.hpp"
+
 #include "png_io.hpp"
 #include "prepared_scene.hpp"
 
@@ -14,10 +16,10 @@ namespace minrt::host {
 class LiveWindow;
 
 // Renders every row of `scene` into `image` (resized), handing each to
-// `window` as it is done when the window is open. Returns the thread count
-// used. `stop`, when set by another thread, ends the work early (the
-// image is then incomplete).
+// `window` as it is done when the window is open, and counting it in
+// `progress` when given. Returns the thread count used. `stop`, when set by
+// another thread, ends the work early (the image is then incomplete).
 int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
-                const std::atomic<bool>* stop = nullptr);
+                const std::atomic<bool>* stop = nullptr, WorkProgress* progress = nullptr);
 
 }  // namespace minrt::host

@@ -64,9 +64,4 @@ class SerialPort {
   std::string baud_warning_;
 };
 
-// Set from SIGINT/SIGTERM/SIGHUP handlers installed by install_signal_handlers;
-// the transfer loops poll it so the port is restored on the way out.
-extern volatile int g_interrupted;
-void install_signal_handlers();
-
 }  // namespace minrt::send
