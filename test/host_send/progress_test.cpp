@@ -20,7 +20,7 @@ TEST_CASE("host-send's lines: upload, the wait with its timeout, the reply", "[p
 
 TEST_CASE("minrt's line: percentage, rows and time left", "[progress]") {
   CHECK(minrt::host::WorkProgress::format("minrt: rendering", 1843, 4096, "rows", 3725) ==
-        "minrt: rendering [#########...........]  44%  1843/4096 rows  ETA 1:02:05");
+        "minrt: rendering [########............]  44%  1843/4096 rows  ETA 1:02:05");
   CHECK(minrt::host::progress_bar(1.5, 4) == "[####]");
   CHECK(minrt::host::progress_bar(-1, 4) == "[....]");
 }
