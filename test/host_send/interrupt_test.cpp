@@ -163,3 +163,98 @@ TEST_CASE("Ctrl-C during host-send's transfer: status 130, no file, no simulator
   CHECK(entries(work.path).empty());
   CHECK(hs_test::read_file(err).find("error") == std::string::npos);  // an interrupt is not reported as a failure
 }
+
+#include "posix/interrupt.hpp"
+
+namespace {
+
+// Runs `body` in a child process with the default signal actions (the test
+// runner's own handlers are not inherited by what the tools see) and
+// returns its wait status.
+template <class Body>
+int in_child(Body body) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGUSR1}) ::signal(sig, SIG_DFL);
+    body();
+    ::_exit(0);
+  }
+  int st = 0;
+  ::waitpid(pid, &st, 0);
+  return st;
+}
+
+}  // namespace
+
+TEST_CASE("posix/interrupt: the temporary file is removed and the process dies of the signal", "[interrupt]") {
+  hs_test::TempDir dir;
+  const std::string temp = dir.file("out.ppm.partial.abc123");
+  for (int sig : {SIGINT, SIGTERM, SIGUSR1}) {
+    std::ofstream(temp) << "half an image";
+    const int st = in_child([&] {
+      minrt::host::remove_on_signal(temp.c_str());
+      ::raise(sig);
+      ::_exit(3);  // not reached
+    });
+    INFO("signal " << sig);
+    REQUIRE(WIFSIGNALED(st));
+    CHECK(WTERMSIG(st) == sig);
+    CHECK_FALSE(hs_test::file_exists(temp));
+  }
+  // Forgotten once complete: the file stays.
+  std::ofstream(temp) << "a whole image";
+  const int st = in_child([&] {
+    minrt::host::remove_on_signal(temp.c_str());
+    minrt::host::forget_removal();
+    ::raise(SIGINT);
+  });
+  CHECK(WIFSIGNALED(st));
+  CHECK(hs_test::file_exists(temp));
+}
+
+TEST_CASE("posix/interrupt: held, an interrupt is only noted until the last release", "[interrupt]") {
+  hs_test::TempDir dir;
+  const std::string mark = dir.file("unwound");
+  const int st = in_child([&] {
+    minrt::host::hold_interrupts();
+    minrt::host::hold_interrupts();
+    if (minrt::host::interrupted()) ::_exit(4);
+    ::raise(SIGINT);
+    if (!minrt::host::interrupted()) ::_exit(5);
+    minrt::host::release_interrupts();  // still held once
+    std::ofstream(mark) << "the loop noticed and unwound";
+    minrt::host::release_interrupts();  // dies here
+    ::_exit(6);
+  });
+  REQUIRE(WIFSIGNALED(st));
+  CHECK(WTERMSIG(st) == SIGINT);
+  CHECK(hs_test::file_exists(mark));
+}
+
+TEST_CASE("posix/interrupt: a registered child is stopped when the process dies of a signal", "[interrupt]") {
+  int fds[2];
+  REQUIRE(::pipe(fds) == 0);
+  const int st = in_child([&] {
+    const pid_t child = ::fork();
+    if (child == 0) {
+      ::pause();
+      ::_exit(0);
+    }
+    (void)!::write(fds[1], &child, sizeof child);
+    minrt::host::stop_on_signal(child);
+    ::raise(SIGTERM);
+  });
+  CHECK(WIFSIGNALED(st));
+  CHECK(WTERMSIG(st) == SIGTERM);
+  pid_t child = 0;
+  REQUIRE(::read(fds[0], &child, sizeof child) == sizeof child);
+  ::close(fds[0]);
+  ::close(fds[1]);
+  bool gone = false;
+  for (int i = 0; i < 100 && !gone; ++i) {
+    gone = !alive(child);
+    if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (!gone) ::kill(child, SIGKILL);
+  CHECK(gone);
+}
