@@ -150,7 +150,9 @@ int run_driver(const DriverOptions& options) {
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   }
 
-  WorkProgress progress(options.progress, "minrt: rendering", "rows",
+  // Not between the image's bytes on a terminal (-o -).
+  const bool progress_shown = options.progress && !(out_path == "-" && ::isatty(STDOUT_FILENO) != 0);
+  WorkProgress progress(progress_shown, "minrt: rendering", "rows",
                         static_cast<std::uint64_t>(scene->height) * scene->views, kProgressAfterSeconds);
   for (int view = 0; view < scene->views; ++view) {
     scene->select_view(view);

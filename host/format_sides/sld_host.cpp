@@ -2,6 +2,8 @@
 // renderer finishes rows (render_variants.cpp), to standard output or -o.
 #include "sld_host.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -85,9 +87,10 @@ int stream_sld(const SceneInput& in, const DriverOptions& options) {
   WarningContext wctx{in.shown.c_str()};
   WarningSink warnings;
   if (!options.quiet) warnings = WarningSink{&print_warning, &wctx};
-  // The progress line counts the rows as they go to the writer, in order.
-  WorkProgress progress(options.progress, "minrt: rendering", "rows", static_cast<std::uint64_t>(render.height),
-                        kProgressAfterSeconds);
+  // The progress line counts the rows as they go to the writer, in order;
+  // never between the image's bytes on a terminal.
+  WorkProgress progress(options.progress && (to_file || ::isatty(STDOUT_FILENO) == 0), "minrt: rendering", "rows",
+                        static_cast<std::uint64_t>(render.height), kProgressAfterSeconds);
   PpmWriter ppm(sink, render.format);
   struct CountedRows {
     RowSink out;
