@@ -3,6 +3,8 @@
 // the other formats like each one's own program (render_driver.hpp).
 // Installed as `miniRT` too, it follows the 42 subject's contract: one .rt
 // argument, every failure "Error" and a line, never standard input.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstring>
 #include <new>
@@ -11,6 +13,7 @@
 #include "core/base/text_numbers.hpp"
 #include "format_sides/minirt_host.hpp"
 #include "posix/command_line.hpp"
+#include "posix/interrupt.hpp"
 #include "render_driver.hpp"
 
 namespace {
@@ -26,41 +29,44 @@ const std::vector<Option>& options_table() {
        "word: 'png' means CS418, a header field such as\n"
        "imWidth Jaworski, an element such as 'sp' miniRT)"},
       {"size", 0, "WxH", "image size (SLD default 512x512, miniRT 800x600; the\nother formats take it from the scene)"},
-      {"format", 0, "p3|p6", "SLD: PPM flavour (default p3, the original's text form)"},
+      {"format", 0, "p3|p6", "SLD: PPM flavour (default p3, the original's text\nform)"},
       {"precision", 0, "double|float", "floating-point type (default double)"},
       {"shims", 0, "NAME",
        "math routines: libm (default), portable,\n"
-       "portable-fast or portable-min: the add/sub/mul/div-only\n"
-       "shims of the firmware (float only); -fast is cheaper,\n"
-       "-min just meets the course's error rules"},
+       "portable-fast or portable-min: the add/sub/mul/div-\n"
+       "only shims of the firmware (float only); -fast is\n"
+       "cheaper, -min just meets the course's error rules"},
       {"output", 'o', "FILE",
        "write the image to FILE (complete or not at all; a\n"
-       "FIFO, device or symbolic link is refused; - is stdout);\n"
-       "its extension picks the kind: .png, .ppm, .bmp, .tif,\n"
-       "else the format's own"},
+       "FIFO, device or symbolic link is refused; - is\n"
+       "stdout); its extension picks the kind: .png, .ppm,\n"
+       ".bmp, .tif, else the format's own"},
       {"write-through", 0, nullptr, "write into a FIFO, device or link given to -o"},
       {"allow-any-output", 0, nullptr,
        "let a scene's own output name (CS418's png line,\n"
-       "EASTRAY's output) leave the scene's and the working folder"},
-      {"sync", 0, nullptr, "make the -o file durable (fsync) before exiting;\nwithout it the file is still replaced whole or not at all"},
-      {"quiet", 'q', nullptr, "no warnings on standard error"},
+       "EASTRAY's output) leave the scene's and the working\n"
+       "folder"},
+      {"sync", 0, nullptr, "make the -o file durable (fsync) before exiting;\nwithout it the file is still replaced whole or not\nat all"},
+      {"quiet", 'q', nullptr, "no warnings and no progress line on standard error\n(a render over about 2 s draws one on a terminal)"},
       {"no-save", 'n', nullptr, "render without saving the image"},
       {"show", 's', nullptr,
-       "show the image in a window as it is rendered; it stays\n"
-       "until closed (ESC, q or the close button); without a\n"
-       "display a one-line warning, and the file is still written"},
+       "show the image in a window as it is rendered; it\n"
+       "stays until closed (ESC, q or the close button);\n"
+       "without a display a one-line warning, and the file\n"
+       "is still written"},
       {"threads", 0, "N", "render rows on N threads (default: every core; the\nimage is the same for any N)"},
       {"seed", 0, "N", "random numbers for aa, dof, roughness, gi (default 1)"},
       {"all-features", 0, nullptr, "render on the path with every feature compiled in\n(for measuring what the specialised paths save)"},
       {"full-tree", 0, nullptr,
-       "trace every reflected, refracted and GI ray; by default\n"
-       "rays that can change a pixel by less than 1/65536 of\n"
-       "the brightest radiance are skipped"},
+       "trace every reflected, refracted and GI ray; by\n"
+       "default rays that can change a pixel by less than\n"
+       "1/65536 of the brightest radiance are skipped"},
       {"stats", 0, nullptr, "say which format and path rendered the scene and how\nlong the parse, the BVH and the render took"},
       {"mandatory", 0, nullptr,
-       "miniRT: the subject's mandatory part only: A, C, L, sp,\n"
-       "pl, cy, one L (colour optional, white), ambient and diffuse"},
-      {"cylinder-base", 0, nullptr, "miniRT: a cylinder's point is its base centre, not its\ncentre"},
+       "miniRT: the subject's mandatory part only: A, C, L,\n"
+       "sp, pl, cy, one L (colour optional, white), ambient\n"
+       "and diffuse"},
+      {"cylinder-base", 0, nullptr, "miniRT: a cylinder's point is its base centre, not\nits centre"},
       {"help", 'h', nullptr, "this text"},
       {"version", 0, nullptr, "version"},
   };
@@ -93,7 +99,8 @@ void print_help(std::FILE* f, const std::string& program) {
   std::fputs(
       "\n"
       "Errors are printed as FILE:LINE:COL: error: MESSAGE; exit status 2 (1 when\n"
-      "the image cannot be written).\n",
+      "the image cannot be written). Ctrl-C ends minrt with status 130 and leaves no\n"
+      "file behind.\n",
       f);
 }
 
@@ -210,6 +217,7 @@ int run(int argc, char** argv) {
   if (!scenes.empty()) o.scene_path = scenes[0];
   if (host::variant_name(o.variant) == nullptr)
     return usage_error("this combination of --precision and --shims is not built (portable shims are float only)");
+  o.progress = !o.quiet && ::isatty(STDERR_FILENO) != 0;
   // An image is cheap to render again, and syncing took a tenth of a small
   // render's run: atomic replacement by default, durability on request.
   o.durability = sync ? host::Durability::kSynced : host::Durability::kRenameOnly;
@@ -219,6 +227,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   // Memory is taken from the scene's content (host/format_sides/scene_memory.hpp);
   // what the system still refuses ends the run with a line, never an abort.
+  // Ctrl-C and the other ending signals leave no temporary file behind and
+  // end minrt with the signal's status (130 for Ctrl-C): posix/interrupt.hpp.
+  minrt::host::install_signal_cleanup();
   try {
     return run(argc, argv);
   } catch (const std::bad_alloc&) {

@@ -28,6 +28,7 @@ struct DriverOptions {
   bool save = true;                         // -n turns it off
   bool show = false;                        // --show
   bool quiet = false;                       // -q: no warnings
+  bool progress = false;                    // the progress line on stderr for long renders (minrt: on a terminal)
   bool stats = false;                       // --stats
   bool write_through = false;
   bool allow_any_output = false;            // a scene's own output name may leave its and the working folder
@@ -50,6 +51,10 @@ struct DriverOptions {
 struct SceneInput {
   std::string path, shown, base_dir, text;
 };
+
+// A render shows its progress line only once it has run this long and will
+// take at least twice that in all (posix/progress_line.hpp).
+inline constexpr double kProgressAfterSeconds = 1.0;
 
 // A scene ready to render. render_row may be called from several threads
 // at once, each row once.

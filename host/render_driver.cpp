@@ -151,6 +151,10 @@ int run_driver(const DriverOptions& options) {
     std::fprintf(stderr, "minrt: warning: not showing the image: %s\n", why.c_str());
   }
 
+  // Not between the image's bytes on a terminal (-o -).
+  const bool progress_shown = options.progress && !(out_path == "-" && ::isatty(STDOUT_FILENO) != 0);
+  WorkProgress progress(progress_shown, "minrt: rendering", "rows",
+                        static_cast<std::uint64_t>(scene->height) * scene->views, kProgressAfterSeconds);
   for (int view = 0; view < scene->views; ++view) {
     scene->select_view(view);
     const std::string target = out_path.empty() ? std::string() : scene->view_output_name(out_path, view);
@@ -172,7 +176,8 @@ int run_driver(const DriverOptions& options) {
     LiveWindow* shown = view == 0 ? &window : nullptr;
     const int threads =
         render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr,
-                    rows_to_file.started() ? &rows_to_file : nullptr);
+                    rows_to_file.started() ? &rows_to_file : nullptr, &progress);
+    progress.finish();
     const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (window_only && window.closed()) {
       window.finish_and_wait(why);

@@ -10,7 +10,7 @@
 namespace minrt::host {
 
 int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
-                const std::atomic<bool>* stop, RowFileWriter* file) {
+                const std::atomic<bool>* stop, RowFileWriter* file, WorkProgress* progress) {
   image.width = scene.width;
   image.height = scene.height;
   const int n = minrt_thread_count(threads, scene.height);
@@ -31,6 +31,7 @@ int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveW
       scene.render_row(y, row);
       if (live) window->row_rgba(y, row);
       if (file != nullptr) file->row(y, row);
+      if (progress != nullptr) progress->add();
     }
   };
   std::vector<std::thread> pool;

@@ -6,6 +6,8 @@
 
 #include <atomic>
 
+#include "posix/progress_line.hpp"
+
 #include "png_io.hpp"
 #include "prepared_scene.hpp"
 
@@ -15,12 +17,14 @@ class LiveWindow;
 class RowFileWriter;
 
 // Renders every row of `scene` into `image` (resized), handing each to
-// `window` as it is done when the window is open, and to `file` (started)
-// on the thread that rendered it. Returns the thread count used. `stop`,
-// when set by another thread, ends the work early (the image is then
-// incomplete). Rows that only `file` takes are not kept: `image` then has
-// its size and no pixels, and each thread renders into a row of its own.
+// `window` as it is done when the window is open, to `file` (started) on
+// the thread that rendered it, and counting it in `progress` when given.
+// Returns the thread count used. `stop`, when set by another thread, ends
+// the work early (the image is then incomplete). Rows that only `file`
+// takes are not kept: `image` then has its size and no pixels, and each
+// thread renders into a row of its own.
 int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
-                const std::atomic<bool>* stop = nullptr, RowFileWriter* file = nullptr);
+                const std::atomic<bool>* stop = nullptr, RowFileWriter* file = nullptr,
+                WorkProgress* progress = nullptr);
 
 }  // namespace minrt::host

@@ -56,7 +56,9 @@ bool parse(int argc, char** argv, const std::vector<Option>& options, const Hand
       error = spelled(*option) + " takes no value";
       return false;
     }
-    if (option->value != nullptr && !inline_value) {
+    if (option->value != nullptr && !inline_value && option->is_value != nullptr) {
+      if (i + 1 < argc && option->is_value(argv[i + 1])) value = argv[++i];
+    } else if (option->value != nullptr && !inline_value) {
       if (i + 1 >= argc) {
         error = spelled(*option) + " needs a value";
         return false;
@@ -75,7 +77,7 @@ void print_options(std::FILE* f, const std::vector<Option>& options) {
     std::string left = "  ";
     left += o.letter != 0 ? std::string("-") + o.letter + ", " : "    ";
     left += spelled(o);
-    if (o.value != nullptr) left += std::string(" ") + o.value;
+    if (o.value != nullptr) left += o.is_value != nullptr ? std::string(" [") + o.value + "]" : std::string(" ") + o.value;
     const char* help = o.help;
     bool first = true;
     while (first || *help != 0) {

@@ -5,6 +5,7 @@
 //
 // Accepted forms: `--name VALUE`, `--name=VALUE`, `-x VALUE`, `-x` for
 // flags, `--` ends the options, `-` alone is an operand (standard input).
+// An option may take its value optionally (host-send's `--sim [ELF]`).
 #pragma once
 
 #include <cstdio>
@@ -19,6 +20,9 @@ struct Option {
   char letter = 0;         // 'o' for -o, 0 when none
   const char* value = nullptr;  // the value's name in the help ("WxH"); null for a flag
   const char* help = "";   // one or more lines, '\n' between them
+  // Set when the value may be left out (the help shows [VALUE]): it is then
+  // given as `--name=VALUE`, or is the next argument when this says so; else "".
+  bool (*is_value)(const char* next) = nullptr;
 };
 
 // Called for each option in order with its row and value ("" for a flag),

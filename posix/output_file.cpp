@@ -1,7 +1,8 @@
 #include "posix/output_file.hpp"
 
+#include "posix/interrupt.hpp"
+
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -18,40 +19,11 @@
 namespace minrt::host {
 namespace {
 
-// The temporary file a signal handler must remove (one per process is all
-// the tools need): a fixed buffer, so the handler only calls unlink.
-char g_temp[4096];
-volatile sig_atomic_t g_have_temp = 0;
+// The temporary file a signal must remove (posix/interrupt.hpp): one per
+// process is all the tools need.
+void register_temp(const std::string& temp) { remove_on_signal(temp.c_str()); }
 
-void remove_temp_and_die(int sig) {
-  if (g_have_temp) ::unlink(g_temp);
-  ::signal(sig, SIG_DFL);
-  ::raise(sig);
-}
-
-// Every signal whose default action ends the process and that a handler
-// can catch (SIGKILL and SIGSTOP cannot be: O_TMPFILE covers SIGKILL, below).
-constexpr int kFatalSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGUSR1, SIGUSR2,   SIGALRM, SIGPIPE,
-                                 SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF, SIGABRT, SIGSEGV, SIGBUS, SIGILL,
-                                 SIGFPE,  SIGSYS,  SIGTRAP};
-
-void register_temp(const std::string& temp) {
-  static bool installed = false;
-  if (!installed) {
-    for (int sig : kFatalSignals) {
-      struct sigaction old {};
-      ::sigaction(sig, nullptr, &old);
-      if (old.sa_handler == SIG_DFL) ::signal(sig, remove_temp_and_die);  // leave a tool's own handler be
-    }
-    installed = true;
-  }
-  if (temp.size() < sizeof g_temp) {
-    std::memcpy(g_temp, temp.c_str(), temp.size() + 1);
-    g_have_temp = 1;
-  }
-}
-
-void unregister_temp() { g_have_temp = 0; }
+void unregister_temp() { forget_removal(); }
 
 // OUT.partial.XXXXXX beside OUT, its last component cut so that the name
 // fits NAME_MAX (a 254-byte OUT is a valid name; its temporary must be too).

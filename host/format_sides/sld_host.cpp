@@ -2,12 +2,15 @@
 // renderer finishes rows (render_variants.cpp), to standard output or -o.
 #include "sld_host.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 
 #include "image_stream_decoder.hpp"
 #include "image_window.hpp"
+#include "posix/progress_line.hpp"
 #include "stdio_stream.hpp"
 
 namespace minrt::host {
@@ -84,9 +87,25 @@ int stream_sld(const SceneInput& in, const DriverOptions& options) {
   WarningContext wctx{in.shown.c_str()};
   WarningSink warnings;
   if (!options.quiet) warnings = WarningSink{&print_warning, &wctx};
+  // The progress line counts the rows as they go to the writer, in order;
+  // never between the image's bytes on a terminal.
+  WorkProgress progress(options.progress && (to_file || ::isatty(STDOUT_FILENO) == 0), "minrt: rendering", "rows",
+                        static_cast<std::uint64_t>(render.height), kProgressAfterSeconds);
+  PpmWriter ppm(sink, render.format);
+  struct CountedRows {
+    RowSink out;
+    WorkProgress* progress;
+    void begin(int w, int h) { out.begin(w, h); }
+    void row(int y, const uint8_t* rgb) {
+      out.row(y, rgb);
+      progress->add();
+    }
+    void end() { out.end(); }
+  } counted{ppm.sink(), &progress};
   Diagnostic error;
-  const RenderStatus st = render_variant(options.variant, source.source(), sink, render, error, warnings,
-                                         options.threads, window.is_open() ? &to_window : nullptr);
+  const RenderStatus st = render_variant_rows(options.variant, source.source(), row_sink_of(counted), render, error,
+                                              warnings, options.threads, window.is_open() ? &to_window : nullptr);
+  progress.finish();
   const bool write_failed = file_sink.failed || std::fflush(out) != 0;
   if (st != RenderStatus::kOk) {
     output.discard();

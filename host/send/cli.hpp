@@ -1,4 +1,5 @@
-// host-send's command line and the top-level run.
+// host-send's command line: its options (one table, which the help is
+// printed from: posix/command_line.hpp), their checks, the exit statuses.
 #pragma once
 
 #include <cstdint>
@@ -45,15 +46,17 @@ struct Options {
 
 enum class ParseResult { kRun, kHelp, kVersion, kError };
 
+// Fills `options` from argv; kError with the one-line message in `error`.
 ParseResult parse_command_line(int argc, char** argv, Options& options, std::string& error);
 void print_help();
 
-// Exit statuses.
+// SCENE's name without its folder and extension, with `extension` (".ppm").
+std::string default_output(const std::string& scene, const char* extension);
+
+// Exit statuses (a signal ends host-send with its own: 130 for Ctrl-C).
 constexpr int kExitOk = 0;
 constexpr int kExitLink = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitFirmware = 3;
-
-int run(const Options& options);
 
 }  // namespace minrt::send

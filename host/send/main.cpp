@@ -1,8 +1,10 @@
-// host-send: sends an SLD scene to the min-rt firmware and receives the PPM.
+// host-send: sends a scene to the renderer firmware over a serial line (or
+// to firmware-sim) and writes the image it sends back.
 #include <cstdio>
 #include <string>
 
 #include "cli.hpp"
+#include "run.hpp"
 
 int main(int argc, char** argv) {
   minrt::send::Options options;

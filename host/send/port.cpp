@@ -2,11 +2,12 @@
 // glibc's <termios.h>; this file uses only the former.
 #include "port.hpp"
 
+#include "posix/interrupt.hpp"
+
 #include <asm/termbits.h>
 #include <dirent.h>
 #include <fcntl.h>
 #include <poll.h>
-#include <signal.h>
 #include <sys/file.h>
 #include <sys/ioctl.h>
 #include <sys/stat.h>
@@ -22,24 +23,7 @@ static_assert(sizeof(struct termios2) <= 64, "saved settings buffer too small");
 
 namespace minrt::send {
 
-volatile int g_interrupted = 0;
-
 namespace {
-
-// Set while a port is open: only then has a signal something to undo (the
-// port's settings, its lock, the simulator's orderly stop), and the transfer
-// loops see g_interrupted. Before that host-send is reading the scene,
-// preprocessing it or decoding its textures, which keep no state worth an
-// orderly stop: the signal ends the process at once with its own status.
-volatile sig_atomic_t g_port_open = 0;
-
-void on_signal(int sig) {
-  g_interrupted = 1;
-  if (g_port_open == 0) {
-    ::signal(sig, SIG_DFL);
-    ::raise(sig);
-  }
-}
 
 std::string read_small_file(const std::string& path) {
   std::string out;
@@ -70,16 +54,6 @@ long long now_ms() {
 }
 
 }  // namespace
-
-void install_signal_handlers() {
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-  sigaction(SIGHUP, &sa, nullptr);
-  signal(SIGPIPE, SIG_IGN);
-}
 
 std::string describe_holders(const std::string& device) {
   struct stat target {};
@@ -156,7 +130,6 @@ void SerialPort::open(const std::string& device, const PortSettings& settings) {
   std::memcpy(saved_, &t, sizeof t);
   saved_valid_ = true;
   fd_ = fd;
-  g_port_open = 1;
 
   make_raw(t);
   t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | CRTSCTS | CBAUD | (CBAUD << IBSHIFT));
@@ -202,14 +175,13 @@ void SerialPort::close() {
   ::flock(fd_, LOCK_UN);
   ::close(fd_);
   fd_ = -1;
-  g_port_open = 0;
 }
 
 bool SerialPort::write_all(const void* data, std::size_t size, int deadline_ms) {
   const auto* p = static_cast<const std::uint8_t*>(data);
   const long long end = deadline_ms < 0 ? -1 : now_ms() + deadline_ms;
   while (size > 0) {
-    if (g_interrupted) {
+    if (minrt::host::interrupted()) {
       errno = EINTR;
       return false;
     }
@@ -238,7 +210,7 @@ bool SerialPort::write_all(const void* data, std::size_t size, int deadline_ms) 
 long SerialPort::read_some(void* data, std::size_t size, int timeout_ms) {
   const long long end = timeout_ms < 0 ? -1 : now_ms() + timeout_ms;
   for (;;) {
-    if (g_interrupted) {
+    if (minrt::host::interrupted()) {
       errno = EINTR;
       return -1;
     }

@@ -45,10 +45,11 @@ class SerialPort {
   const std::string& baud_warning() const { return baud_warning_; }
 
   // Writes everything; false on error or when `deadline_ms` (from now)
-  // passes first (-1: no limit).
+  // passes first (-1: no limit), or with EINTR once an interrupt is noted
+  // (posix/interrupt.hpp: the caller holds interrupts while the port is open).
   bool write_all(const void* data, std::size_t size, int deadline_ms = -1);
   // Waits up to timeout_ms (-1: forever) for bytes. Returns the count read,
-  // 0 on timeout, -1 on error/hang-up (errno kept).
+  // 0 on timeout, -1 on error/hang-up (errno kept) or interrupt (EINTR).
   long read_some(void* data, std::size_t size, int timeout_ms);
   // Waits until the output has been transmitted.
   void drain();
@@ -63,10 +64,5 @@ class SerialPort {
   std::uint32_t applied_baud_ = 0;
   std::string baud_warning_;
 };
-
-// Set from SIGINT/SIGTERM/SIGHUP handlers installed by install_signal_handlers;
-// the transfer loops poll it so the port is restored on the way out.
-extern volatile int g_interrupted;
-void install_signal_handlers();
 
 }  // namespace minrt::send

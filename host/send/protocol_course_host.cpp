@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "core/base/crc32.hpp"
+#include "posix/interrupt.hpp"
 #include "protocol/protocol_course_board.hpp"
 #include "protocol/scene_check.hpp"
 
@@ -53,7 +54,7 @@ bool send_program(Exchange& ex, const std::string& out, TransferResult& r) {
   std::size_t sent = 0;
   auto last_tx = Clock::now();
   while (sent < out.size()) {
-    if (g_interrupted) {
+    if (minrt::host::interrupted()) {
       r.message = "interrupted";
       return false;
     }

@@ -13,6 +13,7 @@
 #include "core/image/bmp_writer.hpp"
 #include "core/image/png_writer.hpp"
 #include "core/image/ppm_writer.hpp"
+#include "posix/interrupt.hpp"
 #include "protocol/protocol_framed.hpp"
 #include "protocol/text_scene_upload.hpp"
 
@@ -166,7 +167,7 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
   };
 
   for (;;) {
-    if (g_interrupted) return fail(TransferResult::Status::kLinkError, "interrupted");
+    if (minrt::host::interrupted()) return fail(TransferResult::Status::kLinkError, "interrupted");
     const bool sending = sent < out.size();
     pollfd p{fd, static_cast<short>(POLLIN | (sending ? POLLOUT : 0)), 0};
     ::poll(&p, 1, 50);
@@ -179,6 +180,7 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
         return fail(TransferResult::Status::kLinkError, std::string("write error: ") + std::strerror(errno));
       }
     }
+    if (ex.progress && !any_frame) ex.progress->sending(sent, out.size());
     if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
       const ssize_t n = ::read(fd, buf, sizeof buf);
       if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR))

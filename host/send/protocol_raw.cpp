@@ -10,6 +10,7 @@
 #include <minrt/serial_protocol.h>
 
 #include "core/base/crc32.hpp"
+#include "posix/interrupt.hpp"
 #include "protocol/scene_check.hpp"
 
 namespace minrt::send {
@@ -39,7 +40,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
     return r;
   };
   for (;;) {
-    if (g_interrupted) return fail("interrupted");
+    if (minrt::host::interrupted()) return fail("interrupted");
     // Stop sending once the board has started to answer: it has read all it
     // wants (a rejected scene is answered before the end of the upload).
     const bool sending = sent < out.size() && !rx.started();
@@ -60,6 +61,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
         return fail(std::string("write error on ") + ex.port.device() + ": " + std::strerror(errno));
       }
     }
+    if (ex.progress && !rx.started()) ex.progress->sending(sent, out.size());
     if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
       const ssize_t n = ::read(fd, buf, sizeof buf);
       if (n > 0) {

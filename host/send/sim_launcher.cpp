@@ -1,5 +1,7 @@
 #include "sim_launcher.hpp"
 
+#include "posix/interrupt.hpp"
+
 #include <fcntl.h>
 #include <sys/prctl.h>
 #include <poll.h>
@@ -144,6 +146,8 @@ bool SimLauncher::spawn(std::vector<std::string> args, int startup_timeout_ms, s
   }
   ::close(pipefd[1]);
   pid_ = pid;
+  // A signal that ends host-send stops it too (posix/interrupt.hpp).
+  minrt::host::stop_on_signal(pid);
   err_fd_ = pipefd[0];
 
   // Read its output line by line until the pty line shows up.
@@ -225,6 +229,7 @@ int SimLauncher::stop(int timeout_ms) {
     } else if (r > 0) {
       status_ = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     }
+    minrt::host::forget_child(pid_);
     pid_ = -1;
   }
   if (drainer_.joinable()) drainer_.join();

@@ -44,6 +44,26 @@ TEST_CASE("raw protocol end to end against the stand-in board", "[e2e][raw]") {
   }
 }
 
+TEST_CASE("the summary gives the file's size, then the bytes that crossed the line", "[e2e][raw]") {
+  hs_test::TempDir dir;
+  const std::string out = dir.file("ball.ppm");
+  // Raw with its checks: the CRC-32 trailer follows the image on the line.
+  RunResult r = send_standin({"--size", "24x16", "--format", "p3"}, ball(), out);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::size_t size = hs_test::read_file(out).size();
+  CHECK_THAT(r.err, Catch::StartsWith("host-send: " + out + ": " + std::to_string(size) + " bytes; received " +
+                                      std::to_string(size + 13) + " in "));
+  // Without them the two agree.
+  r = send_standin({"--size", "24x16", "--format", "p3", "--no-check"}, ball(), out);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Catch::StartsWith("host-send: " + out + ": " + std::to_string(size) + " bytes; received " +
+                                      std::to_string(size) + " in "));
+  r = send_standin({"--size", "24x16", "-q"}, ball(), out);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+}
+
 TEST_CASE("raw protocol over --port with a separately started board", "[e2e][raw]") {
   minrt::send::SimLauncher board;
   hs_test::start_standin(board, "24x16", "p6");
@@ -197,10 +217,14 @@ TEST_CASE("host-send writes the board's stored-deflate PNG compressed, --as-rece
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.err, Catch::Contains("as the board sent it"));
+  CHECK_THAT(r.err, Catch::StartsWith("host-send: " + packed + ": " + std::to_string(hs_test::read_file(packed).size()) +
+                                      " bytes; received "));
   r = run({HS_HOST_SEND, "--sim-binary", HS_FIRMWARE_SIM, "--sim", HS_FIRMWARE_ELF, "--as-received", scene, "-o",
            stored});
   REQUIRE(r.status == 0);
   const std::string a = hs_test::read_file(packed), b = hs_test::read_file(stored);
+  // The summary names the file's size: the compressed PNG's, or the stream's.
+  CHECK_THAT(r.err, Catch::StartsWith("host-send: " + stored + ": " + std::to_string(b.size()) + " bytes; received "));
   // The board's stream is stored deflate: 4 bytes a pixel and more.
   CHECK(b.size() > 4u * 120 * 120);
   CHECK(a.size() * 4 < b.size());

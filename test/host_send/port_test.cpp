@@ -201,8 +201,9 @@ TEST_CASE("host-send restores the port's settings when it is interrupted", "[por
   ::kill(child, SIGTERM);
   int st = 0;
   ::waitpid(child, &st, 0);
-  CHECK(WIFEXITED(st));
-  CHECK(WEXITSTATUS(st) == 1);
+  // Ended by the signal itself once the port is back (the shell shows 143).
+  CHECK(WIFSIGNALED(st));
+  CHECK(WTERMSIG(st) == SIGTERM);
   const struct termios2 after = get2(pty.slave);
   CHECK(after.c_ospeed == 4800);
   CHECK((after.c_lflag & (ICANON | ECHO)) == (ICANON | ECHO));

@@ -179,11 +179,3 @@ TEST_CASE("host-send -o refuses a FIFO or a symbolic link before the transfer", 
   REQUIRE(::lstat(link.c_str(), &st) == 0);
   CHECK(S_ISLNK(st.st_mode));
 }
-
-#include "progress.hpp"
-
-TEST_CASE("the progress line shows bytes, rows, rate, share of 8N1 and ETA", "[progress]") {
-  const std::string s = minrt::send::Progress::format(11520, 23040, 5, 10, 1.0, 115200);
-  CHECK(s == "11520 B  5/10 rows  11.5 kB/s (100.0% of 8N1)  ETA 0:01");
-  CHECK(minrt::send::Progress::format(0, 100, 0, 10, 0.0, 0) == "0 B  0/10 rows  0.0 kB/s");
-}
