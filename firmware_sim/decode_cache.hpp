@@ -16,6 +16,7 @@ struct Entry {
   uint8_t op;              // Op
   uint8_t rd, rs1, rs2;    // rd = kSinkReg when the instruction writes x0
   int32_t imm;             // immediate; branch/jal: offset in entries;
+                           // loads/stores: offset minus the RAM base;
                            // FP: rm in bits 0..7, rs3 in bits 8..15
 };
 static_assert(sizeof(Entry) == 8);
@@ -51,6 +52,8 @@ class DecodeCache {
     self_jump_halts_ = self_jump_halts;
   }
   const IsaSpec& isa() const { return isa_; }
+  // Load and store immediates are stored minus `ram_base` (interpreter.cpp).
+  void set_ram_base(uint32_t ram_base) { ram_base_ = ram_base; }
   // Fills entry `index` from the instruction word at that position.
   void fill(uint32_t index, uint32_t word);
   // Debugger support: a breakpoint replaces the entry (the instruction in RAM
@@ -77,6 +80,7 @@ class DecodeCache {
   IsaSpec isa_;
   bool check_isa_ = false;  // without a board: today's rv32imf, nothing filtered
   bool self_jump_halts_ = false;
+  uint32_t ram_base_ = 0;
 };
 
 }  // namespace fwsim

@@ -94,6 +94,22 @@ StopInfo Machine::run(uint64_t max_instructions) {
   return s;
 }
 
+// GCC spills the hot values of this large function (ip, the register file,
+// RAM, the cycle count) to the stack, where each handler reloads them and
+// the count's update goes through memory. On x86-64 they are pinned to
+// callee-saved registers, and an empty asm at every dispatch keeps them there.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define FWSIM_PINNED(type, name, reg) register type name asm(reg)
+#define FWSIM_KEEP(...) __asm__("" : FWSIM_KEEP_LIST(__VA_ARGS__))
+#define FWSIM_KEEP_LIST(...) FWSIM_KEEP_N(__VA_ARGS__, FWSIM_KEEP_4, FWSIM_KEEP_3)(__VA_ARGS__)
+#define FWSIM_KEEP_N(a, b, c, d, name, ...) name
+#define FWSIM_KEEP_3(a, b, c) "+r"(a), "+r"(b), "+r"(c)
+#define FWSIM_KEEP_4(a, b, c, d) "+r"(a), "+r"(b), "+r"(c), "+r"(d)
+#else
+#define FWSIM_PINNED(type, name, reg) type name
+#define FWSIM_KEEP(...) ((void)0)
+#endif
+
 template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
   constexpr bool Timed = Mode != 0;
@@ -172,7 +188,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* const* labels = dispatch_tables[hart_.frm == fpu::RNE];
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
-  uint64_t cycles = hart_.cycles;  // timed variant only
+  FWSIM_PINNED(uint64_t, cycles, "r14") = hart_.cycles;  // timed variant only
   // Hoisted so the hooks test registers, not members, per instruction.
   const bool tracing = trace_ != nullptr;
   Profiler* const profiler = profiler_;
@@ -184,12 +200,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const uint32_t code_base = bus_.code_base();
   const uint32_t code_size = bus_.code_size();
   const uint8_t* const code_mem = bus_.code();
-  Entry* ip = base + (hart_.pc - code_base) / 4;
-  uint32_t* const x = hart_.x;
+  FWSIM_PINNED(Entry*, ip, "rbx") = base + (hart_.pc - code_base) / 4;
+  FWSIM_PINNED(uint32_t*, x, "r12") = hart_.x;
   // f[] directly follows x[] in HartState: addressing it from x saves a register.
   static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
-  uint32_t* const f = x + 33;
-  uint8_t* const ram = bus_.ram();
+#define f (x + 33)
+  FWSIM_PINNED(uint8_t*, ram, "r15") = bus_.ram();
   const uint32_t ram_size = bus_.ram_size();
   // RAM size in units of 1, 2 and 4 bytes: the limits of the rotated offsets.
   const uint32_t ram_units[3] = {ram_size, ram_size >> 1, ram_size >> 2};
@@ -231,6 +247,13 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
+  // The cycle count lives in a register; the model's hooks take it by reference.
+#define MODEL_CALL(fn, ...)         \
+  do {                              \
+    uint64_t cycles_ = cycles;      \
+    model.fn(__VA_ARGS__, cycles_); \
+    cycles = cycles_;               \
+  } while (0)
 #define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
 #define RETIRED() ((k + reinterpret_cast<uint64_t>(ip)) >> 3)
 #define NOW() (Timed ? cycles : start + RETIRED())
@@ -239,11 +262,20 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     hart_.instret = start + RETIRED();                         \
     hart_.cycles = Timed ? cycles : start + RETIRED();   \
   } while (0)
-#define DISPATCH() goto* labels[ip->op]
+#define KEEP_PINNED()                                   \
+  do {                                                  \
+    if constexpr (Timed) FWSIM_KEEP(ip, x, ram, cycles); \
+    else FWSIM_KEEP(ip, x, ram);                        \
+  } while (0)
+#define DISPATCH()      \
+  do {                  \
+    KEEP_PINNED();      \
+    goto* labels[ip->op]; \
+  } while (0)
 #define STEP()                                           \
   do {                                                   \
     if constexpr (Hooks) {                               \
-      model.instruction(*ip, PC_OF(ip), cycles);         \
+      MODEL_CALL(instruction, *ip, PC_OF(ip));         \
       if (tracing) trace_instruction(PC_OF(ip));         \
     } else if constexpr (Timed) {                        \
       cycles += SLOT(ip).cost;                           \
@@ -253,6 +285,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   do {                  \
     STEP();             \
     ++ip;               \
+    KEEP_PINNED();      \
     cont;               \
   } while (0)
 #define NEXT() NEXT_THEN(DISPATCH())
@@ -290,7 +323,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define BRANCH_THEN(cond, cont)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
-    if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0, cycles);  \
+    if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0);  \
     if (taken) JUMP(ip + ip->imm);                                     \
     NEXT_THEN(cont);                                                            \
   } while (0)
@@ -305,6 +338,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   } while (0)
 #define ALU(expr) ALU_THEN(expr, DISPATCH())
   // Memory: one range+alignment check for RAM, everything else on the bus.
+  // Load and store immediates are decoded minus the RAM base, so base + imm
+  // is already the offset into RAM.
   // Debugger watchpoints, checked only in the hooked loop.
 #define WATCH(size, store)                                                 \
   do {                                                                     \
@@ -327,8 +362,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
 #define LOAD_THEN(T, dest, cont)                                                                   \
   do {                                                                                  \
-    const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                         \
-    const uint32_t off = addr - ram_base;                                               \
+    const uint32_t off = RS1 + static_cast<uint32_t>(ip->imm);                          \
+    const uint32_t addr = off + ram_base;                                               \
     T v;                                                                                \
     if (IN_RAM(T)) {                                                                    \
       std::memcpy(&v, ram + off, sizeof(T));                                            \
@@ -343,7 +378,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       }                                                                                 \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
-    if constexpr (Hooks) model.data(addr, cycles);                                              \
+    if constexpr (Hooks) MODEL_CALL(data, addr);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
     WATCH(sizeof(T), false);                                                            \
     NEXT_THEN(cont);                                                                             \
@@ -351,8 +386,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define LOAD(T, dest) LOAD_THEN(T, dest, DISPATCH())
 #define STORE_THEN(T, value, cont)                                                                  \
   do {                                                                                   \
-    const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
-    const uint32_t off = addr - ram_base;                                                \
+    const uint32_t off = RS1 + static_cast<uint32_t>(ip->imm);                           \
+    const uint32_t addr = off + ram_base;                                                \
     const T v = static_cast<T>(value);                                                   \
     if (IN_RAM(T)) {                                                                     \
       std::memcpy(ram + off, &v, sizeof(T));                                             \
@@ -366,7 +401,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
         goto device_stop;                                                                \
       }                                                                                  \
     }                                                                                    \
-    if constexpr (Hooks) model.data(addr, cycles);                                               \
+    if constexpr (Hooks) MODEL_CALL(data, addr);                                               \
     WATCH(sizeof(T), true);                                                              \
     NEXT_THEN(cont);                                                                              \
   } while (0)
@@ -550,7 +585,7 @@ L_SELF_JUMP: {
     stop.exit_code = static_cast<int>(x[10]);
     goto halt_exit;
   }
-  if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
+  if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
   NEXT();
 }
 L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
@@ -562,7 +597,7 @@ L_SLOW_CTI: {
   const DecodedInsn d = decode(word);
   const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
   if (!taken) {
-    if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
+    if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
     NEXT();
   }
   const uint32_t target = PC_OF(ip) + static_cast<uint32_t>(d.imm);
