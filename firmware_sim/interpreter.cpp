@@ -114,8 +114,9 @@ template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
   constexpr bool Timed = Mode != 0;
   constexpr bool Hooks = Mode == 2;  // per-instruction model calls
-  // Fused ops run as their first instruction except in the plain loop's
-  // RNE table (kLabelsFused), where one handler runs the pair.
+  // Fused ops run as their first instruction except in the RNE table of the
+  // plain and block-costed loops (kLabelsFused), where one handler runs the
+  // pair (each half still steps its own cost).
   static const void* const kLabels[] = {
 #define FWSIM_LABEL(name, mn, cls, fmt) &&L_##name,
       FWSIM_OPS(FWSIM_LABEL)
@@ -157,7 +158,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* model_labels[kOpCount];
   const void* model_labels_rne[kOpCount];
   const void* const* labels_any = kLabels;
-  const void* const* labels_rne = Mode == 0 ? kLabelsFused : kLabelsRne;
+  const void* const* labels_rne = Mode != 2 ? kLabelsFused : kLabelsRne;
   const FpuApprox* const approx = fpu_model_;
   if (approx) {
     std::memcpy(model_labels, kLabels, sizeof kLabels);
