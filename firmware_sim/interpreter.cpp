@@ -25,6 +25,35 @@
 #include "machine.hpp"
 
 namespace fwsim {
+
+// The interpreter's entry pointer, the register file's base and the cycle
+// count are global register variables in this file (GCC, x86-64): in this
+// large function GCC keeps locals in stack slots around every slow path, so
+// each load and store handler put a store and a reload of them on the
+// dependency chain, and the timed loop updated the cycle count through
+// memory. The registers are callee-saved, so code in other files preserves
+// them; Machine::run saves and restores the caller's values (PinnedRegs),
+// on unwinding too.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+register uint32_t* g_x asm("r12");
+register uint64_t g_cycles asm("r14");
+register Entry* g_ip asm("rbx");
+struct PinnedRegs {
+  uint32_t* x = g_x;
+  uint64_t cycles = g_cycles;
+  Entry* ip = g_ip;
+  PinnedRegs() = default;
+  PinnedRegs(const PinnedRegs&) = delete;
+  PinnedRegs& operator=(const PinnedRegs&) = delete;
+  ~PinnedRegs() {
+    g_x = x;
+    g_cycles = cycles;
+    g_ip = ip;
+  }
+};
+#define FWSIM_GLOBAL_REGS 1
+#endif
+
 namespace {
 
 inline float as_float(uint32_t b) { return std::bit_cast<float>(b); }
@@ -84,6 +113,9 @@ StopInfo Machine::run(uint64_t max_instructions) {
     s.pc = s.addr = hart_.pc;
     return s;
   }
+#ifdef FWSIM_GLOBAL_REGS
+  const PinnedRegs saved;
+#endif
   fpu::clear_host_flags();
   // Plain; timed with pre-computed costs; timed with per-instruction hooks
   // (trace, caches), which the pre-computed costs cannot express.
@@ -94,20 +126,15 @@ StopInfo Machine::run(uint64_t max_instructions) {
   return s;
 }
 
-// GCC spills the hot values of this large function (ip, the register file,
-// RAM, the cycle count) to the stack, where each handler reloads them and
-// the count's update goes through memory. On x86-64 they are pinned to
-// callee-saved registers, and an empty asm at every dispatch keeps them there.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// RAM's base pointer: a local register variable that an empty asm at every
+// step keeps in its register (GCC otherwise reloads it from a stack slot in
+// every load and store handler).
+#ifdef FWSIM_GLOBAL_REGS
 #define FWSIM_PINNED(type, name, reg) register type name asm(reg)
-#define FWSIM_KEEP(...) __asm__("" : FWSIM_KEEP_LIST(__VA_ARGS__))
-#define FWSIM_KEEP_LIST(...) FWSIM_KEEP_N(__VA_ARGS__, FWSIM_KEEP_4, FWSIM_KEEP_3)(__VA_ARGS__)
-#define FWSIM_KEEP_N(a, b, c, d, name, ...) name
-#define FWSIM_KEEP_3(a, b, c) "+r"(a), "+r"(b), "+r"(c)
-#define FWSIM_KEEP_4(a, b, c, d) "+r"(a), "+r"(b), "+r"(c), "+r"(d)
+#define FWSIM_KEEP(v) __asm__("" : "+r"(v))
 #else
 #define FWSIM_PINNED(type, name, reg) type name
-#define FWSIM_KEEP(...) ((void)0)
+#define FWSIM_KEEP(v) ((void)0)
 #endif
 
 template <int Mode>
@@ -189,7 +216,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* const* labels = dispatch_tables[hart_.frm == fpu::RNE];
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
-  FWSIM_PINNED(uint64_t, cycles, "r14") = hart_.cycles;  // timed variant only
+#ifdef FWSIM_GLOBAL_REGS
+  g_cycles = hart_.cycles;  // timed variant only
+#define CYC g_cycles
+#else
+  uint64_t CYC = hart_.cycles;  // timed variant only
+#endif
   // Hoisted so the hooks test registers, not members, per instruction.
   const bool tracing = trace_ != nullptr;
   Profiler* const profiler = profiler_;
@@ -201,11 +233,21 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const uint32_t code_base = bus_.code_base();
   const uint32_t code_size = bus_.code_size();
   const uint8_t* const code_mem = bus_.code();
-  FWSIM_PINNED(Entry*, ip, "rbx") = base + (hart_.pc - code_base) / 4;
-  FWSIM_PINNED(uint32_t*, x, "r12") = hart_.x;
+#ifdef FWSIM_GLOBAL_REGS
+  g_ip = base + (hart_.pc - code_base) / 4;
+#define ip g_ip
+#else
+  Entry* ip = base + (hart_.pc - code_base) / 4;
+#endif
+#ifdef FWSIM_GLOBAL_REGS
+  g_x = hart_.x;
+#define XR g_x
+#else
+  uint32_t* const XR = hart_.x;
+#endif
   // f[] directly follows x[] in HartState: addressing it from x saves a register.
   static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
-#define f (x + 33)
+#define f (XR + 33)
   FWSIM_PINNED(uint8_t*, ram, "r15") = bus_.ram();
   const uint32_t ram_size = bus_.ram_size();
   // RAM size in units of 1, 2 and 4 bytes: the limits of the rotated offsets.
@@ -241,7 +283,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     // (if any) applies as in straight-line code.
     discounted = resume_pc_ != hart_.pc;
     discount = discounted ? SLOT(ip).stall : 0;
-    cycles -= discount;
+    CYC -= discount;
   }
   const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
   StopInfo stop;
@@ -251,22 +293,21 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   // The cycle count lives in a register; the model's hooks take it by reference.
 #define MODEL_CALL(fn, ...)         \
   do {                              \
-    uint64_t cycles_ = cycles;      \
+    uint64_t cycles_ = CYC;      \
     model.fn(__VA_ARGS__, cycles_); \
-    cycles = cycles_;               \
+    CYC = cycles_;               \
   } while (0)
 #define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
 #define RETIRED() ((k + reinterpret_cast<uint64_t>(ip)) >> 3)
-#define NOW() (Timed ? cycles : start + RETIRED())
+#define NOW() (Timed ? CYC : start + RETIRED())
 #define SYNC()                                                 \
   do {                                                         \
     hart_.instret = start + RETIRED();                         \
-    hart_.cycles = Timed ? cycles : start + RETIRED();   \
+    hart_.cycles = Timed ? CYC : start + RETIRED();   \
   } while (0)
 #define KEEP_PINNED()                                   \
   do {                                                  \
-    if constexpr (Timed) FWSIM_KEEP(ip, x, ram, cycles); \
-    else FWSIM_KEEP(ip, x, ram);                        \
+    FWSIM_KEEP(ram);                                    \
   } while (0)
 #define DISPATCH()      \
   do {                  \
@@ -279,7 +320,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       MODEL_CALL(instruction, *ip, PC_OF(ip));         \
       if (tracing) trace_instruction(PC_OF(ip));         \
     } else if constexpr (Timed) {                        \
-      cycles += SLOT(ip).cost;                           \
+      CYC += SLOT(ip).cost;                           \
     }                                                    \
   } while (0)
 #define NEXT_THEN(cont) \
@@ -300,7 +341,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       run_start = (target);                                   \
       discounted = true;                                      \
       discount = SLOT(run_start).stall;                       \
-      cycles -= discount;                                     \
+      CYC -= discount;                                     \
     }                                                         \
     k = (done) - reinterpret_cast<uint64_t>(target);          \
     ip = (target);                                            \
@@ -329,9 +370,9 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     NEXT_THEN(cont);                                                            \
   } while (0)
 #define BRANCH(cond) BRANCH_THEN(cond, DISPATCH())
-#define RS1 x[ip->rs1]
-#define RS2 x[ip->rs2]
-#define RD x[ip->rd]
+#define RS1 XR[ip->rs1]
+#define RS2 XR[ip->rs2]
+#define RD XR[ip->rd]
 #define ALU_THEN(expr, cont) \
   do {            \
     RD = (expr);  \
@@ -493,8 +534,8 @@ R_FMADD_S: FP_RNE_FUSED(L_FMADD_S, false, false);
 R_FMSUB_S: FP_RNE_FUSED(L_FMSUB_S, false, true);
 R_FNMSUB_S: FP_RNE_FUSED(L_FNMSUB_S, true, false);
 R_FNMADD_S: FP_RNE_FUSED(L_FNMADD_S, true, true);
-R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(x[ip->rs1])));
-R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
+R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(XR[ip->rs1])));
+R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(XR[ip->rs1]));
 
   // Fused pairs (isa_table.hpp FWSIM_FUSED): the first instruction's body,
   // then straight to the second's handler without a dispatch.
@@ -562,9 +603,9 @@ L_UNDECODED: {
     costs_.update(code_, model, static_cast<uint32_t>(ip - base));
     // A run entered here by a jump was discounted before the stall was known.
     if (ip == run_start && discounted) {
-      cycles += discount;
+      CYC += discount;
       discount = SLOT(ip).stall;
-      cycles -= discount;
+      CYC -= discount;
     }
   }
   DISPATCH();
@@ -581,9 +622,9 @@ L_SELF_JUMP: {
   uint32_t word;
   std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   const DecodedInsn d = decode(word);
-  if (branch_condition(d.op, x[d.rs1], x[d.rs2])) {
-    if (d.op == Op::JAL && d.rd != 0) x[d.rd] = PC_OF(ip) + 4;
-    stop.exit_code = static_cast<int>(x[10]);
+  if (branch_condition(d.op, XR[d.rs1], XR[d.rs2])) {
+    if (d.op == Op::JAL && d.rd != 0) XR[d.rd] = PC_OF(ip) + 4;
+    stop.exit_code = static_cast<int>(XR[10]);
     goto halt_exit;
   }
   if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
@@ -596,7 +637,7 @@ L_SLOW_CTI: {
   uint32_t word;
   std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   const DecodedInsn d = decode(word);
-  const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
+  const bool taken = branch_condition(d.op, XR[d.rs1], XR[d.rs2]);
   if (!taken) {
     if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
     NEXT();
@@ -613,7 +654,7 @@ L_JAL: {
   STEP();
   const uint64_t done = DONE();
   if constexpr (Timed) {
-    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + (done >> 3), cycles});
+    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + (done >> 3), CYC});
   }
   ENTER(target, done);
   DISPATCH();
@@ -628,7 +669,7 @@ L_JALR: {
   const uint64_t done = DONE();
   if constexpr (Timed) {
     if (profiler) {
-      const Cost now{start + (done >> 3), cycles};
+      const Cost now{start + (done >> 3), CYC};
       if (ip->rd == 1) profiler->call(target, link, now);
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
@@ -671,8 +712,8 @@ L_OR: ALU(RS1 | RS2);
 L_AND: ALU(RS1 & RS2);
 L_FENCE: NEXT();
 L_ECALL:
-  if (halt_on_ecall && x[17] == kEcallExit) {
-    stop.exit_code = static_cast<int>(x[10]);
+  if (halt_on_ecall && XR[17] == kEcallExit) {
+    stop.exit_code = static_cast<int>(XR[10]);
     goto halt_exit;
   }
   FAULT(StopCause::Ecall, 0);
@@ -797,18 +838,20 @@ out:
     } else {
       // Nothing of this run retired: undo its entry.
       --ENTERS(ip);
-      cycles += discount;
+      CYC += discount;
       if (ip != start_ip) resume_pc_ = ~0u;
     }
     costs_.fold(code_, code_mem, model);
   }
   hart_.pc = PC_OF(ip);
   SYNC();  // ip is not retired: the count runs up to it
-  x[0] = 0;
+  XR[0] = 0;
   return stop;
 
 #undef PC_OF
 #undef f
+#undef x
+#undef CYC
 #undef NOW
 #undef RETIRED
 #undef ENTER
