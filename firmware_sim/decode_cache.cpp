@@ -5,6 +5,8 @@
 namespace fwsim {
 
 void DecodeCache::fill(uint32_t index, uint32_t word) {
+  if (index < filled_lo_) filled_lo_ = index;
+  if (index > filled_hi_) filled_hi_ = index;
   const DecodedInsn d = decode(word);
   Entry e{static_cast<uint8_t>(d.op), d.rd, d.rs1, d.rs2, d.imm};
   // An instruction the board lacks (or a compressed one) traps with a

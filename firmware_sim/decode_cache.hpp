@@ -1,7 +1,7 @@
 // Pre-decoded instructions, one compact entry per word of code memory (RAM,
 // or the board's ROM), indexed by (pc - code base) / 4. Entries are decoded lazily on first execution (op 0 =
 // UNDECODED), so any code in RAM works; code written after it first ran is
-// not re-decoded (self-modifying code is unsupported).
+// decoded again after a fence.i (invalidate_all), as RISC-V requires.
 #pragma once
 #include <cstdint>
 #include <cstdlib>
@@ -66,6 +66,15 @@ class DecodeCache {
     entries_[index] = Entry{};
     unfuse_before(index);
   }
+  // fence.i: every entry decodes again on its next run; debugger breakpoints
+  // stay. Only the span filled since the last call is visited, so untouched
+  // pages stay unallocated.
+  void invalidate_all() {
+    for (uint32_t i = filled_lo_; i <= filled_hi_ && i < count_; ++i)
+      if (entries_[i].op != static_cast<uint8_t>(Op::BREAKPOINT)) entries_[i] = Entry{};
+    filled_lo_ = UINT32_MAX;
+    filled_hi_ = 0;
+  }
 
  private:
   // Pairs (fused_op): entry i fuses with i+1 once both are decoded; a
@@ -81,6 +90,7 @@ class DecodeCache {
   bool check_isa_ = false;  // without a board: today's rv32imf, nothing filtered
   bool self_jump_halts_ = false;
   uint32_t ram_base_ = 0;
+  uint32_t filled_lo_ = UINT32_MAX, filled_hi_ = 0;  // span of entries filled since the last invalidate_all
 };
 
 }  // namespace fwsim

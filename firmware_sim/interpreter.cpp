@@ -711,6 +711,7 @@ L_SRA: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> (RS2 & 31)));
 L_OR: ALU(RS1 | RS2);
 L_AND: ALU(RS1 & RS2);
 L_FENCE: NEXT();
+L_FENCE_I: NEXT_THEN(code_.invalidate_all(); DISPATCH());
 L_ECALL:
   if (halt_on_ecall && XR[17] == kEcallExit) {
     stop.exit_code = static_cast<int>(XR[10]);
