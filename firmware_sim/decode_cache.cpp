@@ -5,6 +5,8 @@
 namespace fwsim {
 
 void DecodeCache::fill(uint32_t index, uint32_t word) {
+  if (index < filled_lo_) filled_lo_ = index;
+  if (index > filled_hi_) filled_hi_ = index;
   const DecodedInsn d = decode(word);
   Entry e{static_cast<uint8_t>(d.op), d.rd, d.rs1, d.rs2, d.imm};
   // An instruction the board lacks (or a compressed one) traps with a
@@ -16,7 +18,7 @@ void DecodeCache::fill(uint32_t index, uint32_t word) {
   const Format fmt = op_info(d.op).format;
   // Integer destinations of x0 go to the sink register.
   switch (fmt) {
-    case Format::R: case Format::I: case Format::Shift: case Format::Load: case Format::U:
+    case Format::R: case Format::I: case Format::Shift: case Format::U:
     case Format::J: case Format::Jalr: case Format::Csr: case Format::CsrI: case Format::FCmp:
     case Format::FMvXF:
       if (e.rd == 0) e.rd = kSinkReg;
@@ -30,6 +32,13 @@ void DecodeCache::fill(uint32_t index, uint32_t word) {
       break;
     case Format::FR4:
       e.imm = d.rm | (d.rs3 << 8) | (d.rm == 0 || d.rm == 7 ? kRneOrDyn : 0);
+      break;
+    case Format::Load: case Format::FLoad:
+      if (e.rd == 0 && fmt == Format::Load) e.rd = kSinkReg;
+      e.imm = static_cast<int32_t>(static_cast<uint32_t>(d.imm) - ram_base_);
+      break;
+    case Format::Store: case Format::FStore:
+      e.imm = static_cast<int32_t>(static_cast<uint32_t>(d.imm) - ram_base_);
       break;
     default:
       break;

@@ -1,7 +1,7 @@
 // Pre-decoded instructions, one compact entry per word of code memory (RAM,
 // or the board's ROM), indexed by (pc - code base) / 4. Entries are decoded lazily on first execution (op 0 =
 // UNDECODED), so any code in RAM works; code written after it first ran is
-// not re-decoded (self-modifying code is unsupported).
+// decoded again after a fence.i (invalidate_all), as RISC-V requires.
 #pragma once
 #include <cstdint>
 #include <cstdlib>
@@ -16,6 +16,7 @@ struct Entry {
   uint8_t op;              // Op
   uint8_t rd, rs1, rs2;    // rd = kSinkReg when the instruction writes x0
   int32_t imm;             // immediate; branch/jal: offset in entries;
+                           // loads/stores: offset minus the RAM base;
                            // FP: rm in bits 0..7, rs3 in bits 8..15
 };
 static_assert(sizeof(Entry) == 8);
@@ -51,6 +52,8 @@ class DecodeCache {
     self_jump_halts_ = self_jump_halts;
   }
   const IsaSpec& isa() const { return isa_; }
+  // Load and store immediates are stored minus `ram_base` (interpreter.cpp).
+  void set_ram_base(uint32_t ram_base) { ram_base_ = ram_base; }
   // Fills entry `index` from the instruction word at that position.
   void fill(uint32_t index, uint32_t word);
   // Debugger support: a breakpoint replaces the entry (the instruction in RAM
@@ -62,6 +65,15 @@ class DecodeCache {
   void invalidate(uint32_t index) {
     entries_[index] = Entry{};
     unfuse_before(index);
+  }
+  // fence.i: every entry decodes again on its next run; debugger breakpoints
+  // stay. Only the span filled since the last call is visited, so untouched
+  // pages stay unallocated.
+  void invalidate_all() {
+    for (uint32_t i = filled_lo_; i <= filled_hi_ && i < count_; ++i)
+      if (entries_[i].op != static_cast<uint8_t>(Op::BREAKPOINT)) entries_[i] = Entry{};
+    filled_lo_ = UINT32_MAX;
+    filled_hi_ = 0;
   }
 
  private:
@@ -77,6 +89,8 @@ class DecodeCache {
   IsaSpec isa_;
   bool check_isa_ = false;  // without a board: today's rv32imf, nothing filtered
   bool self_jump_halts_ = false;
+  uint32_t ram_base_ = 0;
+  uint32_t filled_lo_ = UINT32_MAX, filled_hi_ = 0;  // span of entries filled since the last invalidate_all
 };
 
 }  // namespace fwsim

@@ -107,9 +107,10 @@ DecodedInsn decode(uint32_t w) {
       break;
     case 0x0c: d.op = decode_op(f3, f7); break;
     case 0x03:
-      // fence and fence.i are no-ops here: one hart, no caches to sync, and
-      // self-modifying code is unsupported anyway.
-      if (f3 == 0 || f3 == 1) d.op = Op::FENCE;
+      // fence is a no-op here (one hart, no caches to sync); fence.i drops
+      // the pre-decoded code so code written before it runs as written.
+      if (f3 == 0) d.op = Op::FENCE;
+      if (f3 == 1) d.op = Op::FENCE_I;
       break;
     case 0x1c:
       if (f3 == 0) {

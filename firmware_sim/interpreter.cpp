@@ -25,6 +25,35 @@
 #include "machine.hpp"
 
 namespace fwsim {
+
+// The interpreter's entry pointer, the register file's base and the cycle
+// count are global register variables in this file (GCC, x86-64): in this
+// large function GCC keeps locals in stack slots around every slow path, so
+// each load and store handler put a store and a reload of them on the
+// dependency chain, and the timed loop updated the cycle count through
+// memory. The registers are callee-saved, so code in other files preserves
+// them; Machine::run saves and restores the caller's values (PinnedRegs),
+// on unwinding too.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+register uint32_t* g_x asm("r12");
+register uint64_t g_cycles asm("r14");
+register Entry* g_ip asm("rbx");
+struct PinnedRegs {
+  uint32_t* x = g_x;
+  uint64_t cycles = g_cycles;
+  Entry* ip = g_ip;
+  PinnedRegs() = default;
+  PinnedRegs(const PinnedRegs&) = delete;
+  PinnedRegs& operator=(const PinnedRegs&) = delete;
+  ~PinnedRegs() {
+    g_x = x;
+    g_cycles = cycles;
+    g_ip = ip;
+  }
+};
+#define FWSIM_GLOBAL_REGS 1
+#endif
+
 namespace {
 
 inline float as_float(uint32_t b) { return std::bit_cast<float>(b); }
@@ -84,6 +113,9 @@ StopInfo Machine::run(uint64_t max_instructions) {
     s.pc = s.addr = hart_.pc;
     return s;
   }
+#ifdef FWSIM_GLOBAL_REGS
+  const PinnedRegs saved;
+#endif
   fpu::clear_host_flags();
   // Plain; timed with pre-computed costs; timed with per-instruction hooks
   // (trace, caches), which the pre-computed costs cannot express.
@@ -94,12 +126,24 @@ StopInfo Machine::run(uint64_t max_instructions) {
   return s;
 }
 
+// RAM's base pointer: a local register variable that an empty asm at every
+// step keeps in its register (GCC otherwise reloads it from a stack slot in
+// every load and store handler).
+#ifdef FWSIM_GLOBAL_REGS
+#define FWSIM_PINNED(type, name, reg) register type name asm(reg)
+#define FWSIM_KEEP(v) __asm__("" : "+r"(v))
+#else
+#define FWSIM_PINNED(type, name, reg) type name
+#define FWSIM_KEEP(v) ((void)0)
+#endif
+
 template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
   constexpr bool Timed = Mode != 0;
   constexpr bool Hooks = Mode == 2;  // per-instruction model calls
-  // Fused ops run as their first instruction except in the plain loop's
-  // RNE table (kLabelsFused), where one handler runs the pair.
+  // Fused ops run as their first instruction except in the RNE table of the
+  // plain and block-costed loops (kLabelsFused), where one handler runs the
+  // pair (each half still steps its own cost).
   static const void* const kLabels[] = {
 #define FWSIM_LABEL(name, mn, cls, fmt) &&L_##name,
       FWSIM_OPS(FWSIM_LABEL)
@@ -141,7 +185,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* model_labels[kOpCount];
   const void* model_labels_rne[kOpCount];
   const void* const* labels_any = kLabels;
-  const void* const* labels_rne = Mode == 0 ? kLabelsFused : kLabelsRne;
+  const void* const* labels_rne = Mode != 2 ? kLabelsFused : kLabelsRne;
   const FpuApprox* const approx = fpu_model_;
   if (approx) {
     std::memcpy(model_labels, kLabels, sizeof kLabels);
@@ -172,7 +216,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const void* const* labels = dispatch_tables[hart_.frm == fpu::RNE];
   CycleModel default_model(default_cycle_model());
   CycleModel& model = model_ ? *model_ : default_model;
-  uint64_t cycles = hart_.cycles;  // timed variant only
+#ifdef FWSIM_GLOBAL_REGS
+  g_cycles = hart_.cycles;  // timed variant only
+#define CYC g_cycles
+#else
+  uint64_t CYC = hart_.cycles;  // timed variant only
+#endif
   // Hoisted so the hooks test registers, not members, per instruction.
   const bool tracing = trace_ != nullptr;
   Profiler* const profiler = profiler_;
@@ -184,12 +233,22 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const uint32_t code_base = bus_.code_base();
   const uint32_t code_size = bus_.code_size();
   const uint8_t* const code_mem = bus_.code();
+#ifdef FWSIM_GLOBAL_REGS
+  g_ip = base + (hart_.pc - code_base) / 4;
+#define ip g_ip
+#else
   Entry* ip = base + (hart_.pc - code_base) / 4;
-  uint32_t* const x = hart_.x;
+#endif
+#ifdef FWSIM_GLOBAL_REGS
+  g_x = hart_.x;
+#define XR g_x
+#else
+  uint32_t* const XR = hart_.x;
+#endif
   // f[] directly follows x[] in HartState: addressing it from x saves a register.
   static_assert(offsetof(HartState, f) == offsetof(HartState, x) + sizeof(HartState::x));
-  uint32_t* const f = x + 33;
-  uint8_t* const ram = bus_.ram();
+#define f (XR + 33)
+  FWSIM_PINNED(uint8_t*, ram, "r15") = bus_.ram();
   const uint32_t ram_size = bus_.ram_size();
   // RAM size in units of 1, 2 and 4 bytes: the limits of the rotated offsets.
   const uint32_t ram_units[3] = {ram_size, ram_size >> 1, ram_size >> 2};
@@ -224,35 +283,51 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     // (if any) applies as in straight-line code.
     discounted = resume_pc_ != hart_.pc;
     discount = discounted ? SLOT(ip).stall : 0;
-    cycles -= discount;
+    CYC -= discount;
   }
   const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
   StopInfo stop;
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
 
+  // The cycle count lives in a register; the model's hooks take it by reference.
+#define MODEL_CALL(fn, ...)         \
+  do {                              \
+    uint64_t cycles_ = CYC;      \
+    model.fn(__VA_ARGS__, cycles_); \
+    CYC = cycles_;               \
+  } while (0)
 #define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
 #define RETIRED() ((k + reinterpret_cast<uint64_t>(ip)) >> 3)
-#define NOW() (Timed ? cycles : start + RETIRED())
+#define NOW() (Timed ? CYC : start + RETIRED())
 #define SYNC()                                                 \
   do {                                                         \
     hart_.instret = start + RETIRED();                         \
-    hart_.cycles = Timed ? cycles : start + RETIRED();   \
+    hart_.cycles = Timed ? CYC : start + RETIRED();   \
   } while (0)
-#define DISPATCH() goto* labels[ip->op]
+#define KEEP_PINNED()                                   \
+  do {                                                  \
+    FWSIM_KEEP(ram);                                    \
+  } while (0)
+#define DISPATCH()      \
+  do {                  \
+    KEEP_PINNED();      \
+    goto* labels[ip->op]; \
+  } while (0)
 #define STEP()                                           \
   do {                                                   \
     if constexpr (Hooks) {                               \
-      model.instruction(*ip, PC_OF(ip), cycles);         \
+      MODEL_CALL(instruction, *ip, PC_OF(ip));         \
       if (tracing) trace_instruction(PC_OF(ip));         \
     } else if constexpr (Timed) {                        \
-      cycles += SLOT(ip).cost;                           \
+      CYC += SLOT(ip).cost;                           \
     }                                                    \
   } while (0)
 #define NEXT_THEN(cont) \
   do {                  \
     STEP();             \
     ++ip;               \
+    KEEP_PINNED();      \
     cont;               \
   } while (0)
 #define NEXT() NEXT_THEN(DISPATCH())
@@ -266,7 +341,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       run_start = (target);                                   \
       discounted = true;                                      \
       discount = SLOT(run_start).stall;                       \
-      cycles -= discount;                                     \
+      CYC -= discount;                                     \
     }                                                         \
     k = (done) - reinterpret_cast<uint64_t>(target);          \
     ip = (target);                                            \
@@ -290,14 +365,14 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define BRANCH_THEN(cond, cont)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
-    if constexpr (Timed) model.branch(PC_OF(ip), taken, ip->imm < 0, cycles);  \
+    if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0);  \
     if (taken) JUMP(ip + ip->imm);                                     \
     NEXT_THEN(cont);                                                            \
   } while (0)
 #define BRANCH(cond) BRANCH_THEN(cond, DISPATCH())
-#define RS1 x[ip->rs1]
-#define RS2 x[ip->rs2]
-#define RD x[ip->rd]
+#define RS1 XR[ip->rs1]
+#define RS2 XR[ip->rs2]
+#define RD XR[ip->rd]
 #define ALU_THEN(expr, cont) \
   do {            \
     RD = (expr);  \
@@ -305,6 +380,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   } while (0)
 #define ALU(expr) ALU_THEN(expr, DISPATCH())
   // Memory: one range+alignment check for RAM, everything else on the bus.
+  // Load and store immediates are decoded minus the RAM base, so base + imm
+  // is already the offset into RAM.
   // Debugger watchpoints, checked only in the hooked loop.
 #define WATCH(size, store)                                                 \
   do {                                                                     \
@@ -327,8 +404,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   if (bus_result == Bus::Result::Fault) FAULT(fault, addr)
 #define LOAD_THEN(T, dest, cont)                                                                   \
   do {                                                                                  \
-    const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                         \
-    const uint32_t off = addr - ram_base;                                               \
+    const uint32_t off = RS1 + static_cast<uint32_t>(ip->imm);                          \
+    const uint32_t addr = off + ram_base;                                               \
     T v;                                                                                \
     if (IN_RAM(T)) {                                                                    \
       std::memcpy(&v, ram + off, sizeof(T));                                            \
@@ -343,7 +420,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       }                                                                                 \
       v = static_cast<T>(raw);                                                          \
     }                                                                                   \
-    if constexpr (Hooks) model.data(addr, cycles);                                              \
+    if constexpr (Hooks) MODEL_CALL(data, addr);                                              \
     dest = static_cast<uint32_t>(v);                                                    \
     WATCH(sizeof(T), false);                                                            \
     NEXT_THEN(cont);                                                                             \
@@ -351,8 +428,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define LOAD(T, dest) LOAD_THEN(T, dest, DISPATCH())
 #define STORE_THEN(T, value, cont)                                                                  \
   do {                                                                                   \
-    const uint32_t addr = RS1 + static_cast<uint32_t>(ip->imm);                          \
-    const uint32_t off = addr - ram_base;                                                \
+    const uint32_t off = RS1 + static_cast<uint32_t>(ip->imm);                           \
+    const uint32_t addr = off + ram_base;                                                \
     const T v = static_cast<T>(value);                                                   \
     if (IN_RAM(T)) {                                                                     \
       std::memcpy(ram + off, &v, sizeof(T));                                             \
@@ -366,7 +443,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
         goto device_stop;                                                                \
       }                                                                                  \
     }                                                                                    \
-    if constexpr (Hooks) model.data(addr, cycles);                                               \
+    if constexpr (Hooks) MODEL_CALL(data, addr);                                               \
     WATCH(sizeof(T), true);                                                              \
     NEXT_THEN(cont);                                                                              \
   } while (0)
@@ -457,8 +534,8 @@ R_FMADD_S: FP_RNE_FUSED(L_FMADD_S, false, false);
 R_FMSUB_S: FP_RNE_FUSED(L_FMSUB_S, false, true);
 R_FNMSUB_S: FP_RNE_FUSED(L_FNMSUB_S, true, false);
 R_FNMADD_S: FP_RNE_FUSED(L_FNMADD_S, true, true);
-R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(x[ip->rs1])));
-R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(x[ip->rs1]));
+R_FCVT_S_W: FP_RNE(L_FCVT_S_W, static_cast<float>(static_cast<int32_t>(XR[ip->rs1])));
+R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(XR[ip->rs1]));
 
   // Fused pairs (isa_table.hpp FWSIM_FUSED): the first instruction's body,
   // then straight to the second's handler without a dispatch.
@@ -526,9 +603,9 @@ L_UNDECODED: {
     costs_.update(code_, model, static_cast<uint32_t>(ip - base));
     // A run entered here by a jump was discounted before the stall was known.
     if (ip == run_start && discounted) {
-      cycles += discount;
+      CYC += discount;
       discount = SLOT(ip).stall;
-      cycles -= discount;
+      CYC -= discount;
     }
   }
   DISPATCH();
@@ -545,12 +622,12 @@ L_SELF_JUMP: {
   uint32_t word;
   std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   const DecodedInsn d = decode(word);
-  if (branch_condition(d.op, x[d.rs1], x[d.rs2])) {
-    if (d.op == Op::JAL && d.rd != 0) x[d.rd] = PC_OF(ip) + 4;
-    stop.exit_code = static_cast<int>(x[10]);
+  if (branch_condition(d.op, XR[d.rs1], XR[d.rs2])) {
+    if (d.op == Op::JAL && d.rd != 0) XR[d.rd] = PC_OF(ip) + 4;
+    stop.exit_code = static_cast<int>(XR[10]);
     goto halt_exit;
   }
-  if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
+  if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
   NEXT();
 }
 L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
@@ -560,9 +637,9 @@ L_SLOW_CTI: {
   uint32_t word;
   std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   const DecodedInsn d = decode(word);
-  const bool taken = branch_condition(d.op, x[d.rs1], x[d.rs2]);
+  const bool taken = branch_condition(d.op, XR[d.rs1], XR[d.rs2]);
   if (!taken) {
-    if constexpr (Timed) model.branch(PC_OF(ip), false, false, cycles);
+    if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
     NEXT();
   }
   const uint32_t target = PC_OF(ip) + static_cast<uint32_t>(d.imm);
@@ -577,7 +654,7 @@ L_JAL: {
   STEP();
   const uint64_t done = DONE();
   if constexpr (Timed) {
-    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + (done >> 3), cycles});
+    if (profiler && ip->rd == 1) profiler->call(PC_OF(target), link, Cost{start + (done >> 3), CYC});
   }
   ENTER(target, done);
   DISPATCH();
@@ -592,7 +669,7 @@ L_JALR: {
   const uint64_t done = DONE();
   if constexpr (Timed) {
     if (profiler) {
-      const Cost now{start + (done >> 3), cycles};
+      const Cost now{start + (done >> 3), CYC};
       if (ip->rd == 1) profiler->call(target, link, now);
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
@@ -634,9 +711,10 @@ L_SRA: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> (RS2 & 31)));
 L_OR: ALU(RS1 | RS2);
 L_AND: ALU(RS1 & RS2);
 L_FENCE: NEXT();
+L_FENCE_I: NEXT_THEN(code_.invalidate_all(); DISPATCH());
 L_ECALL:
-  if (halt_on_ecall && x[17] == kEcallExit) {
-    stop.exit_code = static_cast<int>(x[10]);
+  if (halt_on_ecall && XR[17] == kEcallExit) {
+    stop.exit_code = static_cast<int>(XR[10]);
     goto halt_exit;
   }
   FAULT(StopCause::Ecall, 0);
@@ -761,18 +839,20 @@ out:
     } else {
       // Nothing of this run retired: undo its entry.
       --ENTERS(ip);
-      cycles += discount;
+      CYC += discount;
       if (ip != start_ip) resume_pc_ = ~0u;
     }
     costs_.fold(code_, code_mem, model);
   }
   hart_.pc = PC_OF(ip);
   SYNC();  // ip is not retired: the count runs up to it
-  x[0] = 0;
+  XR[0] = 0;
   return stop;
 
 #undef PC_OF
 #undef f
+#undef x
+#undef CYC
 #undef NOW
 #undef RETIRED
 #undef ENTER

@@ -77,6 +77,7 @@ enum class Format : uint8_t {
   X(OR, "or", Alu, R)                                  \
   X(AND, "and", Alu, R)                                \
   X(FENCE, "fence", System, None)                      \
+  X(FENCE_I, "fence.i", System, None)                  \
   X(ECALL, "ecall", System, None)                      \
   X(EBREAK, "ebreak", System, None)                    \
   X(MUL, "mul", Mul, R)                                \

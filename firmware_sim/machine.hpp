@@ -22,6 +22,7 @@ class FpuApprox;
 class Machine {
  public:
   explicit Machine(const MemoryMap& map) : bus_(map), code_(bus_.code_size()) {
+    code_.set_ram_base(bus_.ram_base());
     if (map.halt == HaltKind::Loop) code_.configure(kReferenceIsa, true);
   }
   explicit Machine(uint32_t ram_size) : Machine(map_with_ram(ram_size)) {}

@@ -56,6 +56,7 @@ constexpr uint32_t srl(uint32_t rd, uint32_t a, uint32_t b) { return r_type(0, b
 constexpr uint32_t sra(uint32_t rd, uint32_t a, uint32_t b) { return r_type(0x20, b, a, 5, rd, 0x33); }
 constexpr uint32_t ebreak() { return 0x00100073; }
 constexpr uint32_t ecall() { return 0x00000073; }
+constexpr uint32_t fence_i() { return 0x0000100f; }
 // M
 constexpr uint32_t mul(uint32_t rd, uint32_t a, uint32_t b) { return r_type(1, b, a, 0, rd, 0x33); }
 constexpr uint32_t mulh(uint32_t rd, uint32_t a, uint32_t b) { return r_type(1, b, a, 1, rd, 0x33); }
