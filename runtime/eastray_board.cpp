@@ -82,7 +82,23 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
         " bytes)");
     return SceneResult::kOutOfMemory;
   }
-  renderer.render(rows, row);
+  if (!scene.stereo) {
+    renderer.render(rows, row);
+    return SceneResult::kOk;
+  }
+  // rmode 1 (lines 57, 117): the right eye's image, then the left eye's,
+  // as one image of twice the height; host-send cuts it into the _r and _l
+  // files (host/eastray_stereo.hpp). The view reads the eye at every row.
+  const model::EastraySettings<R> centre = shading;
+  rows.begin(scene.width, 2 * scene.height);
+  for (int view = 0; view < 2; ++view) {
+    shading.eye = general::eastray_stereo_eye<Math>(centre, view == 0 ? 1 : -1);
+    for (int y = 0; y < scene.height; ++y) {
+      renderer.render_row(y, row);
+      rows.row(view * scene.height + y, row);
+    }
+  }
+  rows.end();
   return SceneResult::kOk;
 }
 

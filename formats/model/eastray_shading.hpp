@@ -78,7 +78,8 @@ struct EastraySettings {
   bool dither = false;
   // back_mode (lines 205-230): 0 the sky behind, sun discs seen; 1 the
   // input image behind, no discs; 2 the input image and the discs. The
-  // reflection, transmission and alpha switches are read.
+  // reflection and transmission switches send a missed secondary ray's
+  // power to that background; the alpha mode shapes only .hpi images.
   int32_t background = 0;
   bool back_reflect = false, back_transmit = false, alpha_pure = false;
 };

@@ -1,6 +1,7 @@
 #include "cli.hpp"
 
 #include "core/base/text_numbers.hpp"
+#include "eastray_stereo.hpp"
 #include "file_input.hpp"
 #include "image_load.hpp"
 #include "image_window.hpp"
@@ -23,6 +24,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <vector>
 
 #include "port_discovery.hpp"
 #include "protocol_course_host.hpp"
@@ -386,7 +388,13 @@ int run(const Options& options) {
   // The output is checked before the transfer, not after minutes of it.
   if (scene_named_output && !o.allow_any_output && !minrt::host::scene_named_output_allowed(o.scene, o.output, why))
     return fail(kExitUsage, why);
-  if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
+  // EASTRAY's stereo pair (rmode 1) goes to two files, the output's name
+  // with _r and _l (eastray_stereo.hpp).
+  std::vector<std::string> targets{o.output};
+  if (upload.stereo && o.output != "-")
+    targets = {minrt::host::eastray_stereo_name(o.output, 'r'), minrt::host::eastray_stereo_name(o.output, 'l')};
+  for (const std::string& target : targets)
+    if (!minrt::host::check_output_target(target, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends the text as it is, and the board takes MINRT_END_OF_INPUT
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
@@ -534,12 +542,27 @@ int run(const Options& options) {
     if (!minrt::host::compress_png(r.image, compressed, err)) return fail(kExitLink, "cannot recompress the board's PNG: " + err);
     written = &compressed;
   }
-  if (!write_file_atomically(o.output, *written, o.write_through, minrt::host::Durability::kSynced, err)) return fail(kExitLink, err);
+  std::vector<std::string> images{*written};
+  if (targets.size() == 2) {
+    images.resize(2);
+    if (!minrt::host::split_stereo_png(r.image, images[0], images[1], err))
+      return fail(kExitLink, "cannot cut the board's stereo pair: " + err);
+  }
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    std::string file, warning;
+    if (upload.write_as && !o.as_received && targets[i] != "-" && !upload.write_as(targets[i], images[i], file, warning, err))
+      return fail(kExitLink, "cannot write " + targets[i] + ": " + err);
+    if (!warning.empty()) std::fprintf(stderr, "host-send: warning: %s\n", warning.c_str());
+    if (!write_file_atomically(targets[i], file.empty() ? images[i] : file, o.write_through,
+                               minrt::host::Durability::kSynced, err))
+      return fail(kExitLink, err);
+  }
 
   if (!o.quiet) {
     const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;
     char line[320];
-    int n = std::snprintf(line, sizeof line, "host-send: %s: %llu bytes in %.3f s, %.1f kB/s%s", o.output.c_str(),
+    const std::string shown = targets.size() == 2 ? targets[0] + " and " + targets[1] : o.output;
+    int n = std::snprintf(line, sizeof line, "host-send: %s: %llu bytes in %.3f s, %.1f kB/s%s", shown.c_str(),
                           static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0,
                           use_sim ? " from the simulated board (firmware-sim)" : "");
     if ((paced || (use_sim && o.baud_given)) && n > 0)  // the simulator (or stand-in) paces at --baud too
