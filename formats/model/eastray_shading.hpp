@@ -98,6 +98,9 @@ struct EastrayShading : EastraySettings<R> {
   const EastrayMappedObject<R>* mapped_objects = nullptr;
   const Texture* map_images = nullptr;  // one per map_data entry, 3 bytes a texel (linear 0..255)
   int32_t map_image_count = 0;
+  // Entry i's halved images when read with mip 1: level k (1..) at
+  // map_mips[i * kMipLevels + k - 1], width 0 past its last (modes 10-14).
+  const Texture* map_mips = nullptr;
   const Texture* input_image = nullptr;  // `input`, behind the image when background is 1 or 2
 };
 

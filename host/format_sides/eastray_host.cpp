@@ -95,6 +95,8 @@ struct EastrayScene final : GeneralScene<M> {
   eastray::Scene<R> source;
   model::EastrayShading<R> shading;
   std::unique_ptr<EastrayMaps> maps;  // the map_data and input images the shading points into
+  std::vector<uint8_t> mip_bytes;     // the halved images of maps read with mip 1
+  std::vector<model::Texture> mips;   // kMipLevels per map_data entry
   Vec3<R> eye{};                      // the scene's own eye, between the stereo pair's
 
   // The right eye's image first, then the left's (the view reads the eye at every row).
@@ -126,6 +128,26 @@ struct EastrayScene final : GeneralScene<M> {
     return s;
   }
 };
+
+// The halved images of the maps read with mip 1 (line 398), which modes
+// 10-14 pick by the pixel's footprint; the board builds the same.
+template <class M>
+void build_mips(const eastray::Scene<typename M::real>& src, EastrayScene<M>& scene) {
+  const model::Texture* maps = scene.maps->table();
+  std::size_t bytes = 0;
+  for (int32_t i = 0; i < src.map_file_count; ++i)
+    if (src.map_files[i].mip) bytes += general::eastray_mip_bytes(maps[i].width, maps[i].height);
+  if (bytes == 0) return;
+  scene.mip_bytes.assign(bytes, 0);
+  scene.mips.assign(static_cast<std::size_t>(src.map_file_count) * model::kMipLevels, model::Texture{});
+  uint8_t* at = scene.mip_bytes.data();
+  for (int32_t i = 0; i < src.map_file_count; ++i) {
+    if (!src.map_files[i].mip) continue;
+    general::eastray_build_mips(maps[i], at, scene.mips.data() + static_cast<std::size_t>(i) * model::kMipLevels);
+    at += general::eastray_mip_bytes(maps[i].width, maps[i].height);
+  }
+  scene.shading.map_mips = scene.mips.data();
+}
 
 template <class M>
 std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOptions& options, std::string& error) {
@@ -161,6 +183,7 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOp
   }
   scene->shading.map_images = scene->maps->table();
   scene->shading.map_image_count = scene->maps->count();
+  build_mips(src, *scene);
   if (src.input[0] != 0) {  // a missing or unreadable input is an error, where it is named
     if (!scene->maps->load_input(src.input, error)) {
       error = scene->expanded.at(src.input_line, src.input_col) + ": error: input " + error;

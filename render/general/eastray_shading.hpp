@@ -88,9 +88,10 @@ class EastrayShader : public TracerCore<M, F> {
   // background behind the pixel that shows through is written there (the
   // pixel is colour + back x background): a camera ray that meets nothing,
   // and a reflected or transmitted one whose switch is 1, hand their power
-  // to it.
+  // to it. `travelled`: the ray's path from the eye so far, which with the
+  // pixel's angle gives the footprint that picks a mip-mapped image's level.
   Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half,
-                           Vec3<R>* back = nullptr, Arrival arrival = Arrival::kCamera) const;
+                           Vec3<R>* back = nullptr, Arrival arrival = Arrival::kCamera, R travelled = R(0)) const;
   // Whether a ray from `o` along `d` meets anything (EASTRAY's background image).
   bool eastray_hits(const Vec3<R>& o, const Vec3<R>& d) const {
     return eastray_nearest(o, d, R(0), R(1e30), false).found;
@@ -373,7 +374,8 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_specular(const model::Eastra
 
 template <class M, uint32_t F>
 Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight,
-                                                      R medium_half, Vec3<R>* back, Arrival arrival) const {
+                                                      R medium_half, Vec3<R>* back, Arrival arrival,
+                                                      R travelled) const {
   using V = Vec3<R>;
   using namespace eastray_detail;
   const model::EastrayShading<R>& e = *s_.eastray;
@@ -393,7 +395,15 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, c
   const V p = o + d * h.t;
   model::EastrayMaterial<R> scratch;
   V mapped_normal = h.normal;
-  const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, p, mapped_normal, scratch);
+  // A pixel's width where the path from the eye meets this mapped surface
+  // (its angle 2 tan(fov) / width; the spreading of curved mirrors and
+  // lenses is not followed).
+  R footprint = R(0);
+  if (e.map_mips != nullptr && h.material >= e.material_count) {
+    constexpr R kDeg = R(kEastrayPi / 180.0);
+    footprint = (travelled + h.t) * (R(2) * M::sin(e.fov * kDeg) / M::cos(e.fov * kDeg) / M::from_int(e.width));
+  }
+  const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, p, mapped_normal, scratch, footprint);
   const bool from_inside = dot(h.geo, d) > R(0);
   const V n = from_inside ? -mapped_normal : mapped_normal;  // toward the viewer
   const V g = from_inside ? -h.geo : h.geo;
@@ -426,7 +436,7 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, c
     if (maxc(kr) > R(0) && weight * maxc(kr) >= e.min_weight) {
       const V rdir = d + n * (R(2) * cosi);
       c += kr * eastray_radiance(above, rdir, depth + 1, weight * maxc(kr), medium_half, back != nullptr ? &through : nullptr,
-                                 Arrival::kReflected);
+                                 Arrival::kReflected, travelled + h.t);
       if (back != nullptr) *back += kr * through;
     }
     if (refract && maxc(kt) > R(0) && weight * maxc(kt) >= e.min_weight) {
@@ -434,7 +444,7 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, c
       // out: its half distance is taken as 1e30, where 2^(-t/h) is 1.
       const R next_medium = from_inside ? R(0) : m.half_distance > R(0) ? m.half_distance : R(1e30);
       c += kt * eastray_radiance(below, normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium,
-                                 back != nullptr ? &through : nullptr, Arrival::kTransmitted);
+                                 back != nullptr ? &through : nullptr, Arrival::kTransmitted, travelled + h.t);
       if (back != nullptr) *back += kt * through;
     }
   }
