@@ -126,9 +126,10 @@ class Reader {
     else error_->text(", found ").quoted(tok_.s, tok_.length);
     return false;
   }
-  void warn(const char* msg) {
+  void warn(const char* msg) { warn_at(tok_.pos, msg); }
+  void warn_at(const SourcePos& at, const char* msg) {
     Diagnostic d;
-    d.pos = tok_.pos;
+    d.pos = at;
     d.has_pos = true;
     d.text(msg);
     warnings_.emit(d);
@@ -495,13 +496,14 @@ class Reader {
       back_at_ = st.pos;
       if (!integer(scene_.background, "back_mode background mode 0, 1 or 2", 0, 2) ||
           !on_off(scene_.back_reflect, "back_mode reflection switch") ||
-          !on_off(scene_.back_transmit, "back_mode transmission switch") ||
-          !on_off(scene_.alpha_pure, "back_mode alpha mode"))
+          !on_off(scene_.back_transmit, "back_mode transmission switch"))
         return false;
+      const SourcePos alpha_at = tok_.pos;
+      if (!on_off(scene_.alpha_pure, "back_mode alpha mode")) return false;
       // The alpha mode shapes the alpha channel of .hpi images (lines
       // 178, 227-230: HyPER Saiko's format on the FM TOWNS), not written.
       if (scene_.alpha_pure)
-        warn("warning: back_mode alpha mode 1 applies to the alpha channel of .hpi images, which are not written");
+        warn_at(alpha_at, "warning: back_mode alpha mode 1 applies to the alpha channel of .hpi images, which are not written");
       return end_statement("back_mode");
     }
     if (st.is("e_light") || st.is("p_light") || st.is("s_light")) {

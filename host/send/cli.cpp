@@ -552,7 +552,7 @@ int run(const Options& options) {
     std::string file, warning;
     if (upload.write_as && !o.as_received && targets[i] != "-" && !upload.write_as(targets[i], images[i], file, warning, err))
       return fail(kExitLink, "cannot write " + targets[i] + ": " + err);
-    if (!warning.empty()) std::fprintf(stderr, "host-send: warning: %s\n", warning.c_str());
+    if (!warning.empty() && !o.quiet) std::fprintf(stderr, "host-send: warning: %s\n", warning.c_str());
     if (!write_file_atomically(targets[i], file.empty() ? images[i] : file, o.write_through,
                                minrt::host::Durability::kSynced, err))
       return fail(kExitLink, err);

@@ -289,3 +289,22 @@ TEST_CASE("eastray output: the tallest image renders, and the deepest condition"
   CHECK(is(px(tall, 0, 0), 0, 0, 255));
   CHECK(is(px(tall, 1, 8192), 255, 0, 0));
 }
+
+TEST_CASE("eastray output: back_mode's alpha mode shapes only .hpi images", "[eastray][output][background]") {
+  // Lines 227-230: the alpha channel of .hpi (line 182), which is not
+  // written: 1 warns once, and the image is alpha 0's.
+  const std::string dir = temp_dir();
+  const std::string text = minrt::test::read_file(scenes() + "/back_switches.ray");
+  write(dir + "/a0.ray", text);
+  write(dir + "/a1.ray", with_back_mode(text, "1 1 1 1"));
+  write(dir + "/backdrop.ppm", minrt::test::read_file(scenes() + "/backdrop.ppm"));
+  const Run r0 = minrt_in(dir, "a0.ray -o a0.png");
+  const Run r1 = minrt_in(dir, "a1.ray -o a1.png");
+  CHECK(r0.status == 0);
+  CHECK(r0.err.empty());
+  CHECK(r1.status == 0);
+  CHECK(std::count(r1.err.begin(), r1.err.end(), '\n') == 1);
+  CHECK(r1.err.find("a1.ray:15:17: warning: back_mode alpha mode 1 applies to the alpha channel of .hpi images") == 0);
+  int w = 0, h = 0;
+  CHECK(read_rgb(dir + "/a0.png", w, h) == read_rgb(dir + "/a1.png", w, h));
+}
