@@ -60,6 +60,26 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
     }
     shading.map_images = maps;
     shading.map_image_count = scene.map_file_count;
+    // The halved images of the maps read with mip 1 (line 398), as the
+    // host builds them (render/general/eastray_mapping.hpp).
+    bool any_mip = false;
+    for (int32_t i = 0; i < scene.map_file_count; ++i) any_mip = any_mip || scene.map_files[i].mip;
+    if (any_mip) {
+      model::Texture* mips =
+          arena.alloc_zeroed<model::Texture>(static_cast<size_t>(scene.map_file_count) * model::kMipLevels);
+      for (int32_t i = 0; mips != nullptr && i < scene.map_file_count; ++i) {
+        const size_t size = general::eastray_mip_bytes(maps[i].width, maps[i].height);
+        if (!scene.map_files[i].mip || size == 0) continue;
+        uint8_t* bytes = arena.alloc_uninit<uint8_t>(size);
+        if (bytes == nullptr) mips = nullptr;
+        else general::eastray_build_mips(maps[i], bytes, mips + static_cast<size_t>(i) * model::kMipLevels);
+      }
+      if (mips == nullptr) {
+        error.text("no room for the mip-mapped images");
+        return SceneResult::kOutOfMemory;
+      }
+      shading.map_mips = mips;
+    }
   }
   if (scene.input[0] != 0) {  // back_mode's background, sent like the maps
     const int32_t t = textures != nullptr ? textures->find(scene.input) : -1;
@@ -82,7 +102,23 @@ SceneResult render_eastray_rows(const char* text, size_t size, RgbaRowSink rows,
         " bytes)");
     return SceneResult::kOutOfMemory;
   }
-  renderer.render(rows, row);
+  if (!scene.stereo) {
+    renderer.render(rows, row);
+    return SceneResult::kOk;
+  }
+  // rmode 1 (lines 57, 117): the right eye's image, then the left eye's,
+  // as one image of twice the height; host-send cuts it into the _r and _l
+  // files (host/eastray_stereo.hpp). The view reads the eye at every row.
+  const model::EastraySettings<R> centre = shading;
+  rows.begin(scene.width, 2 * scene.height);
+  for (int view = 0; view < 2; ++view) {
+    shading.eye = general::eastray_stereo_eye<Math>(centre, view == 0 ? 1 : -1);
+    for (int y = 0; y < scene.height; ++y) {
+      renderer.render_row(y, row);
+      rows.row(view * scene.height + y, row);
+    }
+  }
+  rows.end();
   return SceneResult::kOk;
 }
 

@@ -24,8 +24,11 @@ inline constexpr int kMaxParts = 1024;
 inline constexpr int kMaxMainObjs = 64;
 inline constexpr int kMaxNesting = 32;        // blocks inside blocks, calls inside calls (the board's stack)
 inline constexpr int kMaxDepth = 16;          // condition's ray depth: each level is a stack frame
-inline constexpr int kMaxImageWidth = 2048;   // manual line 68
-inline constexpr int kMaxImageHeight = 4096;  // the project's image limit
+inline constexpr int kMaxImageWidth = 2048;   // manual line 72
+// Line 72 sets no height limit. Ours: 2^25 pixels at the widest, the most
+// the host's PNG reader takes back (an existing output a window is rendered
+// into, a map), and the framed protocol's 16-bit height holds a stereo pair.
+inline constexpr int kMaxImageHeight = 16384;
 inline constexpr int64_t kMaxCalls = 1000000; // part calls placed in one scene
 inline constexpr int kMaxFaceVertices = 256;
 
@@ -123,9 +126,10 @@ class Reader {
     else error_->text(", found ").quoted(tok_.s, tok_.length);
     return false;
   }
-  void warn(const char* msg) {
+  void warn(const char* msg) { warn_at(tok_.pos, msg); }
+  void warn_at(const SourcePos& at, const char* msg) {
     Diagnostic d;
-    d.pos = tok_.pos;
+    d.pos = at;
     d.has_pos = true;
     d.text(msg);
     warnings_.emit(d);
@@ -200,6 +204,28 @@ class Reader {
     }
     out = M::to_int(v);
     return true;
+  }
+  // The display height: the manual sets no limit (line 72), ours is
+  // kMaxImageHeight, named in the message.
+  bool height(int32_t& out) {
+    const SourcePos at = tok_.pos;
+    if (!integer(out, "display height", 1, 1 << 30)) return false;
+    if (out <= kMaxImageHeight) return true;
+    fail_at(at, "display height ");
+    error_->number(out).text(" is above ").number(kMaxImageHeight).text(
+        ", the most this program renders (line 72 sets no limit; docs/eastray.md says why)");
+    return false;
+  }
+  // condition's ray depth: the manual sets no limit (line 89), ours is
+  // kMaxDepth, named in the message.
+  bool depth(int32_t& out) {
+    const SourcePos at = tok_.pos;
+    if (!integer(out, "condition depth", 0, 1 << 30)) return false;
+    if (out <= kMaxDepth) return true;
+    fail_at(at, "condition depth ");
+    error_->number(out).text(" is above ").number(kMaxDepth).text(
+        ", the most this program traces (line 89 sets no limit; docs/eastray.md says why)");
+    return false;
   }
   // A switch: the manual's explanations (lines 92, 128, 249) give 1 for on
   // and 0 for off, nothing else.
@@ -381,7 +407,7 @@ class Reader {
     if (st.is("display")) {
       R aspect;
       if (!integer(scene_.width, "display width", 1, kMaxImageWidth) ||
-          !integer(scene_.height, "display height", 1, kMaxImageHeight) ||
+          !height(scene_.height) ||
           !integer(scene_.x0, "display x0", -1000000, 1000000) || !integer(scene_.y0, "display y0", -1000000, 1000000) ||
           !integer(scene_.x1, "display x1", -1000000, 1000000) || !integer(scene_.y1, "display y1", -1000000, 1000000) ||
           !integer(scene_.step_x, "display step x", 1, 65536) || !integer(scene_.step_y, "display step y", 1, 65536))
@@ -398,7 +424,7 @@ class Reader {
       return end_statement("display");
     }
     if (st.is("condition")) {
-      if (!integer(scene_.max_depth, "condition depth", 0, kMaxDepth) || !number(scene_.min_weight, "condition minimum weight") ||
+      if (!depth(scene_.max_depth) || !number(scene_.min_weight, "condition minimum weight") ||
           !number(scene_.eps, "condition eps") || !on_off(scene_.inner, "condition inner switch"))
         return false;
       if (scene_.eps < R(0)) scene_.eps = -scene_.eps;
@@ -470,12 +496,14 @@ class Reader {
       back_at_ = st.pos;
       if (!integer(scene_.background, "back_mode background mode 0, 1 or 2", 0, 2) ||
           !on_off(scene_.back_reflect, "back_mode reflection switch") ||
-          !on_off(scene_.back_transmit, "back_mode transmission switch") ||
-          !on_off(scene_.alpha_pure, "back_mode alpha mode"))
+          !on_off(scene_.back_transmit, "back_mode transmission switch"))
         return false;
-      if (scene_.back_reflect || scene_.back_transmit)
-        warn("warning: back_mode reflection and transmission switches 1 are read; missed secondary rays take the sky");
-      if (scene_.alpha_pure) warn("warning: back_mode alpha mode 1 is read; no alpha channel is written");
+      const SourcePos alpha_at = tok_.pos;
+      if (!on_off(scene_.alpha_pure, "back_mode alpha mode")) return false;
+      // The alpha mode shapes the alpha channel of .hpi images (lines
+      // 178, 227-230: HyPER Saiko's format on the FM TOWNS), not written.
+      if (scene_.alpha_pure)
+        warn_at(alpha_at, "warning: back_mode alpha mode 1 applies to the alpha channel of .hpi images, which are not written");
       return end_statement("back_mode");
     }
     if (st.is("e_light") || st.is("p_light") || st.is("s_light")) {

@@ -15,6 +15,9 @@
 namespace minrt::model {
 
 inline constexpr int kMapFileBytes = 256;
+// Halved images kept of a map read with mip 1 (line 398): enough for a
+// 65536-texel side to reach one texel.
+inline constexpr int kMipLevels = 16;
 inline constexpr int32_t kNoMapping = -1;
 
 // One `map_data` entry: the file as written and the mip-mapping switch.

@@ -78,7 +78,8 @@ struct EastraySettings {
   bool dither = false;
   // back_mode (lines 205-230): 0 the sky behind, sun discs seen; 1 the
   // input image behind, no discs; 2 the input image and the discs. The
-  // reflection, transmission and alpha switches are read.
+  // reflection and transmission switches send a missed secondary ray's
+  // power to that background; the alpha mode shapes only .hpi images.
   int32_t background = 0;
   bool back_reflect = false, back_transmit = false, alpha_pure = false;
 };
@@ -97,6 +98,9 @@ struct EastrayShading : EastraySettings<R> {
   const EastrayMappedObject<R>* mapped_objects = nullptr;
   const Texture* map_images = nullptr;  // one per map_data entry, 3 bytes a texel (linear 0..255)
   int32_t map_image_count = 0;
+  // Entry i's halved images when read with mip 1: level k (1..) at
+  // map_mips[i * kMipLevels + k - 1], width 0 past its last (modes 10-14).
+  const Texture* map_mips = nullptr;
   const Texture* input_image = nullptr;  // `input`, behind the image when background is 1 or 2
 };
 

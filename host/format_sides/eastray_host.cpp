@@ -3,7 +3,9 @@
 // general tracer. Messages name the file and line the text came from.
 #include "eastray_host.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
@@ -12,6 +14,8 @@
 #include "eastray_preprocess.hpp"
 #include "eastray_stereo.hpp"
 #include "image_merge.hpp"
+#include "png_io.hpp"
+#include "tiff_io.hpp"
 #include "formats/eastray/eastray_model.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "general_scene.hpp"
@@ -91,6 +95,8 @@ struct EastrayScene final : GeneralScene<M> {
   eastray::Scene<R> source;
   model::EastrayShading<R> shading;
   std::unique_ptr<EastrayMaps> maps;  // the map_data and input images the shading points into
+  std::vector<uint8_t> mip_bytes;     // the halved images of maps read with mip 1
+  std::vector<model::Texture> mips;   // kMipLevels per map_data entry
   Vec3<R> eye{};                      // the scene's own eye, between the stereo pair's
 
   // The right eye's image first, then the left's (the view reads the eye at every row).
@@ -122,6 +128,26 @@ struct EastrayScene final : GeneralScene<M> {
     return s;
   }
 };
+
+// The halved images of the maps read with mip 1 (line 398), which modes
+// 10-14 pick by the pixel's footprint; the board builds the same.
+template <class M>
+void build_mips(const eastray::Scene<typename M::real>& src, EastrayScene<M>& scene) {
+  const model::Texture* maps = scene.maps->table();
+  std::size_t bytes = 0;
+  for (int32_t i = 0; i < src.map_file_count; ++i)
+    if (src.map_files[i].mip) bytes += general::eastray_mip_bytes(maps[i].width, maps[i].height);
+  if (bytes == 0) return;
+  scene.mip_bytes.assign(bytes, 0);
+  scene.mips.assign(static_cast<std::size_t>(src.map_file_count) * model::kMipLevels, model::Texture{});
+  uint8_t* at = scene.mip_bytes.data();
+  for (int32_t i = 0; i < src.map_file_count; ++i) {
+    if (!src.map_files[i].mip) continue;
+    general::eastray_build_mips(maps[i], at, scene.mips.data() + static_cast<std::size_t>(i) * model::kMipLevels);
+    at += general::eastray_mip_bytes(maps[i].width, maps[i].height);
+  }
+  scene.shading.map_mips = scene.mips.data();
+}
 
 template <class M>
 std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOptions& options, std::string& error) {
@@ -157,6 +183,7 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, const DriverOp
   }
   scene->shading.map_images = scene->maps->table();
   scene->shading.map_image_count = scene->maps->count();
+  build_mips(src, *scene);
   if (src.input[0] != 0) {  // a missing or unreadable input is an error, where it is named
     if (!scene->maps->load_input(src.input, error)) {
       error = scene->expanded.at(src.input_line, src.input_col) + ": error: input " + error;
@@ -193,7 +220,7 @@ std::string eastray_output_name(const std::string& option, const std::string& st
 
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
                         int& height, std::string& output_statement, std::string& error,
-                        std::vector<std::pair<std::string, std::string>>* maps) {
+                        std::vector<std::pair<std::string, std::string>>* maps, EastrayBoardOutput* output) {
   ExpandedEastray x;
   if (!preprocess_eastray(path, path, text, x, error)) return false;
   using M = PortableFloat;  // the board's reader and arithmetic
@@ -206,6 +233,8 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   width = scene.width;
   height = scene.height;
   output_statement = scene.output;
+  if (output != nullptr)
+    *output = EastrayBoardOutput{scene.stereo, scene.x0, scene.y0, scene.x1, scene.y1, scene.output_bits, scene.dither};
   if (maps != nullptr) {
     maps->clear();
     for (int32_t i = 0; i < scene.map_file_count; ++i)
@@ -214,6 +243,54 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   }
   board_text = "/* EASTRAY */ " + x.text;  // on the first line: line numbers stay
   return true;
+}
+
+bool eastray_board_file(const std::string& png, const EastrayBoardOutput& how, const std::string& path,
+                        std::string& file, std::string& warning, std::string& error) {
+  std::FILE* in = fmemopen(const_cast<char*>(png.data()), png.size(), "rb");
+  if (in == nullptr) {
+    error = std::strerror(errno);
+    return false;
+  }
+  RgbaImage image;
+  if (!read_png(in, image, error)) return false;
+  bool tiff = false;
+  std::string unsupported;
+  eastray_output_name(path, "", path, tiff, unsupported);
+  std::vector<uint8_t> rgb(static_cast<std::size_t>(image.width) * image.height * 3);
+  for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = image.rgba[4 * i + c];
+  if (tiff && how.bits == 16) reduce_to_32k_colours(rgb, image.width, image.height, how.dither);
+  std::string why;
+  if (merge_outside_window(path, tiff, image.width, image.height, PixelWindow{how.x0, how.y0, how.x1, how.y1}, rgb, why) ==
+      MergeOutcome::kReplaced)
+    warning = why + ": replaced, black outside the display window (line 180)";
+  std::FILE* out = std::tmpfile();  // libtiff writes through a seekable file
+  if (out == nullptr) {
+    error = std::strerror(errno);
+    return false;
+  }
+  bool ok;
+  if (tiff) {
+    ok = write_tiff_rgb(out, image.width, image.height, rgb, error);
+  } else {
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+      for (int c = 0; c < 3; ++c) image.rgba[4 * i + c] = rgb[3 * i + c];
+    ok = write_png(out, image, error);
+  }
+  if (ok) {
+    std::fflush(out);
+    std::rewind(out);
+    file.clear();
+    char buffer[65536];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, out)) > 0;) file.append(buffer, n);
+    if (std::ferror(out)) {
+      error = std::strerror(errno);
+      ok = false;
+    }
+  }
+  std::fclose(out);
+  return ok;
 }
 
 std::unique_ptr<PreparedScene> prepare_eastray(const SceneInput& in, const DriverOptions& options, const WarningSink&,

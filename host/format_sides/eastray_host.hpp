@@ -26,8 +26,25 @@ std::string eastray_output_name(const std::string& option, const std::string& st
 // firmware recognises. Also the image size and the output statement, and
 // (when `maps` is given) the map_data file names as written, each with the
 // "FILE:LINE:COL: error: " its load errors start with.
+// `output`, when given, gets what eastray_board_file needs.
+struct EastrayBoardOutput {
+  bool stereo = false;       // rmode 1: the board sends the right image above the left (eastray_stereo.hpp)
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the display window (inclusive)
+  int bits = 24;             // output_mode
+  bool dither = false;
+};
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
                         int& height, std::string& output_statement, std::string& error,
-                        std::vector<std::pair<std::string, std::string>>* maps = nullptr);
+                        std::vector<std::pair<std::string, std::string>>* maps = nullptr,
+                        EastrayBoardOutput* output = nullptr);
+
+// The file host-send writes at `path` from the board's PNG (one image of a
+// stereo pair, or the only one), as minrt writes its own: TIFF for a .tif
+// or .tiff name (reduced to 32K colours under output_mode 16), PNG
+// otherwise; an existing file of the same format and size keeps its pixels
+// outside the display window (line 180). `warning` says when an existing
+// file of another kind is replaced. False with the reason.
+bool eastray_board_file(const std::string& png, const EastrayBoardOutput& how, const std::string& path,
+                        std::string& file, std::string& warning, std::string& error);
 
 }  // namespace minrt::host

@@ -7,10 +7,12 @@
 
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include <minrt/memory_map.h>
 #include <minrt/serial_protocol.h>
 
+#include "eastray_stereo.hpp"
 #include "file_input.hpp"
 #include "formats/registry.hpp"
 #include "image_load.hpp"
@@ -53,6 +55,11 @@ struct Job {
   bool scene_named_output = false;        // o.output comes from the scene (png line, output statement)
   std::string program;                    // course: --program's bytes
   Image reference;                        // --verify
+  std::vector<std::string> targets;       // the output, or EASTRAY's stereo pair (_r, _l)
+  // The board's PNG written as the format's own file (EASTRAY: TIFF,
+  // 16-bit, a window into an existing file); empty: written as received.
+  decltype(Upload::write_as) write_as;
+  bool stereo = false;
 };
 
 // The scene, recognised as minrt recognises it (formats/registry.hpp) and
@@ -84,6 +91,8 @@ int prepare_scene(Options& o, Job& job) {
     o.spec.width = upload.width;
     o.spec.height = upload.height;
   }
+  job.stereo = upload.stereo;
+  job.write_as = upload.write_as;
   job.reply_width = upload.width;
   job.reply_height = upload.height;
   if (!o.output_given) {
@@ -111,7 +120,13 @@ int check_before_sending(const Options& o, Job& job) {
   std::string why;
   if (job.scene_named_output && !o.allow_any_output && !minrt::host::scene_named_output_allowed(o.scene, o.output, why))
     return fail(kExitUsage, why);
-  if (!minrt::host::check_output_target(o.output, o.write_through, why)) return fail(kExitUsage, why);
+  // EASTRAY's stereo pair (rmode 1) goes to two files, the output's name
+  // with _r and _l (eastray_stereo.hpp).
+  job.targets = {o.output};
+  if (job.stereo && o.output != "-")
+    job.targets = {minrt::host::eastray_stereo_name(o.output, 'r'), minrt::host::eastray_stereo_name(o.output, 'l')};
+  for (const std::string& target : job.targets)
+    if (!minrt::host::check_output_target(target, o.write_through, why)) return fail(kExitUsage, why);
   // Raw sends SLD text as it is, and the board takes MINRT_END_OF_INPUT
   // (0x04) as the end of the scene: a scene with that byte inside would be
   // cut short there. The core's reader (the words encoder reads with it)
@@ -272,29 +287,48 @@ int transfer_error(const TransferResult& r) {
 }
 
 // The image checked against --expect-sha256 and written whole (a board's
-// stored PNG compressed first unless --as-received); `file` gets the
+// stored PNG compressed first unless --as-received; a stereo pair cut in
+// two; the format's own file when it has one); `file_bytes` gets the
 // bytes written.
-int write_image(const Options& o, const TransferResult& r, const std::string& digest, std::string& file,
-                bool& recompressed) {
+int write_image(const Options& o, const Job& job, const TransferResult& r, const std::string& digest,
+                std::size_t& file_bytes, bool& recompressed) {
   if (!o.expect_sha256.empty() && !same_sha256(digest, o.expect_sha256))
     return fail(kExitLink, "image sha256 " + digest + " differs from the expected " + o.expect_sha256 + "; not written");
   std::string err;
   recompressed = !o.as_received && r.image.compare(0, 4, "\x89PNG") == 0;
-  if (!recompressed) file = r.image;
-  else if (!minrt::host::compress_png(r.image, file, err)) return fail(kExitLink, "cannot recompress the board's PNG: " + err);
-  if (!write_file_atomically(o.output, file, o.write_through, minrt::host::Durability::kSynced, err))
-    return fail(kExitLink, err);
+  std::vector<std::string> images(1);
+  if (!recompressed) images[0] = r.image;
+  else if (!minrt::host::compress_png(r.image, images[0], err))
+    return fail(kExitLink, "cannot recompress the board's PNG: " + err);
+  if (job.targets.size() == 2) {
+    images.resize(2);
+    if (!minrt::host::split_stereo_png(r.image, images[0], images[1], err))
+      return fail(kExitLink, "cannot cut the board's stereo pair: " + err);
+  }
+  file_bytes = 0;
+  for (std::size_t i = 0; i < job.targets.size(); ++i) {
+    std::string file, warning;
+    const std::string& target = job.targets[i];
+    if (job.write_as && !o.as_received && target != "-" && !job.write_as(target, images[i], file, warning, err))
+      return fail(kExitLink, "cannot write " + target + ": " + err);
+    if (!warning.empty() && !o.quiet) warn(warning);
+    const std::string& bytes = file.empty() ? images[i] : file;
+    if (!write_file_atomically(target, bytes, o.write_through, minrt::host::Durability::kSynced, err))
+      return fail(kExitLink, err);
+    file_bytes += bytes.size();
+  }
   return kExitOk;
 }
 
 // "host-send: OUT: 154756 bytes; received 154769 in 12.345 s, 12.5 kB/s ...":
 // the file's size, then what crossed the line (with the CRC-32 trailer,
 // frames, a PNG's stored blocks) and how fast.
-void print_summary(const Options& o, const Link& link, const TransferResult& r, std::size_t file_bytes,
+void print_summary(const Options& o, const Job& job, const Link& link, const TransferResult& r, std::size_t file_bytes,
                    const std::string& digest, bool recompressed) {
+  const std::string shown = job.targets.size() == 2 ? job.targets[0] + " and " + job.targets[1] : o.output;
   const double rate = r.seconds > 0 ? static_cast<double>(r.received) / r.seconds : 0;
   char line[400];
-  int n = std::snprintf(line, sizeof line, "host-send: %s: %zu bytes; received %llu in %.3f s, %.1f kB/s%s", o.output.c_str(),
+  int n = std::snprintf(line, sizeof line, "host-send: %s: %zu bytes; received %llu in %.3f s, %.1f kB/s%s", shown.c_str(),
                         file_bytes, static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0,
                         o.sim ? " from the simulated board (firmware-sim)" : "");
   if ((link.paced || (o.sim && o.baud_given)) && n > 0 && n < static_cast<int>(sizeof line))  // the simulator paces at --baud too
@@ -363,10 +397,10 @@ int run(const Options& options) {
   if (r.status != TransferResult::Status::kOk) return transfer_error(r);
 
   const std::string digest = sha256_hex_of(r.image);
-  std::string file;
+  std::size_t file_bytes = 0;
   bool recompressed = false;
-  if (const int status = write_image(o, r, digest, file, recompressed); status != kExitOk) return status;
-  if (!o.quiet) print_summary(o, link, r, file.size(), digest, recompressed);
+  if (const int status = write_image(o, job, r, digest, file_bytes, recompressed); status != kExitOk) return status;
+  if (!o.quiet) print_summary(o, job, link, r, file_bytes, digest, recompressed);
   if (window.is_open()) show_written(o, window);
   if (!o.verify_ref.empty()) print_verification(r, job.reference);
   return kExitOk;

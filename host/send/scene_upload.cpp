@@ -69,21 +69,27 @@ bool prepare_minirt(const UploadRequest& r, std::string scene, Upload& out, std:
 
 // EASTRAY: preprocessed and checked here, sent expanded behind its
 // map_data images (decoded here, as a CS418 scene's textures); the board
-// sends PNG.
+// sends PNG (a stereo pair as one, right above left), written here as minrt
+// writes its image.
 bool prepare_eastray(const UploadRequest& r, std::string scene, Upload& out, std::string& error) {
   std::string statement, text;
   std::vector<std::pair<std::string, std::string>> maps;
-  if (!host::eastray_board_text(r.path, scene, text, out.width, out.height, statement, error, &maps)) return false;
+  host::EastrayBoardOutput how;
+  if (!host::eastray_board_text(r.path, scene, text, out.width, out.height, statement, error, &maps, &how))
+    return false;
+  out.stereo = how.stereo;
+  if (out.stereo) out.height *= 2;  // rmode 1: the right image above the left
+  // TIFF or PNG by the name, output_mode, the window kept in an existing file.
+  out.write_as = [how](const std::string& path, const std::string& png, std::string& file, std::string& warning,
+                       std::string& error) { return host::eastray_board_file(png, how, path, file, warning, error); };
   std::string preamble;
   if (!build_eastray_texture_preamble(maps, r.base_dir, r.texture_bytes, preamble, error)) return false;
   out.text_at = preamble.size();
   out.bytes = preamble + text;
   bool tiff = false;
   std::string unsupported;
-  const std::string name = host::eastray_output_name("", statement, r.path, tiff, unsupported);
-  out.output = tiff ? name.substr(0, name.rfind('.')) + ".png" : name;
+  out.output = host::eastray_output_name("", statement, r.path, tiff, unsupported);
   if (!unsupported.empty()) out.refusal = unsupported;  // only when no -o names the output
-  if (tiff) out.warning = "the board sends PNG; writing " + out.output;
   return true;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "formats/registry.hpp"
@@ -26,6 +27,12 @@ struct Upload {
   std::string output;           // where the image goes without -o ("": the scene's stem with the reply's extension)
   std::string warning;          // printed before the transfer, when no -o names the output
   std::string refusal;          // why the default output cannot be written (a format we do not write)
+  bool stereo = false;          // the reply is EASTRAY's pair, right above left: written as _r and _l files
+  // The file written at a path from the board's PNG (each of a stereo pair
+  // alone); empty: the PNG recompressed.
+  std::function<bool(const std::string& path, const std::string& png, std::string& file, std::string& warning,
+                     std::string& error)>
+      write_as;
 };
 
 struct UploadFormat {

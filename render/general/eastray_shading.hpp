@@ -3,7 +3,8 @@
 // (csg_intersect.hpp, by membership, RANGE as a bound) and the mesh
 // triangles, and the manual's shading: ambient (env), diffuse, specular
 // models 0, 1, 4, 5, mirror reflection, Fresnel transmission with
-// absorption, mist, the sky with visible sun discs, three light kinds with
+// absorption, mist, the sky with visible sun discs (or the background
+// image through back_mode's switches), three light kinds with
 // 2^(-d/h) fall-off and shadows through transparent blockers. The camera,
 // display window and antialiasing are eastray_view.hpp. docs/eastray.md
 // has every formula.
@@ -78,10 +79,19 @@ class EastrayShader : public TracerCore<M, F> {
  public:
   using Base::Base;
 
+  // How a ray came to be: back_mode's switches (lines 217-226) act on
+  // reflected and transmitted rays that meet nothing.
+  enum class Arrival { kCamera, kReflected, kTransmitted };
   // The colour a ray from `o` along unit `d` brings back; `medium_half` is
   // the absorption half distance of the body it travels in (0: air, where
-  // the mist is).
-  Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half) const;
+  // the mist is). With `back` (back_mode 1 and 2), the share of the
+  // background behind the pixel that shows through is written there (the
+  // pixel is colour + back x background): a camera ray that meets nothing,
+  // and a reflected or transmitted one whose switch is 1, hand their power
+  // to it. `travelled`: the ray's path from the eye so far, which with the
+  // pixel's angle gives the footprint that picks a mip-mapped image's level.
+  Vec3<R> eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight, R medium_half,
+                           Vec3<R>* back = nullptr, Arrival arrival = Arrival::kCamera, R travelled = R(0)) const;
   // Whether a ray from `o` along `d` meets anything (EASTRAY's background image).
   bool eastray_hits(const Vec3<R>& o, const Vec3<R>& d) const {
     return eastray_nearest(o, d, R(0), R(1e30), false).found;
@@ -364,18 +374,36 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_specular(const model::Eastra
 
 template <class M, uint32_t F>
 Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, const Vec3<R>& d, int depth, R weight,
-                                                      R medium_half) const {
+                                                      R medium_half, Vec3<R>* back, Arrival arrival,
+                                                      R travelled) const {
   using V = Vec3<R>;
   using namespace eastray_detail;
   const model::EastrayShading<R>& e = *s_.eastray;
+  if (back != nullptr) *back = V{};
   // condition eps (line 91): distances below it count as 0, so a ray
   // never meets the surface it starts on.
   const EastrayHit h = eastray_nearest(o, d, depth == 0 ? R(0) : e.eps, R(1e30), false);
-  if (!h.found) return eastray_sky(d);
+  if (!h.found) {
+    const bool to_background = arrival == Arrival::kCamera || (arrival == Arrival::kReflected && e.back_reflect) ||
+                               (arrival == Arrival::kTransmitted && e.back_transmit);
+    if (back == nullptr || !to_background) return eastray_sky(d);
+    // Its power goes to the background; the sun discs stay where the mode
+    // shows them (none under back_mode 1: eastray_sky is the bare sky there).
+    *back = V{R(1), R(1), R(1)};
+    return eastray_sky(d) - e.sky;
+  }
   const V p = o + d * h.t;
   model::EastrayMaterial<R> scratch;
   V mapped_normal = h.normal;
-  const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, p, mapped_normal, scratch);
+  // A pixel's width where the path from the eye meets this mapped surface
+  // (its angle 2 tan(fov) / width; the spreading of curved mirrors and
+  // lenses is not followed).
+  R footprint = R(0);
+  if (e.map_mips != nullptr && h.material >= e.material_count) {
+    constexpr R kDeg = R(kEastrayPi / 180.0);
+    footprint = (travelled + h.t) * (R(2) * M::sin(e.fov * kDeg) / M::cos(e.fov * kDeg) / M::from_int(e.width));
+  }
+  const model::EastrayMaterial<R>& m = eastray_surface<M>(e, h.material, p, mapped_normal, scratch, footprint);
   const bool from_inside = dot(h.geo, d) > R(0);
   const V n = from_inside ? -mapped_normal : mapped_normal;  // toward the viewer
   const V g = from_inside ? -h.geo : h.geo;
@@ -404,21 +432,32 @@ Vec3<typename M::real> EastrayShader<M, F>::eastray_radiance(const Vec3<R>& o, c
       }
       if (from_inside && !e.inner && refract) kr = V{};  // no branching inside bodies
     }
+    V through{};  // the background's share a secondary ray brings back
     if (maxc(kr) > R(0) && weight * maxc(kr) >= e.min_weight) {
       const V rdir = d + n * (R(2) * cosi);
-      c += kr * eastray_radiance(above, rdir, depth + 1, weight * maxc(kr), medium_half);
+      c += kr * eastray_radiance(above, rdir, depth + 1, weight * maxc(kr), medium_half, back != nullptr ? &through : nullptr,
+                                 Arrival::kReflected, travelled + h.t);
+      if (back != nullptr) *back += kr * through;
     }
     if (refract && maxc(kt) > R(0) && weight * maxc(kt) >= e.min_weight) {
       // A body that does not absorb (transparency 0) still keeps the mist
       // out: its half distance is taken as 1e30, where 2^(-t/h) is 1.
       const R next_medium = from_inside ? R(0) : m.half_distance > R(0) ? m.half_distance : R(1e30);
-      c += kt * eastray_radiance(below, normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium);
+      c += kt * eastray_radiance(below, normalize<M>(tdir), depth + 1, weight * maxc(kt), next_medium,
+                                 back != nullptr ? &through : nullptr, Arrival::kTransmitted, travelled + h.t);
+      if (back != nullptr) *back += kt * through;
     }
   }
-  if (medium_half > R(0)) c = c * half_life<M>(h.t, medium_half);
+  // The background seen through this hit fades as the hit's colour does.
+  if (medium_half > R(0)) {
+    const R k = half_life<M>(h.t, medium_half);
+    c = c * k;
+    if (back != nullptr) *back = *back * k;
+  }
   if (e.mist_half > R(0) && !(medium_half > R(0))) {
     const R f = half_life<M>(h.t, e.mist_half);
     c = c * f;
+    if (back != nullptr) *back = *back * f;
     if (e.mist_to_sky) c += e.sky * (R(1) - f);
   }
   return c;

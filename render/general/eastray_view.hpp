@@ -55,10 +55,14 @@ class EastrayView {
     const R sx = (R(2) * fx / M::from_int(s_.width) - R(1)) * tan_h_;
     const R sy = (R(1) - R(2) * fy / M::from_int(s_.height)) * tan_v_;
     const V d = normalize<M>(forward_ + right_ * sx + up_ * sy);
-    // back_mode 1 and 2 (lines 213-216): where the eye sees nothing, the
-    // input image, stretched over the display by its nearest pixel; with 2
-    // the sun discs show over it.
-    if (s_.background != 0 && s_.input_image != nullptr && !tracer_.eastray_hits(s_.eye, d)) {
+    // back_mode 1 and 2 (lines 213-226): the input image, stretched over
+    // the display by its nearest pixel, is the background behind this
+    // pixel; what the rays hand to it (a camera ray that meets nothing, and
+    // reflected or transmitted rays under their switches) shows it.
+    if (s_.background != 0 && s_.input_image != nullptr) {
+      V share{};
+      const V c = tracer_.eastray_radiance(s_.eye, d, 0, R(1), R(0), &share);
+      if (!(share.x > R(0) || share.y > R(0) || share.z > R(0))) return c;
       const model::Texture& b = *s_.input_image;
       int32_t bx = M::to_int(M::floor(fx / M::from_int(s_.width) * M::from_int(b.width)));
       int32_t by = M::to_int(M::floor(fy / M::from_int(s_.height) * M::from_int(b.height)));
@@ -66,9 +70,7 @@ class EastrayView {
       by = by < 0 ? 0 : by >= b.height ? b.height - 1 : by;
       const uint8_t* p = b.rgb + (static_cast<size_t>(by) * static_cast<size_t>(b.width) + static_cast<size_t>(bx)) * 3u;
       const V back{R(p[0]) / R(255), R(p[1]) / R(255), R(p[2]) / R(255)};
-      if (s_.background == 1) return back;
-      // back_mode 2: the sun discs over it (a missed ray brings the sky and its discs).
-      return back + (tracer_.eastray_radiance(s_.eye, d, 0, R(1), R(0)) - s_.sky);
+      return c + back * share;
     }
     return tracer_.eastray_radiance(s_.eye, d, 0, R(1), R(0));
   }

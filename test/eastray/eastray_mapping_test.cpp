@@ -11,6 +11,7 @@
 #include <functional>
 
 #include "eastray_probe_support.hpp"
+#include "render/general/eastray_mapping.hpp"
 
 using namespace eprobe;
 
@@ -187,6 +188,47 @@ TEST_CASE("eastray mapping: modes 10-14 blend neighbouring texels", "[eastray][m
                             scenes() + "/f.ray");
   const Rgb mid = px(sharp, 40, 30);
   CHECK(((mid.r == 255 && mid.g == 0) || (mid.r == 0 && mid.g == 255)));
+}
+
+TEST_CASE("eastray mapping: modes 10-14 pick a halved image by the pixel's footprint", "[eastray][mapping][mip]") {
+  // map_mip_checker.ray: single-texel checks, about 3.6 to a pixel. The
+  // plates span columns 3-29 and 35-61, rows 3-29 (x = +-1.8 +- 1.5 at
+  // distance 9.9, 64 columns across 2 tan 20 9.9).
+  const auto im = render_file("map_mip_checker.ray");
+  int black = 0, white = 0, other = 0;
+  for (int y = 8; y <= 23; ++y)
+    for (int x = 8; x <= 23; ++x) {
+      const Rgb m = px(im, x, y);  // mipped: every pixel the checks' mean
+      CHECK((std::abs(m.r - 128) <= 1 && m.g == m.r && m.b == m.r));
+      const Rgb p = px(im, x + 32, y);  // plain: a texel, black or white
+      black += p.r == 0 && p.g == 0 && p.b == 0;
+      white += p.r == 255 && p.g == 255 && p.b == 255;
+      other += !(p.r == 0 || p.r == 255);
+    }
+  CHECK(black > 20);
+  CHECK(white > 20);
+  CHECK(other == 0);
+  // Where a texel covers several pixels the halved images are not used:
+  // "modes 10-14 blend neighbouring texels" (halves.ppm, read with mip 1).
+}
+
+TEST_CASE("eastray mapping: the halved images", "[eastray][mapping][mip]") {
+  // 3 x 1 texels 0, 100, 255 (red), 10 (green), 20 (blue): 2 x 1, then 1 x 1,
+  // each texel the rounded mean of those under it.
+  const uint8_t base[9] = {0, 10, 20, 100, 10, 20, 255, 10, 20};
+  const minrt::model::Texture t{3, 1, base};
+  REQUIRE(minrt::general::eastray_mip_bytes(3, 1) == 9);
+  uint8_t bytes[9] = {};
+  minrt::model::Texture levels[minrt::model::kMipLevels];
+  minrt::general::eastray_build_mips(t, bytes, levels);
+  CHECK(levels[0].width == 2);
+  CHECK(levels[0].height == 1);
+  CHECK(levels[0].rgb[0] == 50);   // (0 + 100 + 1) / 2
+  CHECK(levels[0].rgb[3] == 255);  // the odd edge: alone
+  CHECK(levels[1].width == 1);
+  CHECK(levels[1].rgb[0] == 153);  // (50 + 255 + 1) / 2
+  CHECK(levels[1].rgb[1] == 10);
+  CHECK(levels[2].width == 0);
 }
 
 TEST_CASE("eastray mapping: bump mapping leans the normal away from the rise", "[eastray][mapping]") {

@@ -135,6 +135,11 @@ std::vector<Case> cases() {
       {"display-too-wide", "display 4096 24 0 0 31 23 1 1 1 ;\nobj [ ]\n", "display-too-wide.ray:1:9:", "display width"},
       {"display-step-zero", "display 32 24 0 0 31 23 0 1 1 ;\nobj [ ]\n", "display-step-zero.ray:1:25:", "display step"},
       {"condition-negative", "condition -1 0.01 0.00001 0 ;\nobj [ ]\n", "condition-negative.ray:1:11:", "condition depth"},
+      // the manual sets no height or depth limit (lines 72, 89): ours are named
+      {"display-too-high", "display 32 16385 0 0 31 23 1 1 1 ;\nobj [ ]\n", "display-too-high.ray:1:12:",
+       "display height 16385 is above 16384, the most this program renders"},
+      {"condition-too-deep", "condition 17 0.01 0.00001 0 ;\nobj [ ]\n", "condition-too-deep.ray:1:11:",
+       "condition depth 17 is above 16, the most this program traces"},
       // switches: the manual's explanations know 1 and 0 only (lines 92, 128, 249)
       {"shadow-two", h + "shadow 2 ;\nobj [ 2 grey 1  0 1 0  1 ; ]\n", "shadow-two.ray:7:8:",
        "shadow switch must be 0 or 1, found '2'"},
