@@ -57,7 +57,9 @@ StopInfo RunProgress::run(Machine& m, uint64_t max_instructions) {
     const bool last = max_instructions - done <= slice;
     const auto t0 = Clock::now();
     StopInfo s = m.run(last ? max_instructions : done + slice);
-    if (s.cause != StopCause::InstructionLimit || last) {
+    // A slice ends at the first taken jump past its end, which may already
+    // be past the limit: where one run would have stopped too.
+    if (s.cause != StopCause::InstructionLimit || last || m.hart().instret > max_instructions) {
       clear();
       return s;
     }
