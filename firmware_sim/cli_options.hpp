@@ -32,15 +32,16 @@ struct CliOptions {
   std::string commit_log;         // --commit-log FILE (spike's commit-log layout)
   std::string flame_out;          // flame graph SVG
   int gdb_port = -1;              // -1 = no GDB stub; 0 = any free port
-  bool help = false, version = false;
 };
 
+// A bad option value, thrown while the command line is read.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Throws UsageError with a one-line message.
-CliOptions parse_cli(const std::vector<std::string>& argv);
-const char* cli_help_text();
+// Parses argv[1..argc) with the table parser (posix/command_line.hpp).
+// False when firmware-sim ends now with `status`: 0 after --help or
+// --version, 2 after the one-line usage error.
+bool parse_cli(int argc, char** argv, const char* version, CliOptions& o, int& status);
 
 }  // namespace fwsim

@@ -30,6 +30,7 @@
 #include "posix/output_file.hpp"
 #include "profile_writers.hpp"
 #include "pty_backend.hpp"
+#include "run_progress.hpp"
 #include "run_report.hpp"
 
 #ifndef FWSIM_VERSION
@@ -82,21 +83,9 @@ void write_output(const std::string& path, Writer w) {
   if (!minrt::host::write_file_atomically(path, text.str(), false, minrt::host::Durability::kSynced, error)) die(kExitIo, error);
 }
 
-int run(const std::vector<std::string>& argv) {
+int run(int argc, char** argv) {
   CliOptions opt;
-  try {
-    opt = parse_cli(argv);
-  } catch (const UsageError& e) {
-    die(kExitUsage, std::string(e.what()) + " (see --help)");
-  }
-  if (opt.help) {
-    std::fputs(cli_help_text(), stdout);
-    return 0;
-  }
-  if (opt.version) {
-    std::printf("firmware-sim %s\n", FWSIM_VERSION);
-    return 0;
-  }
+  if (int status = 0; !parse_cli(argc, argv, FWSIM_VERSION, opt, status)) return status;
 
   FpuModelConfig fpu_cfg;
   try {
@@ -241,7 +230,7 @@ int run(const std::vector<std::string>& argv) {
   const auto t0 = std::chrono::steady_clock::now();
   const uint64_t max_instructions = opt.max_instructions ? opt.max_instructions : UINT64_MAX;
   StopInfo stop;
-  bool killed = false;
+  bool killed = false, interrupted = false;
   if (gdb) {
     try {
       stop = gdb->serve(m, max_instructions, killed);
@@ -249,7 +238,12 @@ int run(const std::vector<std::string>& argv) {
       die(kExitIo, e.what());
     }
   } else {
-    stop = m.run(max_instructions);
+    // The progress line only where it is alone on the terminal: not over a
+    // trace, nor over the firmware's own output on the same terminal.
+    const bool uart_on_terminal = !opt.pty && opt.uart_out.empty() && ::isatty(STDOUT_FILENO);
+    RunProgress progress(::isatty(STDERR_FILENO) && !opt.trace && !uart_on_terminal, stderr);
+    stop = progress.run(m, max_instructions);
+    interrupted = progress.interrupted() && stop.cause == StopCause::None;
   }
   const auto t1 = std::chrono::steady_clock::now();
   const double cpu1 = cpu_seconds();
@@ -258,6 +252,14 @@ int run(const std::vector<std::string>& argv) {
   if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
   if (!timed) m.hart().cycles = m.hart().instret;
 
+  if (interrupted) {
+    // What ran so far, and no profile of a run cut short.
+    std::fprintf(stderr, "firmware-sim: interrupted at pc 0x%08x after %llu instructions (%.1f s, %.0f MIPS)\n",
+                 m.hart().pc, static_cast<unsigned long long>(m.hart().instret),
+                 std::chrono::duration<double>(t1 - t0).count(),
+                 static_cast<double>(m.hart().instret) / std::chrono::duration<double, std::micro>(t1 - t0).count());
+    return kExitInterrupted;
+  }
   if (killed) {
     std::fprintf(stderr, "firmware-sim: error: killed by gdb at pc 0x%08x [after %llu instructions, exit status %d]\n",
                  m.hart().pc, static_cast<unsigned long long>(m.hart().instret), kExitKilled);
@@ -300,7 +302,7 @@ int main(int argc, char** argv) {
   // the default SIGPIPE would kill the simulator instead (141).
   std::signal(SIGPIPE, SIG_IGN);
   try {
-    return run(std::vector<std::string>(argv + 1, argv + argc));
+    return run(argc, argv);
   } catch (const ExitNow& e) {
     return e.status;
   } catch (const std::bad_alloc&) {

@@ -7,9 +7,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "core/math/math_libm.hpp"
-#include "core/math/math_portable.hpp"
 #include "formats/cs418/cs418_reader.hpp"
+#include "reader_fuzzing.hpp"
 #include "render/general/render.hpp"
 
 namespace {
@@ -17,29 +16,23 @@ namespace {
 const uint8_t kTexels[12] = {0, 64, 128, 255, 255, 255, 10, 20, 30, 200, 100, 0};
 const minrt::model::Texture kTexture{2, 2, kTexels};
 
-int32_t any_texture(void*, const char*, minrt::Diagnostic&) { return 0; }
-
 template <class M>
 void read_one(const uint8_t* data, size_t size) {
-  using R = typename M::real;
-  static std::vector<unsigned char> storage(1 << 22);  // allocated once: the arena needs no clearing
-  minrt::Arena arena(storage.data(), storage.size());
-  minrt::model::SceneBuilder<R> builder(arena);
-  minrt::MemorySource mem{data, size};
-  minrt::cs418::Reader<M> reader(mem.source(), builder, {&any_texture, nullptr}, {});
+  fuzzing::GeneralInput<M> in{.mem = {data, size}};
+  minrt::cs418::Reader<M> reader(in.mem.source(), in.builder, {&fuzzing::any_texture, nullptr}, {});
   minrt::cs418::Header header;
-  minrt::model::Scene<R> scene;
+  minrt::model::Scene<typename M::real> scene;
   minrt::Diagnostic d;
   const auto st = reader.read(header, scene, d);
   if (st == minrt::cs418::ReadStatus::kSceneError) {
-    if (d.length <= 0) std::abort();  // a refusal always says what
+    fuzzing::require_message(d, false);
     return;
   }
-  if (st != minrt::cs418::ReadStatus::kOk || !builder.finish(scene)) return;
+  if (st != minrt::cs418::ReadStatus::kOk || !in.builder.finish(scene)) return;
   scene.textures = &kTexture;
   scene.texture_count = 1;
   minrt::general::Renderer<M> renderer;
-  if (!renderer.setup(scene, arena, 1)) return;
+  if (!renderer.setup(scene, in.arena, 1)) return;
   // Render only what stays quick: a few pixels, few samples, shallow trees.
   if (static_cast<int64_t>(scene.width) * scene.height * scene.samples > 256 || scene.bounces > 6 || scene.gi_depth > 2)
     return;
@@ -53,8 +46,4 @@ void read_one(const uint8_t* data, size_t size) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  read_one<minrt::LibmDouble>(data, size);
-  read_one<minrt::PortableFloat>(data, size);
-  return 0;
-}
+MINRT_FUZZ_BOTH_POLICIES(read_one)

@@ -7,10 +7,9 @@
 #include <cstdlib>
 #include <vector>
 
-#include "core/math/math_libm.hpp"
-#include "core/math/math_portable.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "formats/eastray/eastray_model.hpp"
+#include "reader_fuzzing.hpp"
 #include "render/general/render.hpp"
 
 namespace {
@@ -20,16 +19,15 @@ void read_one(const uint8_t* data, size_t size) {
   using R = typename M::real;
   using Scene = minrt::eastray::Scene<R>;
   constexpr typename Scene::Capacities kItems = Scene::Capacities::all(512);
-  static std::vector<unsigned char> storage(Scene::bytes_for(kItems) + minrt::eastray::Reader<M>::scratch_bytes() +
-                                            minrt::general::object_bvh_bytes<R>(512) +
-                                            minrt::general::bvh_footprint<R>(512) + 4096 * 4 + 4096);
-  minrt::Arena arena(storage.data(), storage.size());
+  minrt::Arena arena = fuzzing::arena_once<M>(Scene::bytes_for(kItems) + minrt::eastray::Reader<M>::scratch_bytes() +
+                                              minrt::general::object_bvh_bytes<R>(512) +
+                                              minrt::general::bvh_footprint<R>(512) + 4096 * 4 + 4096);
   minrt::eastray::Scene<R> scene;
   if (!scene.allocate(arena, kItems)) std::abort();
   minrt::eastray::Reader<M> reader(reinterpret_cast<const char*>(data), size, scene, arena);
   minrt::Diagnostic d;
   if (!reader.read(d)) {
-    if (d.length <= 0 || !d.has_pos) std::abort();  // a refusal always says what and where
+    fuzzing::require_message(d, true);
     return;
   }
   // The hierarchies over any accepted scene's objects and triangles (their
@@ -54,8 +52,4 @@ void read_one(const uint8_t* data, size_t size) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  read_one<minrt::LibmDouble>(data, size);
-  read_one<minrt::PortableFloat>(data, size);
-  return 0;
-}
+MINRT_FUZZ_BOTH_POLICIES(read_one)

@@ -6,9 +6,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "core/math/math_libm.hpp"
-#include "core/math/math_portable.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
+#include "reader_fuzzing.hpp"
 #include "render/jaworski/tracer.hpp"
 
 namespace {
@@ -16,15 +15,14 @@ namespace {
 template <class M>
 void read_one(const uint8_t* data, size_t size) {
   using R = typename M::real;
-  static std::vector<unsigned char> storage(1 << 22);  // allocated once: the arena needs no clearing
-  minrt::Arena arena(storage.data(), storage.size());
+  minrt::Arena arena = fuzzing::arena_once<M>();
   minrt::jaworski::Scene<R> scene;
   if (!scene.allocate(arena, 2048)) std::abort();
   minrt::MemorySource mem{data, size};
   minrt::jaworski::Reader<M> reader(mem.source(), scene);
   minrt::Diagnostic d;
   if (!reader.read(d)) {
-    if (d.length <= 0 || !d.has_pos) std::abort();  // a refusal always says what and where
+    fuzzing::require_message(d, true);
     return;
   }
   if (static_cast<int64_t>(scene.width) * scene.height > 256 || scene.ray_depth > 8) return;
@@ -40,8 +38,4 @@ void read_one(const uint8_t* data, size_t size) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  read_one<minrt::LibmDouble>(data, size);
-  read_one<minrt::PortableFloat>(data, size);
-  return 0;
-}
+MINRT_FUZZ_BOTH_POLICIES(read_one)

@@ -8,10 +8,9 @@
 #include <cstdlib>
 #include <vector>
 
-#include "core/math/math_libm.hpp"
-#include "core/math/math_portable.hpp"
 #include "formats/minirt/minirt_camera.hpp"
 #include "formats/minirt/minirt_reader.hpp"
+#include "reader_fuzzing.hpp"
 #include "render/general/render.hpp"
 
 namespace {
@@ -19,24 +18,20 @@ namespace {
 constexpr int kWidth = 8, kHeight = 6;
 const uint8_t kTexels[3 * 3 * 2] = {0, 0, 0, 255, 255, 255, 10, 200, 30, 90, 90, 90, 250, 0, 0, 0, 0, 250};
 
-int32_t any_texture(void*, const char*, minrt::Diagnostic&) { return 0; }
-
 template <class M>
 void read_one(const uint8_t* data, size_t size) {
   using R = typename M::real;
-  static std::vector<unsigned char> storage(1 << 22);  // allocated once: the arena needs no clearing
-  minrt::Arena arena(storage.data(), storage.size());
-  minrt::model::SceneBuilder<R> builder(arena);
-  minrt::MemorySource mem{data, size};
-  minrt::minirt::Reader<M> reader(mem.source(), builder, minrt::minirt::TextureResolver{&any_texture, nullptr});
+  fuzzing::GeneralInput<M> in{.mem = {data, size}};
+  minrt::minirt::Reader<M> reader(in.mem.source(), in.builder,
+                                  minrt::minirt::TextureResolver{&fuzzing::any_texture, nullptr});
   minrt::model::Scene<R> scene;
   minrt::minirt::View<R> view;
   minrt::Diagnostic d;
   if (reader.read(scene, view, d) != minrt::minirt::ReadStatus::kOk) {
-    if (d.length <= 0) std::abort();  // a refusal always says what
+    fuzzing::require_message(d, false);
     return;
   }
-  if (!builder.finish(scene)) return;
+  if (!in.builder.finish(scene)) return;
   const minrt::model::Texture texture{3, 2, kTexels};
   scene.textures = &texture;
   scene.texture_count = 1;
@@ -44,7 +39,7 @@ void read_one(const uint8_t* data, size_t size) {
   scene.height = kHeight;
   scene.camera = minrt::minirt::place_camera<M>(view, kWidth, kHeight);
   minrt::general::Renderer<M> renderer;
-  if (!renderer.setup(scene, arena, 1)) return;
+  if (!renderer.setup(scene, in.arena, 1)) return;
   uint8_t row[4 * kWidth];
   for (int y = 0; y < kHeight; ++y) {
     renderer.render_row(y, row);
@@ -55,8 +50,4 @@ void read_one(const uint8_t* data, size_t size) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  read_one<minrt::LibmDouble>(data, size);
-  read_one<minrt::PortableFloat>(data, size);
-  return 0;
-}
+MINRT_FUZZ_BOTH_POLICIES(read_one)

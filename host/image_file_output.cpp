@@ -35,6 +35,13 @@ bool has_foreign_extension(const std::string& name) {
   return true;
 }
 
+std::string with_extension(const std::string& path, const char* ext) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ext;
+  return path.substr(0, dot) + ext;
+}
+
 bool write_ppm(std::FILE* f, const RgbaImage& image) {
   if (std::fprintf(f, "P6\n%d %d\n255\n", image.width, image.height) < 0) return false;
   std::vector<uint8_t> row(static_cast<std::size_t>(image.width) * 3);

@@ -23,6 +23,10 @@ ImageFile image_file_for(const std::string& name, formats::ImageKind format_defa
 bool has_foreign_extension(const std::string& name);
 inline constexpr const char* kImageExtensions = ".png, .ppm, .bmp, .tif or .tiff";
 
+// `path` with the extension of its last name replaced by `ext` (".bmp"), or
+// with `ext` appended when that name has no dot: a scene's default image name.
+std::string with_extension(const std::string& path, const char* ext);
+
 // P6, maxval 255, the RGB of each pixel. False when a write fails (errno
 // says why).
 bool write_ppm(std::FILE* f, const RgbaImage& image);

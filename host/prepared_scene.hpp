@@ -89,12 +89,13 @@ class PreparedScene {
 // A format's host side. `prepare` parses and sets up; on failure it returns
 // null with `error` set to the message line (without the "Error" line of
 // miniRT's style, which the driver prints). `stream` instead writes the
-// image's bytes itself (SLD: the original's PPM, byte for byte).
+// image's bytes itself (SLD: the original's PPM, byte for byte). Both report
+// warnings through the driver's sink.
 struct HostFormat {
   formats::FormatId id;
   std::unique_ptr<PreparedScene> (*prepare)(const SceneInput& in, const DriverOptions& options,
                                             const WarningSink& warnings, std::string& error);
-  int (*stream)(const SceneInput& in, const DriverOptions& options);
+  int (*stream)(const SceneInput& in, const DriverOptions& options, const WarningSink& warnings);
 };
 
 }  // namespace minrt::host

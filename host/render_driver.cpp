@@ -76,24 +76,22 @@ int run_driver(const DriverOptions& options) {
     const std::size_t slash = in.path.rfind('/');
     if (slash != std::string::npos) in.base_dir = in.path.substr(0, slash + 1);
   }
-  // The name alone decides the error style of a file that cannot be read.
-  const formats::Format& by_name =
-      options.format != nullptr ? *options.format : formats::detect_format(from_stdin ? nullptr : in.path.c_str(), {});
   std::string why;
   const bool read_ok = from_stdin ? read_whole_fd(STDIN_FILENO, in.text, why, kMaxSceneBytes)
                                   : read_whole_file(in.path, in.text, why, kMaxSceneBytes);
-  if (!read_ok) {
-    print_error(by_name.errors, (by_name.errors == formats::ErrorStyle::kMinirtError ? in.shown + ": cannot read the scene: "
-                                                                                      : "minrt: error: cannot read " + in.shown + ": ") +
-                                    why);
-    return scene_status(by_name.errors);
-  }
+  // Recognised once, from the name and the text's start; of a file that
+  // cannot be read the name alone decides the error style (no text: {}).
   const auto* bytes = reinterpret_cast<const uint8_t*>(in.text.data());
-  const std::size_t bom = formats::bom_bytes(bytes, in.text.size());
-  const formats::TextStart start = formats::text_start(bytes, in.text.size());
-  in.text.erase(0, bom);
+  const formats::TextStart start = read_ok ? formats::text_start(bytes, in.text.size()) : formats::TextStart{};
   const formats::Format& format =
       options.format != nullptr ? *options.format : formats::detect_format(from_stdin ? nullptr : in.path.c_str(), start);
+  if (!read_ok) {
+    print_error(format.errors, (format.errors == formats::ErrorStyle::kMinirtError ? in.shown + ": cannot read the scene: "
+                                                                                    : "minrt: error: cannot read " + in.shown + ": ") +
+                                   why);
+    return scene_status(format.errors);
+  }
+  in.text.erase(0, formats::bom_bytes(bytes, in.text.size()));
   for (const std::string& name : options.format_options)
     if (!formats::takes_option(format, name.c_str())) {
       std::string owners;
@@ -103,13 +101,13 @@ int run_driver(const DriverOptions& options) {
                                      format.title + " (see minrt --help)");
       return scene_status(format.errors);
     }
-  const HostFormat& host = host_format(format.id);
-  if (host.stream != nullptr) return host.stream(in, options);
-
-  const formats::ErrorStyle style = format.errors;
   WarningContext wctx{in.shown.c_str()};
   WarningSink warnings;
   if (!options.quiet) warnings = WarningSink{&print_warning, &wctx};
+  const HostFormat& host = host_format(format.id);
+  if (host.stream != nullptr) return host.stream(in, options, warnings);
+
+  const formats::ErrorStyle style = format.errors;
   std::string error;
   std::unique_ptr<PreparedScene> scene = host.prepare(in, options, warnings, error);
   if (!scene) {

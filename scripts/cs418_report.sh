@@ -10,27 +10,10 @@
 # Usage: scripts/cs418_report.sh [--shared DIR] [--out DIR | --write-docs]
 # Needs build/release (scripts/render.sh or scripts/test.sh builds it).
 . "$(dirname "$0")/help.sh"
+. "$(dirname "$0")/common.sh"
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-shared=$root/../shared
-out=$root/build/reports/cs418
-while [ $# -gt 0 ]; do
-  case $1 in
-    --shared) shared=${2:?$1 needs a folder}; shift 2 ;;
-    --out) out=${2:?$1 needs a folder}; shift 2 ;;
-    --write-docs) out=$root/docs/cs418; shift ;;
-    *) echo "cs418_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-bin=$root/build/release/host
-for tool in minrt image-compare; do
-  [ -x "$bin/$tool" ] || { echo "cs418_report.sh: error: $bin/$tool not built (run scripts/test.sh first)" >&2; exit 1; }
-done
-dir=$shared/formats/cs418
-[ -d "$dir" ] || { echo "cs418_report.sh: error: no CS418 tests in $dir" >&2; exit 1; }
-mkdir -p "$out"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+report=cs418 what="CS418 tests"
+. "$(dirname "$0")/report_setup.sh"
 figures() {  # A B -> "off alpha psnr"
   "$bin/image-compare" "$@" | awk '/off by/{o=$5}/alpha mis/{a=$3}/PSNR/{p=$3}END{print o, a, p}'
 }

@@ -14,27 +14,10 @@
 # Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR | --write-docs]
 # Needs build/release (scripts/render.sh or scripts/test.sh builds it).
 . "$(dirname "$0")/help.sh"
+. "$(dirname "$0")/common.sh"
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-shared=$root/../shared
-out=$root/build/reports/eastray
-while [ $# -gt 0 ]; do
-  case $1 in
-    --shared) shared=${2:?$1 needs a folder}; shift 2 ;;
-    --out) out=${2:?$1 needs a folder}; shift 2 ;;
-    --write-docs) out=$root/docs/eastray; shift ;;
-    *) echo "eastray_report.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-bin=$root/build/release/host
-for tool in minrt image-compare; do
-  [ -x "$bin/$tool" ] || { echo "eastray_report.sh: error: $bin/$tool not built (run scripts/test.sh first)" >&2; exit 1; }
-done
-dir=$shared/formats/eastray
-[ -d "$dir" ] || { echo "eastray_report.sh: error: no EASTRAY scenes in $dir" >&2; exit 1; }
-mkdir -p "$out"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+report=eastray what="EASTRAY scenes"
+. "$(dirname "$0")/report_setup.sh"
 {
   echo "| scene | double ms | float/portable: pixels off by > 1 | largest channel error | block PSNR |"
   echo "|---|---|---|---|---|"

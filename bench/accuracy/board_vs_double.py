@@ -23,6 +23,8 @@ import time
 import zlib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "tools", "images"))
+from image_files import parse_p6, write_png  # noqa: E402
 SECTION = "## The board against double"
 MINIRT_SIZE = "800x600"
 # Format, scene pattern under formats/, extra minrt arguments, output extension.
@@ -33,19 +35,6 @@ FORMATS = [
     ("EASTRAY", "eastray/*.ray", [], ".png"),
 ]
 FLOAT = ["--precision", "float", "--shims", "portable"]
-
-
-def read_ppm(data):
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        start = pos
-        while not data[pos:pos + 1].isspace():
-            pos += 1
-        fields.append(data[start:pos])
-    w, h = int(fields[1]), int(fields[2])
-    return w, h, bytes(data[pos + 1:pos + 1 + w * h * 3])
 
 
 def read_bmp(data):
@@ -108,7 +97,7 @@ def read_image(path):
     with open(path, "rb") as f:
         data = f.read()
     if data[:2] == b"P6":
-        return read_ppm(data)
+        return parse_p6(data, path)
     if data[:2] == b"BM":
         return read_bmp(data)
     if data[:4] == b"\x89PNG":
@@ -131,20 +120,6 @@ def compare(a, b):
             if d > 8:
                 gt8 += 1
     return ne, gt1, gt8, worst, far
-
-
-def write_png(path, w, h, rgb):
-    raw = b"".join(b"\0" + bytes(rgb[y * w * 3:(y + 1) * w * 3]) for y in range(h))
-
-    def chunk(kind, body):
-        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
-
-    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-    png += chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
-    tmp = path + ".tmp"
-    with open(tmp, "wb") as f:
-        f.write(png)
-    os.replace(tmp, path)
 
 
 def picture(path, w, h, double, single, far):

@@ -17,6 +17,7 @@
 # ratios are of the medians. Every output is checked to be the same bytes as
 # minrt's. callgrind counts are for single runs (one thread).
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/../../scripts/common.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=5 size=512 minrt=$root/build/release/host/minrt original="" cport="" cconv="" callgrind=1
@@ -24,18 +25,8 @@ usage() {
   echo "usage: $0 [--runs N] [--size N] [--minrt PATH] [--original PATH] [--c-port PATH --c-port-conv PATH] [--no-callgrind]" >&2
   exit 2
 }
-while (($#)); do
-  case $1 in
-    --runs) runs=${2:?}; shift 2 ;;
-    --size) size=${2:?}; shift 2 ;;
-    --minrt) minrt=${2:?}; shift 2 ;;
-    --original) original=${2:?}; shift 2 ;;
-    --c-port) cport=${2:?}; shift 2 ;;
-    --c-port-conv) cconv=${2:?}; shift 2 ;;
-    --no-callgrind) callgrind=0; shift ;;
-    *) usage ;;
-  esac
-done
+script_options "--runs runs" "--size size" "--minrt minrt" "--original original" "--c-port cport" \
+  "--c-port-conv cconv" "--no-callgrind callgrind=0" -- "$@"
 [[ $runs =~ ^[1-9][0-9]*$ && $size =~ ^[1-9][0-9]*$ ]] || usage
 [[ -n $cport && -z $cconv ]] && { echo "--c-port needs --c-port-conv (its scene converter)" >&2; exit 2; }
 scene=${MINRT_SHARED_DIR:-$root/../shared}/scenes/contest.sld

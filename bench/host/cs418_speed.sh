@@ -8,27 +8,11 @@
 # --minrt PATH times another build of minrt (default build/release/host/minrt).
 # Usage: bench/host/cs418_speed.sh [--runs N] [--large] [--large-aa N] [--shared DIR] [--minrt PATH]
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/speed_setup.sh"
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-shared=$root/../shared
-runs=9
-large=0
-large_aa=
-minrt=$root/build/release/host/minrt
-while [ $# -gt 0 ]; do
-  case $1 in
-    --runs) runs=$2; shift 2 ;;
-    --large) large=1; shift ;;
-    --large-aa) large=1; large_aa=$2; shift 2 ;;
-    --shared) shared=$2; shift 2 ;;
-    --minrt) minrt=$2; shift 2 ;;
-    *) echo "cs418_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-[ -x "$minrt" ] || { echo "cs418_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-echo "cpu: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), $(nproc) cores"
+runs=9 large=0 large_aa=
+speed_setup "--large large=1" "--large-aa large_aa" -- "$@"
+[ -z "$large_aa" ] || large=1
 # One --stats line -> "parse bvh render" seconds.
 times_of() { sed -n 's/.*parse \([0-9.]*\) s, BVH \([0-9.]*\) s, render \([0-9.]*\) s.*/\1 \2 \3/p'; }
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }

@@ -6,27 +6,14 @@
 # every core) and the CPU seconds of the last run. With --baseline PATH, an
 # other minrt build is run in the same rounds; speed-up: the ratio of the
 # median wall times.
-# Usage: bench/host/eastray_speed.sh [--runs N] [--baseline MINRT] [--shared DIR]
+# --minrt PATH times another build of minrt (default build/release/host/minrt).
+# Usage: bench/host/eastray_speed.sh [--runs N] [--baseline MINRT] [--shared DIR] [--minrt PATH]
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/speed_setup.sh"
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-shared=$root/../shared
-runs=3
-baseline=
-while [ $# -gt 0 ]; do
-  case $1 in
-    --runs) runs=$2; shift 2 ;;
-    --baseline) baseline=$2; shift 2 ;;
-    --shared) shared=$2; shift 2 ;;
-    *) echo "eastray_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-minrt=$root/build/release/host/minrt
-[ -x "$minrt" ] || { echo "eastray_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
+runs=3 baseline=
+speed_setup "--baseline baseline" -- "$@"
 [ -z "$baseline" ] || [ -x "$baseline" ] || { echo "eastray_speed.sh: error: baseline '$baseline' is not an executable" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-echo "cpu: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
 scenes=()
 while read -r _ f; do scenes+=("$f"); done < <(for f in "$shared"/formats/eastray/*.ray; do echo "$(stat -c %s "$f") $f"; done | sort -rn | head -3)
 for g in 10 20 40; do

@@ -9,6 +9,21 @@ import argparse
 import sys
 
 
+# What the grid cycles through, at (x, z) in material m: sphere, capped
+# cylinder, box, finite cone, ellipsoid, AND block (turned by ry about y),
+# difference, OR block (two spheres at xl and xr).
+OBJECTS = [
+    "  2 {m} 1    {x:.2f} 0.4 {z:.2f}    0.4 ;",
+    "  15 {m} 1    {x:.2f} 0.35 {z:.2f}    0 1 0    0.3 0.35 ;",
+    "  16 {m} 1    {x:.2f} 0.3 {z:.2f}    0.35 0.3 0.25 ;",
+    "  10 {m} 1    {x:.2f} 0.7 {z:.2f}    0 -1 0    0.5 0.7 ;",
+    "  3 {m} 1    {x:.2f} 0.3 {z:.2f}    0.4 0.3 0.25 ;",
+    "  {{ :mx {x:.2f} :my 0.4 :mz {z:.2f} :ry {ry} 2 {m} 1  0 0 0  0.4 ;  16 c2 1  0 0 0  0.3 0.3 0.3 ; }}",
+    "  {{ :mx {x:.2f} :my 0.3 :mz {z:.2f}  16 {m} 1  0 0 0  0.4 0.3 0.4 ;  5 c3 -1  0 0 0  0 1 0  0.2 ; }}",
+    "  [ 2 {m} 1  {xl:.2f} 0.3 {z:.2f}  0.25 ;  2 {m} 1  {xr:.2f} 0.3 {z:.2f}  0.25 ; ]",
+]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--grid", type=int, default=20, help="objects per row and column (default 20)")
@@ -42,23 +57,7 @@ def main():
             x, z = (i - (n - 1) / 2) * 1.0, (j - (n - 1) / 2) * 1.0
             k = (i * 7 + j * 3) % 8
             m = "mirror" if (i + 2 * j) % 11 == 0 else mats[(i + j) % 4][0]
-            if k == 0:
-                out.append(f"  2 {m} 1    {x:.2f} 0.4 {z:.2f}    0.4 ;")
-            elif k == 1:
-                out.append(f"  15 {m} 1    {x:.2f} 0.35 {z:.2f}    0 1 0    0.3 0.35 ;")
-            elif k == 2:
-                out.append(f"  16 {m} 1    {x:.2f} 0.3 {z:.2f}    0.35 0.3 0.25 ;")
-            elif k == 3:
-                out.append(f"  10 {m} 1    {x:.2f} 0.7 {z:.2f}    0 -1 0    0.5 0.7 ;")
-            elif k == 4:
-                out.append(f"  3 {m} 1    {x:.2f} 0.3 {z:.2f}    0.4 0.3 0.25 ;")
-            elif k == 5:
-                out.append(f"  {{ :mx {x:.2f} :my 0.4 :mz {z:.2f} :ry {i * 13 % 90} 2 {m} 1  0 0 0  0.4 ;  16 c2 1  0 0 0  0.3 0.3 0.3 ; }}")
-            elif k == 6:
-                out.append(f"  {{ :mx {x:.2f} :my 0.3 :mz {z:.2f}  16 {m} 1  0 0 0  0.4 0.3 0.4 ;"
-                           f"  5 c3 -1  0 0 0  0 1 0  0.2 ; }}")
-            else:
-                out.append(f"  [ 2 {m} 1  {x - 0.15:.2f} 0.3 {z:.2f}  0.25 ;  2 {m} 1  {x + 0.15:.2f} 0.3 {z:.2f}  0.25 ; ]")
+            out.append(OBJECTS[k].format(m=m, x=x, z=z, ry=i * 13 % 90, xl=x - 0.15, xr=x + 0.15))
     out.append("]")
     print("\n".join(out))
 

@@ -5,26 +5,13 @@
 # neighbour), plus the CPU seconds of one single-thread run, which machine
 # load does not inflate. The issue's target: the largest file
 # (room_test3.rt) under 0.5 s.
-# Usage: bench/host/minirt_speed.sh [--runs N] [--size WxH] [--shared DIR]
+# --minrt PATH times another build of minrt (default build/release/host/minrt).
+# Usage: bench/host/minirt_speed.sh [--runs N] [--size WxH] [--shared DIR] [--minrt PATH]
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/speed_setup.sh"
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-shared=$root/../shared
-runs=5
-size=1920x1080
-while [ $# -gt 0 ]; do
-  case $1 in
-    --runs) runs=$2; shift 2 ;;
-    --size) size=$2; shift 2 ;;
-    --shared) shared=$2; shift 2 ;;
-    *) echo "minirt_speed.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
-  esac
-done
-minrt=$root/build/release/host/minrt
-[ -x "$minrt" ] || { echo "minirt_speed.sh: error: $minrt not built (run scripts/test.sh first)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-echo "cpu: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
+runs=5 size=1920x1080
+speed_setup "--size size" -- "$@"
 seconds_of() { sed -n 's/.*parse \([0-9.]*\) s, BVH \([0-9.]*\) s, render \([0-9.]*\) s.*/\1 \2 \3/p' | awk '{print $1 + $2 + $3}'; }
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 scenes=("$shared"/formats/minirt/valid/*.rt)

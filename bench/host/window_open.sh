@@ -12,16 +12,11 @@
 #
 # --minrt: the minrt binary (default build/release/host/minrt).
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/../../scripts/common.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=5 minrt=$root/build/release/host/minrt
-while (($#)); do
-  case $1 in
-    --runs) runs=${2:?}; shift 2 ;;
-    --minrt) minrt=${2:?}; shift 2 ;;
-    *) echo "usage: $0 [--runs N] [--minrt PATH]" >&2; exit 2 ;;
-  esac
-done
+script_options "--runs runs" "--minrt minrt" -- "$@"
 scene=${MINRT_SHARED_DIR:-$root/../shared}/formats/minirt/valid/showcase.rt
 helper=$root/test/host/x11_window.py
 # One X server for every run: what is measured is minrt, not Xvfb's start.

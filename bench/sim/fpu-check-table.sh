@@ -3,15 +3,11 @@
 # as the markdown table in docs/firmware_sim.md ("Measured errors").
 #   bench/sim/fpu-check-table.sh [--sim PATH]
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/../../scripts/common.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 sim=$root/build/release/firmware_sim/firmware-sim
-while [ $# -gt 0 ]; do
-  case $1 in
-    --sim) sim=$2; shift 2 ;;
-    *) echo "fpu-check-table.sh: unknown argument $1" >&2; exit 2 ;;
-  esac
-done
+script_options "--sim sim" -- "$@"
 [ -x "$sim" ] || { echo "fpu-check-table.sh: no firmware-sim at $sim" >&2; exit 2; }
 
 # op (as --fpu-check prints it) and --fpu settings, one configuration a line.

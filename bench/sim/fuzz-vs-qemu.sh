@@ -9,6 +9,7 @@
 # ctest with --seed 1 --count 40. Exit 0 = all equal, 1 = a mismatch (the
 # program is kept in the work dir), 77 = skipped (qemu-riscv32 or clang absent).
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/../../scripts/common.sh"
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 seed=1
@@ -16,16 +17,7 @@ count=200
 sim=$root/build/release/firmware_sim/firmware-sim
 gen=$root/build/release/test/sim/fwsim-fuzzgen
 work=
-while [ $# -gt 0 ]; do
-  case $1 in
-    --seed) seed=$2; shift 2 ;;
-    --count) count=$2; shift 2 ;;
-    --sim) sim=$2; shift 2 ;;
-    --gen) gen=$2; shift 2 ;;
-    --work) work=$2; shift 2 ;;
-    *) echo "fuzz-vs-qemu.sh: unknown argument $1" >&2; exit 2 ;;
-  esac
-done
+script_options "--seed seed" "--count count" "--sim sim" "--gen gen" "--work work" -- "$@"
 for tool in qemu-riscv32 clang ld.lld; do
   if ! command -v $tool >/dev/null 2>&1; then
     echo "SKIP: $tool not installed (Debian packages qemu-user, clang, lld)"

@@ -8,6 +8,7 @@
 #   bench/sim/run-bench.sh [--sim PATH] [--old PATH] [--elf ELF] [--scene FILE] [--runs N] [--compute]
 # --compute runs bench/sim/compute.c (built with clang) instead of the renderer.
 . "$(dirname "$0")/../../scripts/help.sh"
+. "$(dirname "$0")/../../scripts/common.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 sim=$root/build/release/firmware_sim/firmware-sim
@@ -16,17 +17,7 @@ scene=$root/../shared/scenes/ball.sld
 old=
 runs=3
 compute=0
-while [ $# -gt 0 ]; do
-  case $1 in
-    --sim) sim=$2; shift 2 ;;
-    --old) old=$2; shift 2 ;;
-    --elf) elf=$2; shift 2 ;;
-    --scene) scene=$2; shift 2 ;;
-    --runs) runs=$2; shift 2 ;;
-    --compute) compute=1; shift ;;
-    *) echo "run-bench.sh: unknown argument $1" >&2; exit 2 ;;
-  esac
-done
+script_options "--sim sim" "--old old" "--elf elf" "--scene scene" "--runs runs" "--compute compute=1" -- "$@"
 [ -x "$sim" ] || { echo "run-bench.sh: no firmware-sim at $sim (build target firmware-sim first)" >&2; exit 2; }
 [ -z "$old" ] || [ -x "$old" ] || { echo "run-bench.sh: no firmware-sim at $old" >&2; exit 2; }
 tmp=$(mktemp -d)

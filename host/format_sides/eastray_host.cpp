@@ -19,29 +19,12 @@
 #include "formats/eastray/eastray_model.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "general_scene.hpp"
+#include "image_file_output.hpp"
 #include "math_policy_dispatch.hpp"
 
 namespace minrt::host {
 
 namespace {
-
-bool ends_with_nocase(const std::string& s, const char* tail) {
-  const std::string t(tail);
-  if (s.size() < t.size()) return false;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    char c = s[s.size() - t.size() + i];
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    if (c != t[i]) return false;
-  }
-  return true;
-}
-
-std::string replace_extension(const std::string& path, const char* ext) {
-  const std::size_t dot = path.rfind('.');
-  const std::size_t slash = path.rfind('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ext;
-  return path.substr(0, dot) + ext;
-}
 
 struct WarningContext {
   const ExpandedEastray* expanded;
@@ -206,12 +189,12 @@ std::string eastray_output_name(const std::string& option, const std::string& st
                                 const std::string& scene_path, bool& tiff, std::string& unsupported) {
   std::string name = !option.empty() ? option : !statement.empty() ? statement
                                               : scene_path == "-" ? std::string("-")
-                                                                  : replace_extension(scene_path, ".png");
+                                                                  : with_extension(scene_path, ".png");
   for (char& c : name)
     if (c == '\\') c = '/';
-  tiff = ends_with_nocase(name, ".tif") || ends_with_nocase(name, ".tiff");
+  tiff = formats::has_extension(name.c_str(), ".tif") || formats::has_extension(name.c_str(), ".tiff");
   for (const char* old : {".fal", ".ipr", ".hpi"})
-    if (ends_with_nocase(name, old))
+    if (formats::has_extension(name.c_str(), old))
       unsupported = "cannot write " + name + ": " + std::string(old + 1) +
                     " images (FM TOWNS raw RGB and headers) are not written; name a .tif or .tiff (TIFF) or any other "
                     "name (PNG)";

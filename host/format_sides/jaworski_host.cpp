@@ -8,6 +8,7 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
+#include "image_file_output.hpp"
 #include "math_policy_dispatch.hpp"
 #include "render/jaworski/tracer.hpp"
 #include "scene_memory.hpp"
@@ -70,12 +71,7 @@ std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, std::string& e
 
 }  // namespace
 
-std::string jaworski_output_name(const std::string& scene_path) {
-  const std::size_t dot = scene_path.rfind('.');
-  const std::size_t slash = scene_path.rfind('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return scene_path + ".bmp";
-  return scene_path.substr(0, dot + 1) + "bmp";
-}
+std::string jaworski_output_name(const std::string& scene_path) { return with_extension(scene_path, ".bmp"); }
 
 std::unique_ptr<PreparedScene> prepare_jaworski(const SceneInput& in, const DriverOptions& options,
                                                 const WarningSink&, std::string& error) {

@@ -11,27 +11,12 @@
 #include "image_stream_decoder.hpp"
 #include "image_window.hpp"
 #include "posix/progress_line.hpp"
+#include "render_driver.hpp"
 #include "stdio_stream.hpp"
 
 namespace minrt::host {
 
-namespace {
-
-constexpr int kExitSceneError = 2;
-constexpr int kExitIoError = 1;
-
-struct WarningContext {
-  const char* file;
-};
-
-void print_warning(void* ctx, const Diagnostic& d) {
-  const auto* w = static_cast<const WarningContext*>(ctx);
-  std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w->file, d.pos.line, d.pos.col, d.message);
-}
-
-}  // namespace
-
-int stream_sld(const SceneInput& in, const DriverOptions& options) {
+int stream_sld(const SceneInput& in, const DriverOptions& options, const WarningSink& warnings) {
   RenderOptions render;
   const formats::Format& f = formats::format_of(formats::FormatId::kSld);
   render.width = options.width > 0 ? options.width : f.default_width;
@@ -84,9 +69,6 @@ int stream_sld(const SceneInput& in, const DriverOptions& options) {
   } window_rows{&window};
   window.begin(render.width, render.height);
   const RowSink to_window = row_sink_of(window_rows);
-  WarningContext wctx{in.shown.c_str()};
-  WarningSink warnings;
-  if (!options.quiet) warnings = WarningSink{&print_warning, &wctx};
   // The progress line counts the rows as they go to the writer, in order;
   // never between the image's bytes on a terminal.
   WorkProgress progress(options.progress && (to_file || ::isatty(STDOUT_FILENO) == 0), "minrt: rendering", "rows",

@@ -5,7 +5,8 @@
 
 namespace minrt::host {
 
-// Renders and writes the PPM itself; returns the exit status.
-int stream_sld(const SceneInput& in, const DriverOptions& options);
+// Renders and writes the PPM itself, warnings to `warnings`; returns the
+// exit status.
+int stream_sld(const SceneInput& in, const DriverOptions& options, const WarningSink& warnings);
 
 }  // namespace minrt::host

@@ -4,80 +4,71 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "image_load.hpp"
 #include "image_metrics.hpp"
+#include "posix/command_line.hpp"
 #include "posix/output_file.hpp"
 
 namespace {
 
-void print_help(std::FILE* f) {
-  std::fputs(
-      "Usage: image-compare [OPTIONS] A B\n"
-      "Compares two images of the same size (PNG, PPM or BMP, found by content) on\n"
-      "premultiplied RGBA and prints: pixels off by more than 1 in any channel, alpha\n"
-      "mismatches, the largest channel error, the PSNR of block-averaged colour, the\n"
-      "mean difference per channel (A - B) and the coverage (pixels with alpha > 0).\n"
-      "\n"
-      "  --block N         block size for the PSNR (default 4; 16 from 800 pixels wide)\n"
-      "  --max-off N       exit 1 when more than N pixels are off by more than 1\n"
-      "  --identical       exit 1 unless every decoded RGBA byte is equal\n"
-      "  --sheet OUT.png   also write a contact sheet: A | B | difference (pixels off\n"
-      "                    by more than 1 in red, smaller differences amplified 16x);\n"
-      "                    transparency shows as a checkerboard\n"
-      "  -h, --help        this text\n"
-      "  --version         version\n"
-      "Exit status: 0 compared (and within --max-off, identical with --identical),\n"
-      "1 over --max-off or not identical, 2 bad usage\n"
-      "or unreadable image.\n",
-      f);
-}
+const minrt::cli::Tool& tool() {
+  static const minrt::cli::Tool t{
+      "image-compare",
+      R"(Usage: image-compare [OPTIONS] A B
+Compares two images of the same size (PNG, PPM or BMP, found by content) on
+premultiplied RGBA and prints: pixels off by more than 1 in any channel, alpha
+mismatches, the largest channel error, the PSNR of block-averaged colour, the
+mean difference per channel (A - B) and the coverage (pixels with alpha > 0).
 
-[[noreturn]] void usage(const std::string& msg) {
-  std::fprintf(stderr, "image-compare: error: %s (see image-compare --help)\n", msg.c_str());
-  std::exit(2);
+)",
+      {
+          {"block", 0, "N", "block size for the PSNR (default 4; 16 from 800 pixels wide)"},
+          {"max-off", 0, "N", "exit 1 when more than N pixels are off by more than 1"},
+          {"identical", 0, nullptr, "exit 1 unless every decoded RGBA byte is equal"},
+          {"sheet", 0, "OUT.png",
+           "also write a contact sheet: A | B | difference (pixels off\n"
+           "by more than 1 in red, smaller differences amplified 16x);\n"
+           "transparency shows as a checkerboard"},
+      },
+      "Exit status: 0 compared (and within --max-off, identical with --identical),\n"
+      "1 over --max-off or not identical, 2 bad usage or unreadable image.\n",
+      2,
+      2,
+      "image"};
+  return t;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* paths[2] = {nullptr, nullptr};
-  int n = 0;
+  std::vector<std::string> paths;
   int block = 0;
   long max_off = -1;
-  const char* sheet = nullptr;
+  std::string sheet;
   bool identical = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
-      print_help(stdout);
-      return 0;
-    } else if (arg == "--version") {
-      std::printf("image-compare %s\n", MINRT_VERSION);
-      return 0;
-    } else if (arg == "--block" || arg == "--max-off") {
-      if (i + 1 >= argc) usage(arg + " needs a value");
-      char* end = nullptr;
-      const long v = std::strtol(argv[++i], &end, 10);
-      if (*end != 0 || v < 0 || v > 1000000000L || (arg == "--block" && v < 1)) usage("bad value for " + arg);
-      if (arg == "--block") block = static_cast<int>(v);
-      else max_off = v;
-    } else if (arg == "--identical") {
-      identical = true;
-    } else if (arg == "--sheet") {
-      if (i + 1 >= argc) usage("--sheet needs a value");
-      sheet = argv[++i];
-    } else if (!arg.empty() && arg[0] == '-') {
-      usage("unknown option '" + arg + "'");
-    } else if (n == 2) {
-      usage("more than two images given");
-    } else {
-      paths[n++] = argv[i];
-    }
-  }
-  if (n != 2) usage("two images are needed");
+  int status = 0;
+  const bool go_on = minrt::cli::parse_tool(
+      argc, argv, tool(), MINRT_VERSION,
+      [&](const minrt::cli::Option* o, const std::string& v) -> std::string {
+        const std::string name = o->name;
+        if (name == "identical") identical = true;
+        else if (name == "sheet") sheet = v;
+        else if (name == "block" || name == "max-off") {
+          char* end = nullptr;
+          const long n = std::strtol(v.c_str(), &end, 10);
+          if (v.empty() || *end != 0 || n < 0 || n > 1000000000L || (name == "block" && n < 1))
+            return "bad value for --" + name;
+          if (name == "block") block = static_cast<int>(n);
+          else max_off = n;
+        }
+        return "";
+      },
+      status, &paths);
+  if (!go_on) return status;
   // The sheet's path is checked before the images are read and compared.
-  if (sheet != nullptr) {
+  if (!sheet.empty()) {
     std::string why;
     if (!minrt::host::check_output_target(sheet, false, why)) {
       std::fprintf(stderr, "image-compare: error: %s\n", why.c_str());
@@ -88,7 +79,7 @@ int main(int argc, char** argv) {
   for (int k = 0; k < 2; ++k) {
     std::string why;
     if (!minrt::host::load_image(paths[k], img[k], why)) {
-      std::fprintf(stderr, "image-compare: error: %s: %s\n", paths[k], why.c_str());
+      std::fprintf(stderr, "image-compare: error: %s: %s\n", paths[k].c_str(), why.c_str());
       return 2;
     }
   }
@@ -106,12 +97,12 @@ int main(int argc, char** argv) {
   else std::printf("block PSNR       %.2f dB (%dx%d blocks)\n", d.block_psnr, d.block, d.block);
   std::printf("mean diff A-B    %.3f %.3f %.3f\n", d.mean_diff[0], d.mean_diff[1], d.mean_diff[2]);
   std::printf("coverage         %ld %ld\n", d.coverage_a, d.coverage_b);
-  if (sheet != nullptr) {
+  if (!sheet.empty()) {
     const minrt::host::RgbaImage out = minrt::host::contact_sheet(img[0], img[1]);
     minrt::host::AtomicOutput file(minrt::host::Durability::kSynced);
     std::string why;
     if (!file.open(sheet, false, why) || !minrt::host::write_png(file.file(), out, why) || !file.commit(why)) {
-      std::fprintf(stderr, "image-compare: error: %s: %s\n", sheet, why.c_str());
+      std::fprintf(stderr, "image-compare: error: %s: %s\n", sheet.c_str(), why.c_str());
       return 2;
     }
   }

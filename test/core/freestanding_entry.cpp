@@ -18,6 +18,18 @@ alignas(16) unsigned char g_arena[1 << 20];
 minrt::RenderState<POLICY> g_state;
 int read_byte(void*) { return -1; }
 void write_bytes(void*, const uint8_t*, size_t) {}
+
+// A scene of the general model through the general tracer, PNG rows out,
+// as the board sends them.
+int render_png(const minrt::model::Scene<POLICY::real>& scene, minrt::Arena& arena) {
+  minrt::general::Renderer<POLICY> renderer;
+  if (!renderer.setup(scene, arena, 1)) return 3;
+  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
+  if (row == nullptr) return 4;
+  minrt::PngStoredWriter png(minrt::ByteSink{&write_bytes, nullptr});
+  renderer.render(minrt::rgba_row_sink_of(png), row);
+  return 0;
+}
 }  // namespace
 
 // The general path as the board runs it: CS418 text in, PNG rows out.
@@ -30,13 +42,7 @@ int general_entry() {
   minrt::Diagnostic error;
   if (reader.read(header, scene, error) != minrt::cs418::ReadStatus::kOk) return 1;
   if (!builder.finish(scene)) return 2;
-  minrt::general::Renderer<POLICY> renderer;
-  if (!renderer.setup(scene, arena, 1)) return 3;
-  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
-  if (row == nullptr) return 4;
-  minrt::PngStoredWriter png(minrt::ByteSink{&write_bytes, nullptr});
-  renderer.render(minrt::rgba_row_sink_of(png), row);
-  return 0;
+  return render_png(scene, arena);
 }
 
 // miniRT's path as the board runs it: .rt text in, PNG rows out.
@@ -52,13 +58,7 @@ int minirt_entry() {
   scene.width = 16;
   scene.height = 12;
   scene.camera = minrt::minirt::place_camera<POLICY>(view, scene.width, scene.height);
-  minrt::general::Renderer<POLICY> renderer;
-  if (!renderer.setup(scene, arena, 1)) return 3;
-  uint8_t* row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width));
-  if (row == nullptr) return 4;
-  minrt::PngStoredWriter png(minrt::ByteSink{&write_bytes, nullptr});
-  renderer.render(minrt::rgba_row_sink_of(png), row);
-  return 0;
+  return render_png(scene, arena);
 }
 
 // Jaworski's path: keyword scene in, BMP rows out.

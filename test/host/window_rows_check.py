@@ -6,32 +6,24 @@ whose finished row is not black.
 
 Usage: window_rows_check.py PARTIAL.ppm FINISHED.ppm
 """
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "images"))
+from image_files import read_p6  # noqa: E402
 
-def read_p6(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        start = pos
-        while not data[pos:pos + 1].isspace():
-            pos += 1
-        fields.append(data[start:pos])
-    if fields[0] != b"P6" or fields[3] != b"255":
-        sys.exit(f"{path}: not an 8-bit P6 image")
-    w, h = int(fields[1]), int(fields[2])
-    pixels = data[pos + 1:]
-    if len(pixels) != w * h * 3:
-        sys.exit(f"{path}: {len(pixels)} pixel bytes, expected {w * h * 3}")
+
+def rows_of(path):
+    try:
+        w, h, pixels = read_p6(path)
+    except ValueError as e:
+        sys.exit(str(e))
     return w, h, [pixels[y * w * 3:(y + 1) * w * 3] for y in range(h)]
 
 
 def main():
-    pw, ph, partial = read_p6(sys.argv[1])
-    fw, fh, finished = read_p6(sys.argv[2])
+    pw, ph, partial = rows_of(sys.argv[1])
+    fw, fh, finished = rows_of(sys.argv[2])
     if (pw, ph) != (fw, fh):
         sys.exit(f"sizes differ: {pw}x{ph} mid-render, {fw}x{fh} finished")
     black = bytes(pw * 3)

@@ -7,6 +7,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -285,4 +286,32 @@ TEST_CASE("pty option: the host closing the pty is end of input", "[cli][pty]") 
   CHECK(read_n(err, 200).find("UART input at end of file") != std::string::npos);
   CHECK(wait_status(pid) == 6);
   ::close(err);
+}
+
+TEST_CASE("Ctrl-C ends a run with status 130 and one line saying where it stopped", "[cli][interrupt]") {
+  int err_pipe[2];
+  REQUIRE(::pipe(err_pipe) == 0);
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_RDWR);
+    ::dup2(null, 0);
+    ::dup2(null, 1);
+    ::dup2(err_pipe[1], 2);
+    ::close(err_pipe[0]);
+    ::execl(FWSIM_BINARY, FWSIM_BINARY, kElf.c_str(), "--", "spin", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(err_pipe[1]);
+  ::sleep(1);  // well into the endless loop, the handler long installed
+  ::kill(pid, SIGINT);
+  const int status = wait_status(pid);
+  std::string err;
+  char c;
+  while (::read(err_pipe[0], &c, 1) == 1) err += c;
+  ::close(err_pipe[0]);
+  CHECK(status == 130);
+  // One line, and no progress line: standard error is a pipe here.
+  CHECK(std::regex_match(
+      err, std::regex("firmware-sim: interrupted at pc 0x[0-9a-f]{8} after [0-9]+ instructions \\([0-9.]+ s, [0-9]+ MIPS\\)\n")));
 }

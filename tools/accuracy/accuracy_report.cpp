@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "image_diff.hpp"
+#include "posix/command_line.hpp"
 #include "posix/output_file.hpp"
 #include "variants.hpp"
 
@@ -28,33 +29,33 @@ namespace {
 
 using namespace minrt_accuracy;
 
-#ifndef MINRT_VERSION
-#define MINRT_VERSION "0"
-#endif
+const minrt::cli::Tool& tool() {
+  static const minrt::cli::Tool t = [] {
+    std::string variants = "\nvariants (name, tag):\n";
+    for (const Variant& v : all_variants()) {
+      char line[128];
+      std::snprintf(line, sizeof line, "  %-22s %s\n", v.name, v.tag);
+      variants += line;
+    }
+    return minrt::cli::Tool{
+        "accuracy-report",
+        R"(Usage: accuracy-report [OPTIONS] SCENE.sld
+Renders one SLD scene in every math variant of the renderer, in-process, for
+the accuracy report (bench/accuracy/run.sh, docs/accuracy.md).
 
-void print_help() {
-  std::fputs(
-      "Usage: accuracy-report [OPTIONS] SCENE.sld\n"
-      "Renders one SLD scene in every math variant of the renderer, in-process, for\n"
-      "the accuracy report (bench/accuracy/run.sh, docs/accuracy.md).\n"
-      "\n"
-      "  --size WxH        image size (default 128x128)\n"
-      "  --out DIR         write each image as DIR/STEM.TAG.ppm (P6); DIR must exist\n"
-      "  --variant NAME    render only this variant (name or tag; repeatable)\n"
-      "  --stats           print, per variant, the differences from double/libm\n"
-      "                    (which must then be among the variants)\n"
-      "  -h, --help        this text\n"
-      "  --version         version\n"
-      "\n"
-      "variants (name, tag):\n",
-      stdout);
-  for (const Variant& v : all_variants()) std::printf("  %-22s %s\n", v.name, v.tag);
-  std::fputs("\nexit status: 0 ok, 1 a render or a write failed, 2 usage error or unreadable scene.\n", stdout);
-}
-
-int usage(const std::string& why) {
-  std::fprintf(stderr, "accuracy-report: error: %s (see accuracy-report --help)\n", why.c_str());
-  return 2;
+)",
+        {
+            {"size", 0, "WxH", "image size (default 128x128)"},
+            {"out", 0, "DIR", "write each image as DIR/STEM.TAG.ppm (P6); DIR must exist"},
+            {"variant", 0, "NAME", "render only this variant (name or tag; may be given again)"},
+            {"stats", 0, nullptr, "print, per variant, the differences from double/libm\n(which must then be among the variants)"},
+        },
+        variants + "\nexit status: 0 ok, 1 a render or a write failed, 2 usage error or unreadable scene.\n",
+        1,
+        1,
+        "scene file"};
+  }();
+  return t;
 }
 
 // The output folder is checked once, before any render, with the reason.
@@ -86,42 +87,32 @@ std::string stem_of(const std::string& path) {
 
 int main(int argc, char** argv) {
   int width = 128, height = 128;
-  std::string out_dir, scene_path;
+  std::string out_dir;
+  std::vector<std::string> scenes;
   std::vector<const Variant*> chosen;
   bool stats = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool takes_value = a == "--size" || a == "--out" || a == "--variant";
-    if (takes_value && i + 1 >= argc) return usage(a + " needs a value");
-    if (a == "--size") {
-      const std::string v = argv[++i];
-      char tail = 0;
-      if (std::sscanf(v.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 1 || height < 1 ||
-          width > 4096 || height > 4096)
-        return usage("bad --size '" + v + "': expected WxH, each 1..4096");
-    } else if (a == "--out") {
-      out_dir = argv[++i];
-    } else if (a == "--variant") {
-      const Variant* v = find_variant(argv[++i]);
-      if (v == nullptr) return usage(std::string("unknown variant '") + argv[i] + "'");
-      chosen.push_back(v);
-    } else if (a == "--stats") {
-      stats = true;
-    } else if (a == "-h" || a == "--help") {
-      print_help();
-      return 0;
-    } else if (a == "--version") {
-      std::printf("accuracy-report %s\n", MINRT_VERSION);
-      return 0;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage("unknown option '" + a + "'");
-    } else if (!scene_path.empty()) {
-      return usage("more than one scene file given");
-    } else {
-      scene_path = a;
-    }
-  }
-  if (scene_path.empty()) return usage("no scene file given");
+  int status = 0;
+  const bool go_on = minrt::cli::parse_tool(
+      argc, argv, tool(), MINRT_VERSION,
+      [&](const minrt::cli::Option* o, const std::string& v) -> std::string {
+        const std::string name = o->name;
+        if (name == "stats") stats = true;
+        else if (name == "out") out_dir = v;
+        else if (name == "size") {
+          char tail = 0;
+          if (std::sscanf(v.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 1 || height < 1 ||
+              width > 4096 || height > 4096)
+            return "bad --size '" + v + "': expected WxH, each 1..4096";
+        } else if (name == "variant") {
+          const Variant* chosen_one = find_variant(v);
+          if (chosen_one == nullptr) return "unknown variant '" + v + "'";
+          chosen.push_back(chosen_one);
+        }
+        return "";
+      },
+      status, &scenes);
+  if (!go_on) return status;
+  const std::string scene_path = scenes[0];
   if (chosen.empty())
     for (const Variant& v : all_variants()) chosen.push_back(&v);
   std::string why;
@@ -141,7 +132,7 @@ int main(int argc, char** argv) {
   text << in.rdbuf();
   const std::string sld = text.str();
 
-  int status = 0;
+  status = 0;
   std::string reference;
   for (const Variant* v : chosen) {
     const Rendered r = v->render(sld, width, height);

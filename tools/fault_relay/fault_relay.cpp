@@ -20,49 +20,49 @@
 #include <cstring>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "fault_model.hpp"
+#include "posix/command_line.hpp"
 
 namespace {
 
-#ifndef MINRT_VERSION
-#define MINRT_VERSION "0"
-#endif
+const minrt::cli::Tool& tool() {
+  static const minrt::cli::Tool t{
+      "fault-relay",
+      R"(Usage: fault-relay [OPTIONS] BOARD_TTY
+Relays bytes between BOARD_TTY (e.g. the pseudo-terminal firmware-sim --pty
+announced) and a new pseudo-terminal for the host, damaging the line on
+purpose and reproducibly. Prints 'fault-relay: uart on /dev/pts/N' on standard
+error, and at the end what it did. Probabilities P are 0..1.
 
-void print_help() {
-  std::fputs(
-      "Usage: fault-relay [OPTIONS] BOARD_TTY\n"
-      "Relays bytes between BOARD_TTY (e.g. the pseudo-terminal firmware-sim --pty\n"
-      "announced) and a new pseudo-terminal for the host, damaging the line on\n"
-      "purpose and reproducibly. Prints 'fault-relay: uart on /dev/pts/N' on standard\n"
-      "error, and at the end what it did. Probabilities P are 0..1.\n"
-      "\n"
-      "  --seed N          fault sequence (default 1)\n"
-      "  --drop P          probability of dropping a byte\n"
-      "  --flip P          probability of flipping one bit of a byte\n"
-      "  --dup P           probability of sending a byte twice\n"
-      "  --delay P         probability of delaying a byte (up to --delay-ms)\n"
-      "  --delay-ms N      longest delay (default 5)\n"
-      "  --stall P         probability of stalling the line before a byte\n"
-      "  --stall-ms N      stall length (default 300)\n"
-      "  --skip N          pass the first N bytes untouched\n"
-      "  --drop-at N       drop board->host byte N (0-based), whatever the rates\n"
-      "  --dup-at N        send board->host byte N twice\n"
-      "  --flip-at N       flip the lowest bit of board->host byte N\n"
-      "  --both-ways       damage host->board bytes too (own seed + 1)\n"
-      "  --to-board        damage host->board bytes only (own seed + 1)\n"
-      "  --to-board-drop-at N, --to-board-dup-at N, --to-board-flip-at N\n"
-      "                    the same single-byte faults on host->board byte N\n"
-      "  -h, --help        this text\n"
-      "  --version         version\n"
-      "\n"
-      "exit status: 0 the host closed its end, 1 a terminal error, 2 usage error.\n",
-      stdout);
-}
-
-[[noreturn]] void usage_error(const std::string& msg) {
-  std::fprintf(stderr, "fault-relay: error: %s (see fault-relay --help)\n", msg.c_str());
-  std::exit(2);
+)",
+      {
+          {"seed", 0, "N", "fault sequence (default 1)"},
+          {"drop", 0, "P", "probability of dropping a byte"},
+          {"flip", 0, "P", "probability of flipping one bit of a byte"},
+          {"dup", 0, "P", "probability of sending a byte twice"},
+          {"delay", 0, "P", "probability of delaying a byte (up to --delay-ms)"},
+          {"delay-ms", 0, "N", "longest delay (default 5)"},
+          {"stall", 0, "P", "probability of stalling the line before a byte"},
+          {"stall-ms", 0, "N", "stall length (default 300)"},
+          {"skip", 0, "N", "pass the first N bytes untouched"},
+          {nullptr, 0, nullptr, "Single-byte faults, whatever the rates (N counts from 0):"},
+          {"drop-at", 0, "N", "drop board->host byte N"},
+          {"dup-at", 0, "N", "send board->host byte N twice"},
+          {"flip-at", 0, "N", "flip the lowest bit of board->host byte N"},
+          {"to-board-drop-at", 0, "N", "drop host->board byte N"},
+          {"to-board-dup-at", 0, "N", "send host->board byte N twice"},
+          {"to-board-flip-at", 0, "N", "flip the lowest bit of host->board byte N"},
+          {nullptr, 0, nullptr, "Direction (the rates hit board->host bytes by default):"},
+          {"both-ways", 0, nullptr, "damage host->board bytes too (own seed + 1)"},
+          {"to-board", 0, nullptr, "damage host->board bytes only (own seed + 1)"},
+      },
+      "\nexit status: 0 the host closed its end, 1 a terminal error, 2 usage error.\n",
+      1,
+      1,
+      "BOARD_TTY"};
+  return t;
 }
 
 int open_raw(const char* path) {
@@ -106,46 +106,44 @@ int main(int argc, char** argv) {
   unsigned long long seed = 1;
   bool both = false, to_board_only = false;
   std::int64_t up_drop_at = -1, up_dup_at = -1, up_flip_at = -1;
-  const char* board_path = nullptr;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto num = [&](double& v) {
-      if (i + 1 >= argc) usage_error(a + " needs a value");
-      char* end = nullptr;
-      const char* text = argv[++i];
-      v = std::strtod(text, &end);
-      const bool probability = a == "--drop" || a == "--flip" || a == "--dup" || a == "--delay" || a == "--stall";
-      if (end == text || *end != 0 || v < 0 || (probability && v > 1) || v > 1e15)
-        usage_error("bad " + a + " '" + text + "': expected " + (probability ? "a probability 0..1" : "a number >= 0"));
-    };
-    double v = 0;
-    if (a == "--seed") { num(v); seed = static_cast<unsigned long long>(v); }
-    else if (a == "--drop") num(rates.drop);
-    else if (a == "--flip") num(rates.flip);
-    else if (a == "--dup") num(rates.dup);
-    else if (a == "--delay") num(rates.delay);
-    else if (a == "--stall") num(rates.stall);
-    else if (a == "--delay-ms") { num(v); rates.delay_ms = v < 1 ? 1 : static_cast<int>(v); }
-    else if (a == "--stall-ms") { num(v); rates.stall_ms = static_cast<int>(v); }
-    else if (a == "--skip") { num(v); rates.skip = static_cast<std::uint64_t>(v); }
-    else if (a == "--drop-at") { num(v); rates.drop_at = static_cast<std::int64_t>(v); }
-    else if (a == "--dup-at") { num(v); rates.dup_at = static_cast<std::int64_t>(v); }
-    else if (a == "--flip-at") { num(v); rates.flip_at = static_cast<std::int64_t>(v); }
-    else if (a == "--both-ways") both = true;
-    else if (a == "--to-board") both = to_board_only = true;
-    else if (a == "--to-board-drop-at") { num(v); up_drop_at = static_cast<std::int64_t>(v); both = true; }
-    else if (a == "--to-board-dup-at") { num(v); up_dup_at = static_cast<std::int64_t>(v); both = true; }
-    else if (a == "--to-board-flip-at") { num(v); up_flip_at = static_cast<std::int64_t>(v); both = true; }
-    else if (a == "-h" || a == "--help") { print_help(); return 0; }
-    else if (a == "--version") { std::printf("fault-relay %s\n", MINRT_VERSION); return 0; }
-    else if (!a.empty() && a[0] == '-') usage_error("unknown option '" + a + "'");
-    else if (board_path != nullptr) usage_error("more than one BOARD_TTY given");
-    else board_path = argv[i];
-  }
-  if (board_path == nullptr) usage_error("no BOARD_TTY given");
-  const int board = open_raw(board_path);
+  std::vector<std::string> board_path;
+  int status = 0;
+  const bool go_on = minrt::cli::parse_tool(
+      argc, argv, tool(), MINRT_VERSION,
+      [&](const minrt::cli::Option* o, const std::string& text) -> std::string {
+        const std::string a = std::string("--") + o->name;
+        if (a == "--both-ways") both = true;
+        else if (a == "--to-board") both = to_board_only = true;
+        if (o->value == nullptr) return "";
+        // Every value is a number: a probability, or a count or time >= 0.
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool probability = *o->value == 'P';
+        if (text.empty() || *end != 0 || v < 0 || (probability && v > 1) || v > 1e15)
+          return "bad " + a + " '" + text + "': expected " + (probability ? "a probability 0..1" : "a number >= 0");
+        const auto at = static_cast<std::int64_t>(v);
+        if (a == "--seed") seed = static_cast<unsigned long long>(v);
+        else if (a == "--drop") rates.drop = v;
+        else if (a == "--flip") rates.flip = v;
+        else if (a == "--dup") rates.dup = v;
+        else if (a == "--delay") rates.delay = v;
+        else if (a == "--stall") rates.stall = v;
+        else if (a == "--delay-ms") rates.delay_ms = v < 1 ? 1 : static_cast<int>(v);
+        else if (a == "--stall-ms") rates.stall_ms = static_cast<int>(v);
+        else if (a == "--skip") rates.skip = static_cast<std::uint64_t>(v);
+        else if (a == "--drop-at") rates.drop_at = at;
+        else if (a == "--dup-at") rates.dup_at = at;
+        else if (a == "--flip-at") rates.flip_at = at;
+        else if (a == "--to-board-drop-at") up_drop_at = at, both = true;
+        else if (a == "--to-board-dup-at") up_dup_at = at, both = true;
+        else if (a == "--to-board-flip-at") up_flip_at = at, both = true;
+        return "";
+      },
+      status, &board_path);
+  if (!go_on) return status;
+  const int board = open_raw(board_path[0].c_str());
   if (board < 0) {
-    std::fprintf(stderr, "fault-relay: error: cannot open %s: %s\n", board_path, std::strerror(errno));
+    std::fprintf(stderr, "fault-relay: error: cannot open %s: %s\n", board_path[0].c_str(), std::strerror(errno));
     return 1;
   }
   const int master = ::posix_openpt(O_RDWR | O_NOCTTY);

@@ -14,40 +14,36 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "posix/command_line.hpp"
 #include "ulp_stats.hpp"
 
 namespace {
 
 using namespace shim_ulp;
 
-#ifndef MINRT_VERSION
-#define MINRT_VERSION "0"
-#endif
+const minrt::cli::Tool& tool() {
+  static const minrt::cli::Tool t{
+      "shim-ulp-table",
+      R"(Usage: shim-ulp-table [OPTIONS]
+Prints a Markdown table of the accuracy of each math policy (C library float,
+portable minimum, fast and accurate) over the ranges the renderer uses, and the
+int <-> float conversion checks (docs/shims.md).
 
-void print_help() {
-  std::fputs(
-      "Usage: shim-ulp-table [OPTIONS]\n"
-      "Prints a Markdown table of the accuracy of each math policy (C library float,\n"
-      "portable minimum, fast and accurate) over the ranges the renderer uses, and the\n"
-      "int <-> float conversion checks (docs/shims.md).\n"
-      "\n"
-      "  --refine N        divide the sampling strides by N (default 16)\n"
-      "  --exhaustive      visit every float of every range (minutes per function)\n"
-      "  --only FN         one function: sqrt, floor, sin, cos, atan, or conv\n"
-      "  --no-libm         leave out the C library rows\n"
-      "  --renderer        keep only the ranges the renderer uses\n"
-      "  --level 0|1|2     keep one portable level (and drop the libm rows)\n"
-      "  -h, --help        this text\n"
-      "  --version         version\n",
-      stdout);
-}
-
-[[noreturn]] void usage_error(const std::string& msg) {
-  std::fprintf(stderr, "shim-ulp-table: error: %s (see shim-ulp-table --help)\n", msg.c_str());
-  std::exit(2);
+)",
+      {
+          {"refine", 0, "N", "divide the sampling strides by N (default 16)"},
+          {"exhaustive", 0, nullptr, "visit every float of every range (minutes per function)"},
+          {"only", 0, "FN", "one function: sqrt, floor, sin, cos, atan, or conv"},
+          {"no-libm", 0, nullptr, "leave out the C library rows"},
+          {"renderer", 0, nullptr, "keep only the ranges the renderer uses"},
+          {"level", 0, "0|1|2", "keep one portable level (and drop the libm rows)"},
+      },
+      ""};  // no operands
+  return t;
 }
 
 std::string log2_text(double v) {
@@ -111,39 +107,32 @@ int main(int argc, char** argv) {
   bool libm = true;
   bool renderer_only = false;
   int level = -1;  // all
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const bool takes_value = a == "--refine" || a == "--only" || a == "--level";
-    if (takes_value && i + 1 >= argc) usage_error(a + " needs a value");
-    if (a == "-h" || a == "--help") {
-      print_help();
-      return 0;
-    } else if (a == "--version") {
-      std::printf("shim-ulp-table %s\n", MINRT_VERSION);
-      return 0;
-    } else if (a == "--refine") {
-      char* end = nullptr;
-      refine = std::strtoll(argv[++i], &end, 10);
-      if (end == argv[i] || *end != 0 || refine < 1) usage_error(std::string("bad --refine '") + argv[i] + "': expected N >= 1");
-    } else if (std::strcmp(argv[i], "--exhaustive") == 0) {
-      refine = std::int64_t(1) << 40;
-    } else if (std::strcmp(argv[i], "--only") == 0) {
-      only = argv[++i];
-      if (only != "sqrt" && only != "floor" && only != "sin" && only != "cos" && only != "atan" && only != "conv")
-        usage_error("bad --only '" + only + "': expected sqrt, floor, sin, cos, atan or conv");
-    } else if (std::strcmp(argv[i], "--no-libm") == 0) {
-      libm = false;
-    } else if (std::strcmp(argv[i], "--renderer") == 0) {
-      renderer_only = true;
-    } else if (std::strcmp(argv[i], "--level") == 0) {
-      const std::string v = argv[++i];
-      if (v != "0" && v != "1" && v != "2") usage_error("bad --level '" + v + "': expected 0, 1 or 2");
-      level = v[0] - '0';
-      libm = false;
-    } else {
-      usage_error("unknown option '" + a + "'");
-    }
-  }
+  int status = 0;
+  std::vector<std::string> none;
+  const bool go_on = minrt::cli::parse_tool(
+      argc, argv, tool(), MINRT_VERSION,
+      [&](const minrt::cli::Option* o, const std::string& v) -> std::string {
+        const std::string name = o->name;
+        if (name == "refine") {
+          char* end = nullptr;
+          refine = std::strtoll(v.c_str(), &end, 10);
+          if (v.empty() || *end != 0 || refine < 1) return "bad --refine '" + v + "': expected N >= 1";
+        } else if (name == "exhaustive") refine = std::int64_t(1) << 40;
+        else if (name == "only") {
+          only = v;
+          if (only != "sqrt" && only != "floor" && only != "sin" && only != "cos" && only != "atan" && only != "conv")
+            return "bad --only '" + only + "': expected sqrt, floor, sin, cos, atan or conv";
+        } else if (name == "no-libm") libm = false;
+        else if (name == "renderer") renderer_only = true;
+        else if (name == "level") {
+          if (v != "0" && v != "1" && v != "2") return "bad --level '" + v + "': expected 0, 1 or 2";
+          level = v[0] - '0';
+          libm = false;
+        }
+        return "";
+      },
+      status, &none);
+  if (!go_on) return status;
   if (only != "conv") {
     std::printf("| function | policy | range | samples | max ULP | mean ULP | "
                 "max rel err | worst arg | not CR | course rule |\n");
