@@ -3,9 +3,9 @@
 // caller's buffer that also serves as the history window. Work is bounded
 // by the input read plus the output written: every step of the loop takes
 // bits or writes a byte, and the output never grows past its capacity.
-// Codes are decoded a bit at a time against the canonical code's counts,
-// which is slow beside a table decoder but small, and fast enough for
-// textures (one pass per texel).
+// A code of up to kFastBits bits is decoded by one look-up in a table of
+// 2^kFastBits entries; longer ones, and the last codes of a stream, a bit
+// at a time against the canonical code's counts.
 //
 // In place: the compressed bytes may lie in the same memory above the
 // output. Then every byte is written only when it lies below the first
@@ -78,10 +78,14 @@ class Inflater {
   static constexpr int kMaxBits = 15;
   static constexpr int kLitCodes = 288;
   static constexpr int kDistCodes = 32;
+  static constexpr int kFastBits = 9;
 
   struct Code {
     uint16_t count[kMaxBits + 1];
     uint16_t symbol[kLitCodes];
+    // Indexed by the next kFastBits bits: length << kFastBits | symbol, or
+    // 0 when the code there is longer.
+    uint16_t fast[1 << kFastBits];
   };
 
   // Bits come least significant first; a byte is read only when needed.
@@ -108,8 +112,9 @@ class Inflater {
   }
 
   InflateStatus stored() {
-    bits_ = 0;  // the rest of the current byte is padding
-    nbits_ = 0;
+    const int pad = nbits_ % 8;  // the rest of the current byte; whole bytes read ahead stay
+    bits_ >>= pad;
+    nbits_ -= pad;
     uint32_t len = 0, nlen = 0;
     if (!need(16, len) || !need(16, nlen)) return InflateStatus::kCut;
     if ((len ^ 0xFFFFu) != nlen) return InflateStatus::kCorrupt;
@@ -138,11 +143,40 @@ class Inflater {
     for (int len = 1; len <= kMaxBits; ++len) offset[len + 1] = static_cast<uint16_t>(offset[len] + code.count[len]);
     for (int i = 0; i < n; ++i)
       if (lengths[i] != 0) code.symbol[offset[lengths[i]]++] = static_cast<uint16_t>(i);
+    // The short codes in the look-up table: canonical codes go most
+    // significant bit first, the stream least significant first, so each
+    // fills every entry whose low bits are its code reversed.
+    for (uint16_t& e : code.fast) e = 0;
+    uint32_t next = 0;
+    int index = 0;
+    for (int len = 1; len <= kFastBits; ++len) {
+      for (int k = 0; k < code.count[len]; ++k, ++next) {
+        uint32_t reversed = 0;
+        for (int b = 0; b < len; ++b) reversed |= ((next >> b) & 1u) << (len - 1 - b);
+        const uint16_t entry = static_cast<uint16_t>(len << kFastBits | code.symbol[index++]);
+        for (uint32_t r = reversed; r < (1u << kFastBits); r += 1u << len) code.fast[r] = entry;
+      }
+      next <<= 1;
+    }
     return true;
   }
 
   // One symbol: -1 when the input ends, -2 for a code the table lacks.
   int decode(const Code& code) {
+    while (nbits_ < kFastBits) {  // read ahead for the table, as far as the input goes
+      const int c = in_.get();
+      if (c < 0) break;
+      ++consumed_;
+      bits_ |= static_cast<uint32_t>(c) << nbits_;
+      nbits_ += 8;
+    }
+    const uint16_t e = code.fast[bits_ & ((1u << kFastBits) - 1u)];
+    const int len = e >> kFastBits;
+    if (e != 0 && len <= nbits_) {
+      bits_ >>= len;
+      nbits_ -= len;
+      return e & ((1 << kFastBits) - 1);
+    }
     int value = 0, first = 0, index = 0;
     for (int len = 1; len <= kMaxBits; ++len) {
       uint32_t bit = 0;
