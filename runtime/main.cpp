@@ -281,7 +281,7 @@ extern "C" int main(int argc, char** argv) {
   minrt::send::raw_check::CheckedSink output(uart_out.sink(), checked);
   minrt::PeekSource scene(upload.received() ? upload.text() : checked ? input.source() : request.source());
   const int first = scene.first_nonblank();
-  // A CS418 scene's textures, decoded by host-send, come first.
+  // A scene's textures, decoded by host-send (and deflated), come first.
   minrt::PeekSource after_textures(input.source());
   if (minrt::send::textures::is_marker(first)) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
