@@ -1,7 +1,8 @@
 // The board's reading of a CS418 or Jaworski scene upload (course and
 // framed protocols, protocol/text_scene_upload.hpp) on arbitrary bytes: the
-// framed header check, the texture preamble read in place, and the course
-// read into a small arena must never crash or point outside their input.
+// framed header check, the texture preamble read in place (plain, or
+// compressed and decoded into a small arena), and the course read into a
+// small arena must never crash or point outside their input.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -33,6 +34,28 @@ void check_textures(const uint8_t* data, size_t size) {
   }
 }
 
+// A compressed preamble at `data` (its marker byte first), decoded into a
+// 64 KiB arena: every texture it accepts lies inside the arena.
+void check_packed(const uint8_t* data, size_t size) {
+  using namespace minrt::send;
+  static textures::Table table;
+  table.count = 0;
+  alignas(8) static uint8_t mem[65536];
+  minrt::Arena arena(mem, sizeof mem);
+  size_t used = 0;
+  minrt::Diagnostic error;
+  if (!textures::unpack(data, size, arena, table, used, error)) {
+    if (error.length == 0) std::abort();
+    return;
+  }
+  if (used > size || table.count < 1 || table.count > MINRT_MAX_TEXTURES) std::abort();
+  for (int i = 0; i < table.count; ++i) {
+    const textures::Received& r = table.items[i];
+    const size_t bytes = static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
+    if (r.rgb < mem || r.rgb + bytes > mem + sizeof mem) std::abort();
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -44,9 +67,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (text::view_framed(data, size, scene, ok, error) && ok) {
     if (scene.bytes + scene.size != data + size || !text::is_text_format(scene.format)) std::abort();
     if (scene.size > 0 && scene.bytes[0] == MINRT_TEXTURES_MARKER) check_textures(scene.bytes + 1, scene.size - 1);
+    if (scene.size > 0 && scene.bytes[0] == MINRT_TEXTURES_DEFLATE_MARKER) check_packed(scene.bytes, scene.size);
   }
-  // The bytes as a texture preamble on their own.
+  // The bytes as a texture preamble on their own, plain and compressed.
   if (size > 0) check_textures(data + 1, size - 1);
+  if (size > 0 && data[0] == MINRT_TEXTURES_DEFLATE_MARKER) check_packed(data, size);
   // Course: the bytes after the marker word, into a 256-byte arena, both
   // byte orders.
   for (auto endian : {course::Endian::kLittle, course::Endian::kBig}) {

@@ -91,14 +91,15 @@ class CheckedUpload {
   size_t size() const { return size_; }
 
   // Raw: a texture preamble at the start is read in place (`table` points
-  // into the upload); text() then starts after it. False with the reason
-  // for a preamble that does not parse.
-  bool view_textures(textures::Table& table, bool& present, Diagnostic& error) {
-    present = size_ > 0 && data_[0] == MINRT_TEXTURES_MARKER;
+  // into the upload, or below it for compressed textures,
+  // texture_blobs.hpp); text() then starts after it. False with the reason
+  // for a preamble that does not parse or decode.
+  bool view_textures(Arena& arena, textures::Table& table, bool& present, Diagnostic& error) {
+    present = size_ > 0 && textures::is_marker(data_[0]);
     if (!present) return true;
     size_t used = 0;
-    if (!textures::view(data_ + 1, size_ - 1, table, used, error)) return false;
-    text_at_ = 1 + used;
+    if (!textures::unpack(data_, size_, arena, table, used, error)) return false;
+    text_at_ = used;
     return true;
   }
 

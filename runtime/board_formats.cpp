@@ -43,16 +43,16 @@ static_assert(formats::follows_registry(kBoardFormats), "one row per registered 
 // The texture preamble at the start of an upload, read where it lies.
 bool view_textures(const send::text::TextScene& upload, BoardScene& scene) {
   size_t at = 0;
-  if (upload.size > 0 && upload.bytes[0] == MINRT_TEXTURES_MARKER) {
+  if (upload.size > 0 && send::textures::is_marker(upload.bytes[0])) {
     auto* table = scene.arena->alloc_zeroed<send::textures::Table>(1);
     if (table == nullptr) {
       scene.error->text("no room for the texture table");
       return false;
     }
     size_t used = 0;
-    if (!send::textures::view(upload.bytes + 1, upload.size - 1, *table, used, *scene.error)) return false;
+    if (!send::textures::unpack(upload.bytes, upload.size, *scene.arena, *table, used, *scene.error)) return false;
     scene.textures = table;
-    at = 1 + used;
+    at = used;
   }
   scene.bytes = upload.bytes + at;
   scene.size = upload.size - at;

@@ -270,7 +270,7 @@ extern "C" int main(int argc, char** argv) {
       if (textures == nullptr) error.text("no room for the texture table");
     }
     if (r != minrt::send::scene_check::Result::kOk || textures == nullptr ||
-        !upload.view_textures(*textures, present, error)) {
+        !upload.view_textures(arena, *textures, present, error)) {
       send_error(uart, error);
       return r == minrt::send::scene_check::Result::kTooLarge || textures == nullptr ? MINRT_STATUS_OUT_OF_MEMORY
                                                                                   : MINRT_STATUS_SCENE_ERROR;
@@ -281,13 +281,16 @@ extern "C" int main(int argc, char** argv) {
   minrt::send::raw_check::CheckedSink output(uart_out.sink(), checked);
   minrt::PeekSource scene(upload.received() ? upload.text() : checked ? input.source() : request.source());
   const int first = scene.first_nonblank();
-  // A CS418 scene's textures, decoded by host-send, come first.
+  // A scene's textures, decoded by host-send (and deflated), come first.
   minrt::PeekSource after_textures(input.source());
-  if (first == MINRT_TEXTURES_MARKER) {
+  if (minrt::send::textures::is_marker(first)) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
     textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
     if (textures == nullptr) error.text("no room for the texture table");
-    if (textures == nullptr || !minrt::send::textures::receive(binary.source(), arena, *textures, error)) {
+    const bool packed = first == MINRT_TEXTURES_DEFLATE_MARKER;
+    if (textures == nullptr ||
+        !(packed ? minrt::send::textures::receive_compressed(binary.source(), arena, *textures, error)
+                 : minrt::send::textures::receive(binary.source(), arena, *textures, error))) {
       send_error(uart, error);
       return MINRT_STATUS_OUT_OF_MEMORY;
     }

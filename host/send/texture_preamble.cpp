@@ -1,10 +1,18 @@
 #include "texture_preamble.hpp"
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <vector>
 
 #include <minrt/serial_protocol.h>
+
+#include "core/base/byte_io.hpp"
+#include "core/base/crc32.hpp"
+#include "core/base/inflate.hpp"
+#include "protocol/texel_filter.hpp"
 
 #include "eastray_maps.hpp"
 #include "texture_files.hpp"
@@ -17,6 +25,37 @@ using minrt::host::RgbTexture;
 using minrt::host::TextureLoader;
 using minrt::host::TextureProbe;
 
+// The texels of one texture filtered (protocol/texel_filter.hpp) and
+// deflated as a raw stream. False with zlib's reason.
+bool deflate_texels(const RgbTexture& img, std::string& packed, std::string& error) {
+  std::vector<std::uint8_t> residuals(img.rgb.size());
+  texel_filter::filter(img.rgb.data(), static_cast<std::size_t>(img.width), static_cast<std::size_t>(img.height),
+                       residuals.data());
+  z_stream z{};
+  // Raw deflate (negative window bits): the board checks the texels' own CRC-32.
+  if (deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) {
+    error = "zlib: cannot start the compressor";
+    return false;
+  }
+  packed.resize(deflateBound(&z, residuals.size()));
+  z.next_in = residuals.data();
+  z.avail_in = static_cast<uInt>(residuals.size());
+  z.next_out = reinterpret_cast<Bytef*>(packed.data());
+  z.avail_out = static_cast<uInt>(packed.size());
+  const int r = deflate(&z, Z_FINISH);
+  packed.resize(z.total_out);
+  deflateEnd(&z);
+  if (r != Z_STREAM_END) {
+    error = "zlib: compression did not finish";
+    return false;
+  }
+  return true;
+}
+
+void put_le32(std::string& out, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
+}
+
 // `where`: for each name, the "SCENE:LINE:COL: error: " its errors start
 // with (empty: not located).
 bool assemble(const std::vector<std::string>& names, const std::vector<std::string>& where,
@@ -28,8 +67,9 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
     error = "more than " + std::to_string(MINRT_MAX_TEXTURES) + " textures";
     return false;
   }
-  // The headers' sizes first: a texture over the side limit, or textures
-  // over the board's memory, are refused before any is decoded.
+  // The headers' sizes first: a texture over the side limit, or the one
+  // that takes the decoded textures over the board's memory, is refused
+  // before any is decoded.
   std::uint64_t texel_bytes = 0;
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& name = names[k];
@@ -49,13 +89,21 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       return false;
     }
     texel_bytes += static_cast<std::uint64_t>(width) * height * 3;
+    if (texel_bytes > board_bytes) {
+      error = at + "texture " + name + " (" + std::to_string(width) + "x" + std::to_string(height) +
+              ") takes the textures to " + std::to_string(texel_bytes) + " bytes decoded, over the " +
+              std::to_string(board_bytes) +
+              " bytes the board has for them (firmware-sim: --sim-ram-size to give the simulated board more)";
+      return false;
+    }
   }
-  if (texel_bytes > board_bytes) {
-    error = "the textures need " + std::to_string(texel_bytes) + " bytes of the board's memory and at most " +
-            std::to_string(board_bytes) + " are free (firmware-sim: --sim-ram-size to give the simulated board more)";
-    return false;
-  }
+  // Each texture's header, then its stream; `lead` is the most the texels
+  // (counted from the first) run ahead of the bytes read (counted from the
+  // marker) while the board's inflater decodes them in place.
   std::string body;
+  std::uint64_t decoded = 0;
+  long long lead = 0;
+  const std::size_t header = 6;  // marker, count, lead
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& name = names[k];
     const std::string at = k < where.size() ? where[k] : std::string();
@@ -68,16 +116,37 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       error = at + "texture " + name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
       return false;
     }
+    std::string packed;
+    if (!deflate_texels(img, packed, error)) {
+      error = at + "texture " + name + ": " + error;
+      return false;
+    }
     body.push_back(static_cast<char>(name.size()));
     body += name;
     for (int v : {img.width, img.height}) {
       body.push_back(static_cast<char>(v & 0xff));
       body.push_back(static_cast<char>(v >> 8));
     }
-    body.append(reinterpret_cast<const char*>(img.rgb.data()), img.rgb.size());
+    put_le32(body, static_cast<std::uint32_t>(packed.size()));
+    put_le32(body, crc32(img.rgb.data(), img.rgb.size()));
+    // The board's own inflater over the stream: the lead, and a check that
+    // the stream gives back these texels' residuals.
+    const std::size_t stream_at = header + body.size();
+    std::vector<std::uint8_t> check(img.rgb.size());
+    MemorySource src{reinterpret_cast<const std::uint8_t*>(packed.data()), packed.size()};
+    Inflater inflater;
+    if (inflater.run(src.source(), check.data(), check.size()) != InflateStatus::kDone ||
+        inflater.produced() != check.size()) {
+      error = at + "texture " + name + ": the compressed texels do not decode";
+      return false;
+    }
+    lead = std::max(lead, static_cast<long long>(decoded) + inflater.lead() - static_cast<long long>(stream_at));
+    decoded += img.rgb.size();
+    body += packed;
   }
-  out.push_back(static_cast<char>(MINRT_TEXTURES_MARKER));
+  out.push_back(static_cast<char>(MINRT_TEXTURES_DEFLATE_MARKER));
   out.push_back(static_cast<char>(names.size()));
+  put_le32(out, static_cast<std::uint32_t>(lead));
   out += body;
   return true;
 }

@@ -1,7 +1,8 @@
 // host-send's side of the texture preamble (include/minrt/serial_protocol.h):
-// finds the textures a CS418 scene (PNG) or a miniRT scene (PPM) names,
-// decodes them and lays them out ahead of the scene text, so the board needs
-// no decoder.
+// finds the textures a CS418 scene (PNG), a miniRT scene (PPM) or an EASTRAY
+// scene names, decodes them and lays them out ahead of the scene text,
+// filtered and deflated (the compressed preamble), so the board needs only
+// its small inflater (core/base/inflate.hpp).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,8 @@ namespace minrt::send {
 // Fills `out` with the preamble for the textures `scene` names (empty when it
 // names none). Texture files resolve against `base_dir`. False with the
 // reason: a missing or bad PNG, too many textures, a name too long, or more
-// texel bytes than `board_bytes` (then the message says how much is needed).
+// decoded texel bytes than `board_bytes` (then the message names the texture
+// that crosses it, the decoded total and the limit).
 // A texture that cannot be read is reported where the scene names it,
 // "SCENE_NAME:LINE:COL: error: texture PATH: why", as minrt reports it.
 bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,

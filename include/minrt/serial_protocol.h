@@ -41,6 +41,21 @@
 #define MINRT_MAX_TEXTURES 64
 #define MINRT_MAX_TEXTURE_SIDE 16384
 
+/* The same textures compressed, as host-send sends them (every protocol):
+ *   MINRT_TEXTURES_DEFLATE_MARKER, count (1 byte), the lead (4 bytes LE,
+ *   below), then for each texture: name length and name, width and height
+ *   as above, the compressed size and the CRC-32 of the width*height*3
+ *   decoded texel bytes (4 bytes LE each), then that many bytes: a raw
+ *   deflate stream (RFC 1951) of the texels filtered as
+ *   protocol/texel_filter.hpp says.
+ * A board that holds the upload whole decodes the textures where it lies:
+ * the texels of all textures, one after the other, start `lead` bytes
+ * below the marker and end inside the compressed bytes. The host makes
+ * lead the most the texels written ever run ahead of the bytes read (both
+ * counted from the marker), so no texel overwrites a byte still to be read;
+ * the board's inflater checks that too (core/base/inflate.hpp). */
+#define MINRT_TEXTURES_DEFLATE_MARKER 0x06 /* ASCII ACK: no scene format starts with it */
+
 /* Raw protocol, CRC-32 trailer (host-send asks for it unless --no-check).
  *   Host -> board: MINRT_CHECK_REQUEST as the very first byte, before the
  *   textures marker or the scene.

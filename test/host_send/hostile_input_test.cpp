@@ -191,8 +191,9 @@ TEST_CASE("a PNG texture whose header claims 16384x16384 is refused by its heade
   const Run h = run({HS_HOST_SEND, "-p", "/dev/null", "scene.txt"}, d.path);
   INFO(h.err);
   CHECK(h.status == 3);
-  CHECK(h.err.find("the textures need 805306368 bytes") != std::string::npos);  // 16384 x 16384 x 3
-  CHECK(h.err.find("board's memory") != std::string::npos);
+  CHECK(h.err.find("texture big.png (16384x16384) takes the textures to 805306368 bytes decoded") !=
+        std::string::npos);  // 16384 x 16384 x 3
+  CHECK(h.err.find("bytes the board has for them") != std::string::npos);
   CHECK(h.max_rss_kib < kMemoryBoundKiB);
 }
 
