@@ -1,10 +1,5 @@
 #include "eastray_stereo.hpp"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-
 #include "png_io.hpp"
 
 namespace minrt::host {
@@ -17,33 +12,9 @@ std::string eastray_stereo_name(const std::string& path, char side) {
   return path.substr(0, dot) + tag + path.substr(dot);
 }
 
-namespace {
-
-bool encode(const RgbaImage& image, std::string& out, std::string& error) {
-  char* buffer = nullptr;
-  std::size_t size = 0;
-  std::FILE* mem = open_memstream(&buffer, &size);
-  if (mem == nullptr) {
-    error = std::strerror(errno);
-    return false;
-  }
-  const bool ok = write_png(mem, image, error);
-  if (std::fclose(mem) != 0 && ok) error = std::strerror(errno);
-  if (ok && buffer != nullptr) out.assign(buffer, size);
-  std::free(buffer);
-  return ok && buffer != nullptr;
-}
-
-}  // namespace
-
 bool split_stereo_png(const std::string& png, std::string& right, std::string& left, std::string& error) {
-  std::FILE* in = fmemopen(const_cast<char*>(png.data()), png.size(), "rb");
-  if (in == nullptr) {
-    error = std::strerror(errno);
-    return false;
-  }
   RgbaImage both;
-  if (!read_png(in, both, error, 2 * kMaxPngPixels)) return false;
+  if (!decode_png(png, both, error, 2 * kMaxPngPixels)) return false;
   if (both.height % 2 != 0) {
     error = "the stereo reply has an odd height (" + std::to_string(both.height) + ")";
     return false;
@@ -53,9 +24,9 @@ bool split_stereo_png(const std::string& png, std::string& right, std::string& l
   half.height = both.height / 2;
   const std::size_t bytes = static_cast<std::size_t>(half.width) * half.height * 4;
   half.rgba.assign(both.rgba.begin(), both.rgba.begin() + static_cast<std::ptrdiff_t>(bytes));
-  if (!encode(half, right, error)) return false;
+  if (!encode_png(half, right, error)) return false;
   half.rgba.assign(both.rgba.begin() + static_cast<std::ptrdiff_t>(bytes), both.rgba.end());
-  return encode(half, left, error);
+  return encode_png(half, left, error);
 }
 
 }  // namespace minrt::host

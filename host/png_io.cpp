@@ -158,14 +158,16 @@ bool write_png(std::FILE* f, const RgbaImage& image, std::string& error) {
   return true;
 }
 
-bool compress_png(const std::string& png, std::string& out, std::string& error) {
+bool decode_png(const std::string& png, RgbaImage& image, std::string& error, std::uint64_t max_pixels) {
   std::FILE* in = fmemopen(const_cast<char*>(png.data()), png.size(), "rb");
   if (in == nullptr) {
     error = std::strerror(errno);
     return false;
   }
-  RgbaImage image;
-  if (!read_png(in, image, error)) return false;
+  return read_png(in, image, error, max_pixels);
+}
+
+bool encode_png(const RgbaImage& image, std::string& out, std::string& error) {
   char* buffer = nullptr;
   std::size_t size = 0;
   std::FILE* mem = open_memstream(&buffer, &size);
@@ -178,6 +180,11 @@ bool compress_png(const std::string& png, std::string& out, std::string& error) 
   if (ok && buffer != nullptr) out.assign(buffer, size);
   std::free(buffer);
   return ok && buffer != nullptr;
+}
+
+bool compress_png(const std::string& png, std::string& out, std::string& error) {
+  RgbaImage image;
+  return decode_png(png, image, error) && encode_png(image, out, error);
 }
 
 }  // namespace minrt::host

@@ -38,6 +38,11 @@ bool png_header_size(const std::string& path, int& width, int& height, std::stri
 // Writes 8-bit RGBA, compressed. False with the reason.
 bool write_png(std::FILE* f, const RgbaImage& image, std::string& error);
 
+// A PNG held in memory decoded, and an image encoded as a PNG in memory.
+bool decode_png(const std::string& png, RgbaImage& image, std::string& error,
+                std::uint64_t max_pixels = kMaxPngPixels);
+bool encode_png(const RgbaImage& image, std::string& out, std::string& error);
+
 // The same pixels compressed: the board streams stored-deflate PNG (no
 // compressor fits its budget), host-send writes what libpng makes of it.
 bool compress_png(const std::string& png, std::string& out, std::string& error);

@@ -46,6 +46,48 @@ struct Table {
   }
 };
 
+// The texture count that starts either preamble.
+inline bool read_count(ByteSource& in, int& count, Diagnostic& error) {
+  count = in.get();
+  if (count < 1 || count > MINRT_MAX_TEXTURES) {
+    error.text("texture preamble: bad texture count");
+    return false;
+  }
+  return true;
+}
+
+// A texture's name (length byte, bytes) and size (two 16-bit little-endian
+// words), the head both preambles give each texture.
+inline bool read_name_and_size(ByteSource& in, Received& r, Diagnostic& error) {
+  const int len = in.get();
+  if (len < 1) {
+    error.text("texture preamble: bad name length");
+    return false;
+  }
+  for (int k = 0; k < len; ++k) {
+    const int c = in.get();
+    if (c < 0) {
+      error.text("texture preamble cut off in a name");
+      return false;
+    }
+    r.name[k] = static_cast<char>(c);
+  }
+  r.name[len] = 0;
+  int b[4];
+  for (int& v : b)
+    if ((v = in.get()) < 0) {
+      error.text("texture preamble cut off in the size of ").text(r.name);
+      return false;
+    }
+  r.width = b[0] | b[1] << 8;
+  r.height = b[2] | b[3] << 8;
+  if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
+    error.text("texture ").text(r.name).text(": bad size");
+    return false;
+  }
+  return true;
+}
+
 // Reads the preamble after its marker byte (`in` must pass every byte value
 // through). False with the reason: a cut-off preamble, a bad size, or a
 // texture that does not fit in the arena.
@@ -55,38 +97,10 @@ inline bool receive(ByteSource in, Arena& arena, Table& table, Diagnostic& error
     return v >= 0;
   };
   int count = 0;
-  if (!byte(count) || count < 1 || count > MINRT_MAX_TEXTURES) {
-    error.text("texture preamble: bad texture count");
-    return false;
-  }
+  if (!read_count(in, count, error)) return false;
   for (int t = 0; t < count; ++t) {
     Received& r = table.items[t];
-    int len = 0;
-    if (!byte(len) || len < 1) {
-      error.text("texture preamble: bad name length");
-      return false;
-    }
-    for (int k = 0; k < len; ++k) {
-      int c = 0;
-      if (!byte(c)) {
-        error.text("texture preamble cut off in a name");
-        return false;
-      }
-      r.name[k] = static_cast<char>(c);
-    }
-    r.name[len] = 0;
-    int b[4];
-    for (int& v : b)
-      if (!byte(v)) {
-        error.text("texture preamble cut off in the size of ").text(r.name);
-        return false;
-      }
-    r.width = b[0] | b[1] << 8;
-    r.height = b[2] | b[3] << 8;
-    if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
-      error.text("texture ").text(r.name).text(": bad size");
-      return false;
-    }
+    if (!read_name_and_size(in, r, error)) return false;
     const size_t bytes = static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
     uint8_t* rgb = arena.alloc_zeroed<uint8_t>(bytes);
     if (rgb == nullptr) {
@@ -237,42 +251,14 @@ inline bool receive_compressed(ByteSource in, Arena& arena, Table& table, Diagno
   };
   int count = 0;
   uint32_t lead = 0;
-  if (!byte(count) || count < 1 || count > MINRT_MAX_TEXTURES) {
-    error.text("texture preamble: bad texture count");
-    return false;
-  }
+  if (!read_count(in, count, error)) return false;
   if (!word(lead)) {
     error.text("texture preamble cut off in its header");
     return false;
   }
   for (int t = 0; t < count; ++t) {
     Received& r = table.items[t];
-    int len = 0;
-    if (!byte(len) || len < 1) {
-      error.text("texture preamble: bad name length");
-      return false;
-    }
-    for (int k = 0; k < len; ++k) {
-      int c = 0;
-      if (!byte(c)) {
-        error.text("texture preamble cut off in a name");
-        return false;
-      }
-      r.name[k] = static_cast<char>(c);
-    }
-    r.name[len] = 0;
-    int b[4];
-    for (int& v : b)
-      if (!byte(v)) {
-        error.text("texture preamble cut off in the size of ").text(r.name);
-        return false;
-      }
-    r.width = b[0] | b[1] << 8;
-    r.height = b[2] | b[3] << 8;
-    if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
-      error.text("texture ").text(r.name).text(": bad size");
-      return false;
-    }
+    if (!read_name_and_size(in, r, error)) return false;
     if (!word(r.packed_size) || !word(r.crc)) {
       error.text("texture preamble cut off in the header of ").text(r.name);
       return false;

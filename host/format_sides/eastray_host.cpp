@@ -230,13 +230,8 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
 
 bool eastray_board_file(const std::string& png, const EastrayBoardOutput& how, const std::string& path,
                         std::string& file, std::string& warning, std::string& error) {
-  std::FILE* in = fmemopen(const_cast<char*>(png.data()), png.size(), "rb");
-  if (in == nullptr) {
-    error = std::strerror(errno);
-    return false;
-  }
   RgbaImage image;
-  if (!read_png(in, image, error)) return false;
+  if (!decode_png(png, image, error)) return false;
   bool tiff = false;
   std::string unsupported;
   eastray_output_name(path, "", path, tiff, unsupported);

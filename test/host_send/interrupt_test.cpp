@@ -73,37 +73,6 @@ std::vector<std::string> entries(const std::string& dir) {
   return out;
 }
 
-// The children of `parent`, from /proc/*/stat (field 4 is the parent pid).
-std::vector<pid_t> children_of(pid_t parent) {
-  std::vector<pid_t> out;
-  DIR* d = ::opendir("/proc");
-  if (d == nullptr) return out;
-  while (const dirent* e = ::readdir(d)) {
-    const pid_t pid = static_cast<pid_t>(std::atoi(e->d_name));
-    if (pid <= 0) continue;
-    std::ifstream f("/proc/" + std::string(e->d_name) + "/stat");
-    std::string line;
-    if (!std::getline(f, line)) continue;
-    const std::size_t close = line.rfind(')');
-    if (close == std::string::npos) continue;
-    std::istringstream rest(line.substr(close + 2));
-    char state = 0;
-    pid_t ppid = 0;
-    rest >> state >> ppid;
-    if (ppid == parent) out.push_back(pid);
-  }
-  ::closedir(d);
-  return out;
-}
-
-bool alive(pid_t pid) {
-  std::ifstream f("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(f, line)) return false;
-  const std::size_t close = line.rfind(')');
-  return close != std::string::npos && line[close + 2] != 'Z';
-}
-
 void check_ended_by_sigint(int st, const std::string& err_path) {
   INFO("stderr: " << hs_test::read_file(err_path));
   REQUIRE(WIFSIGNALED(st));
@@ -146,7 +115,7 @@ TEST_CASE("Ctrl-C during host-send's transfer: status 130, no file, no simulator
   const auto deadline = Clock::now() + std::chrono::seconds(20);
   while (sims.empty() && Clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    sims = children_of(hs);
+    sims = hs_test::children_of(hs);
   }
   REQUIRE(sims.size() == 1);
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // mid-transfer
@@ -155,7 +124,7 @@ TEST_CASE("Ctrl-C during host-send's transfer: status 130, no file, no simulator
   check_ended_by_sigint(wait_status(hs, 20), err);
   bool gone = false;
   for (int i = 0; i < 100 && !gone; ++i) {
-    gone = !alive(sims[0]);
+    gone = !hs_test::alive(sims[0]);
     if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   if (!gone) ::kill(sims[0], SIGKILL);  // do not leave it behind either way
@@ -252,7 +221,7 @@ TEST_CASE("posix/interrupt: a registered child is stopped when the process dies 
   ::close(fds[1]);
   bool gone = false;
   for (int i = 0; i < 100 && !gone; ++i) {
-    gone = !alive(child);
+    gone = !hs_test::alive(child);
     if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   if (!gone) ::kill(child, SIGKILL);

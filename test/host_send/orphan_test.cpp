@@ -22,41 +22,6 @@
 
 extern char** environ;
 
-namespace {
-
-// The children of `parent`, from /proc/*/stat (field 4 is the parent pid).
-std::vector<pid_t> children_of(pid_t parent) {
-  std::vector<pid_t> out;
-  DIR* d = ::opendir("/proc");
-  if (d == nullptr) return out;
-  while (const dirent* e = ::readdir(d)) {
-    const pid_t pid = static_cast<pid_t>(std::atoi(e->d_name));
-    if (pid <= 0) continue;
-    std::ifstream f("/proc/" + std::string(e->d_name) + "/stat");
-    std::string line;
-    if (!std::getline(f, line)) continue;
-    const std::size_t close = line.rfind(')');
-    if (close == std::string::npos) continue;
-    std::istringstream rest(line.substr(close + 2));
-    char state = 0;
-    pid_t ppid = 0;
-    rest >> state >> ppid;
-    if (ppid == parent) out.push_back(pid);
-  }
-  ::closedir(d);
-  return out;
-}
-
-bool alive(pid_t pid) {
-  std::ifstream f("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(f, line)) return false;
-  const std::size_t close = line.rfind(')');
-  return close != std::string::npos && line[close + 2] != 'Z';
-}
-
-}  // namespace
-
 TEST_CASE("a SIGKILLed host-send leaves no simulator running", "[e2e][process]") {
   HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
@@ -79,7 +44,7 @@ TEST_CASE("a SIGKILLed host-send leaves no simulator running", "[e2e][process]")
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while (sims.empty() && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    sims = children_of(hs);
+    sims = hs_test::children_of(hs);
   }
   REQUIRE_FALSE(sims.empty());
   std::this_thread::sleep_for(std::chrono::milliseconds(500));  // mid-transfer
@@ -89,7 +54,7 @@ TEST_CASE("a SIGKILLed host-send leaves no simulator running", "[e2e][process]")
   for (pid_t sim : sims) {
     bool gone = false;
     for (int i = 0; i < 100 && !gone; ++i) {
-      gone = !alive(sim);
+      gone = !hs_test::alive(sim);
       if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     if (!gone) ::kill(sim, SIGKILL);  // do not leave it behind either way

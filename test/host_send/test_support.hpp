@@ -1,6 +1,8 @@
 // Helpers for the host-send tests: running programs, files, temp dirs.
 #pragma once
 
+#include <sys/types.h>
+
 #include <string>
 #include <vector>
 
@@ -32,6 +34,11 @@ std::string reference_image(const std::string& scene, const std::string& size, c
 // Starts the stand-in board on its own pty (path: board.pty_path()).
 void start_standin(minrt::send::SimLauncher& board, const std::string& size, const std::string& format,
                    const std::string& protocol = "raw");
+
+// The processes whose parent is `parent`, and whether `pid` still runs
+// (a zombie does not), read from /proc.
+std::vector<pid_t> children_of(pid_t parent);
+bool alive(pid_t pid);
 
 bool firmware_available();
 // Ends the test case with a warning when firmware-sim or the firmware is
