@@ -21,7 +21,7 @@ inline constexpr int kBvhStack = kBvhMaxDepth + 4;
 inline constexpr int kWideStack = (kWideArity - 1) * kBvhStack + kWideArity;
 inline constexpr int kBvhLeafSize = 4;
 inline constexpr int kBvhBins = 12;
-inline constexpr int kBvhHostBins = 32;
+inline constexpr int kBvhHostBins = 16;
 inline constexpr uint32_t kTriangleBit = 0x80000000u;  // in a primitive reference
 inline constexpr uint32_t kSolidBit = 0x40000000u;     // a cylinder or cone
 
