@@ -184,23 +184,28 @@ bool build_bvh_over(uint32_t n, Arena& arena, Bvh<typename M::real>& out, Item i
     // axis with kBvhHostBins on the host, whose tree is walked far more.
     constexpr int kBins = kWideBvh ? kBvhHostBins : kBvhBins;
     const Vec3<R> ext = cbox.hi - cbox.lo;
-    const int widest = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
-    int axis = widest;
+    int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+    const R lo = cbox.lo[axis];
+    const R width = ext[axis];
     int best_split = -1;
     R best = R(0);
+    // Bins per unit of each axis the host tries (one division per axis),
+    // set before that axis is binned.
+    R per_unit[3];
     auto bin_of = [&](uint32_t i, int a) {
-      const R f = (centers[i][a] - cbox.lo[a]) * (R(kBins) / ext[a]);
       if constexpr (kWideBvh) {
+        const R f = (centers[i][a] - cbox.lo[a]) * per_unit[a];
         const int b = f > R(0) ? static_cast<int>(f) : 0;
         return b < kBins - 1 ? b : kBins - 1;
       } else {
+        const R f = (centers[i][axis] - lo) * (R(kBins) / width);
         int b = 0;
         while (b + 1 < kBins && f >= M::from_int(b + 1)) ++b;  // no float-to-int conversion needed
         return b;
       }
     };
-    for (int a = kWideBvh ? 0 : widest; a <= (kWideBvh ? 2 : widest); ++a) {
-      if (!(ext[a] > R(0))) continue;
+    // Bins along axis `a`: updates best, best_split and axis.
+    auto try_axis = [&](int a) {
       Bounds<R> bin_box[kBins];
       uint32_t bin_count[kBins] = {};
       for (auto& b : bin_box) b = Bounds<R>::empty();
@@ -230,9 +235,18 @@ bool build_bvh_over(uint32_t n, Arena& arena, Bvh<typename M::real>& out, Item i
         if (best_split < 0 || cost < best) {
           best = cost;
           best_split = b;
-          axis = a;
+          if constexpr (kWideBvh) axis = a;
         }
       }
+    };
+    if constexpr (kWideBvh) {
+      for (int a = 0; a < 3; ++a) {
+        if (!(ext[a] > R(0))) continue;
+        per_unit[a] = R(kBins) / ext[a];
+        try_axis(a);
+      }
+    } else if (width > R(0)) {
+      try_axis(axis);
     }
     const R leaf_cost = box.area() * M::from_int(static_cast<int32_t>(count));
     uint32_t mid;
