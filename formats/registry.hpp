@@ -61,7 +61,7 @@ inline constexpr const char* kMinirtOptions[] = {"mandatory", "cylinder-base", n
 
 inline constexpr const char* kCs418Words[] = {
     "png",   "color", "sphere", "sun",   "expose",    "eye",          "forward", "up",  "fisheye",
-    "panorama", "plane", "xyz", "tri",   "texcoord",  "texture",      "bulb",    "shininess",
+    "panorama", "plane", "xyz", "tri",   "trif",  "trit",  "texcoord",  "texture",      "bulb",    "shininess",
     "bounces", "transparency", "ior", "roughness", "aa", "dof", "gi", nullptr};
 // Jaworski's header fields may be glued to their values; `#` starts its comments.
 inline constexpr const char* kJaworskiPrefixes[] = {"imwidth", "imheight", "canvwidth", "canvheight", "depth",

@@ -312,8 +312,12 @@ class Reader {
       if (!need(3, "xyz X Y Z") || !vec_at(1, p)) return ReadStatus::kSceneError;
       return memory(builder_.add_vertex(p, texcoord_u_, texcoord_v_));
     }
-    if (word_is(0, "tri")) {
-      if (!need(3, "tri I1 I2 I3")) return ReadStatus::kSceneError;
+    // tri, and the course's older names: trif (flat: the current colour,
+    // never the texture) and trit (textured, as tri is).
+    if (word_is(0, "tri") || word_is(0, "trif") || word_is(0, "trit")) {
+      const bool flat = word_is(0, "trif");
+      if (!need(3, flat ? "trif I1 I2 I3" : word_is(0, "trit") ? "trit I1 I2 I3" : "tri I1 I2 I3"))
+        return ReadStatus::kSceneError;
       uint32_t idx[3];
       const int64_t nv = builder_.vertex_count();
       for (int k = 0; k < 3; ++k) {
@@ -330,7 +334,19 @@ class Reader {
         }
         idx[k] = static_cast<uint32_t>(i > 0 ? i - 1 : nv + i);
       }
-      if (!flush_material()) return memory(false);
+      if (flat && state_.texture != model::kNoTexture) {
+        // The state without its texture for this triangle; the next object
+        // takes the state as it is again.
+        const int32_t texture = state_.texture;
+        state_.texture = model::kNoTexture;
+        state_changed_ = true;
+        const bool added = flush_material();
+        state_.texture = texture;
+        state_changed_ = true;
+        if (!added) return memory(false);
+      } else if (!flush_material()) {
+        return memory(false);
+      }
       return memory(builder_.add_triangle(idx[0], idx[1], idx[2]));
     }
     if (word_is(0, "texcoord")) {

@@ -1,8 +1,8 @@
 // The vector width of the wide BVH walk (wide_traversal.hpp). Every x86-64
 // has SSE2, so the walk's 16-byte vectors need nothing; on an x86-64 whose
 // CPU has AVX2 the tracer runs a second copy of the walk compiled for AVX2
-// (the GCC target attribute on that one function) with a node's four
-// doubles in one register, chosen once at set-up. Other targets (the RV32
+// (the GCC target attribute on that one function) with a node's eight
+// float boxes in one register, chosen once at set-up. Other targets (the RV32
 // board, which walks the binary tree) compile none of this.
 #pragma once
 
@@ -24,9 +24,10 @@ inline bool cpu_has_avx2() {
 #endif
 }
 
-// A node's boxes as one vector of the AVX2 copy: four doubles (32 bytes) or
-// four floats (16).
+// A leaf's spheres as one vector of the AVX2 copy: four doubles (32 bytes)
+// or four floats (16); a node's eight float boxes: one 32-byte vector.
 template <class R>
 inline constexpr int kAvx2Bytes = 4 * static_cast<int>(sizeof(R));
+inline constexpr int kAvx2BoxBytes = 32;
 
 }  // namespace minrt::general

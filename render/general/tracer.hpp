@@ -65,7 +65,7 @@ class TracerCore {
 #if MINRT_AVX2_DISPATCH
         if (bvh_.wide.avx2) return nearest_wide_avx2(ray, eps, h);
 #endif
-        return nearest_wide<16>(ray, eps, h);
+        return nearest_wide<16, 16>(ray, eps, h);
       }
     }
     // Ordered traversal: both children's boxes are tested at the parent, the
@@ -160,12 +160,13 @@ class TracerCore {
     }
   }
 
-  // The wide tree's walks (wide_traversal.hpp) with vectors of kBytes; the
-  // AVX2 copies are the same code compiled for AVX2 (simd_dispatch.hpp).
-  template <int kBytes>
+  // The wide tree's walks (wide_traversal.hpp) with the boxes in vectors of
+  // kBoxBytes and the spheres in vectors of kBytes; the AVX2 copies are the
+  // same code compiled for AVX2 (simd_dispatch.hpp).
+  template <int kBoxBytes, int kBytes>
   [[gnu::always_inline]] inline void nearest_wide(const Ray<R>& ray, R eps, Hit<R>& h) const {
     const SphereLanes<R>& lanes = bvh_.wide.spheres;
-    wide_nearest<kBytes>(
+    wide_nearest<kBoxBytes>(
         bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
           if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
@@ -173,14 +174,15 @@ class TracerCore {
             const uint32_t i = bvh_.refs[pos];
             h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
           });
-          if constexpr ((F & (kTriangles | kSolids)) != 0) leaf_refs<false>(first, count, ray, eps, h);
+          if constexpr ((F & (kTriangles | kSolids)) != 0)
+            if (mixed_) leaf_refs<false>(first, count, ray, eps, h);
         });
   }
 
-  template <int kBytes>
+  template <int kBoxBytes, int kBytes>
   [[gnu::always_inline]] inline bool occluded_wide(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
     const SphereLanes<R>& lanes = bvh_.wide.spheres;
-    return wide_any<kBytes>(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
+    return wide_any<kBoxBytes>(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
       if (lanes.r2 != nullptr) {
         uint32_t blocker = kNoBlocker;
         spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
@@ -191,6 +193,7 @@ class TracerCore {
           return true;
         }
         if constexpr ((F & (kTriangles | kSolids)) == 0) return false;
+        if (!mixed_) return false;
       }
       for (uint32_t k = 0; k < count; ++k) {
         const uint32_t ref = bvh_.refs[first + k];
@@ -206,10 +209,10 @@ class TracerCore {
 
 #if MINRT_AVX2_DISPATCH
   MINRT_TARGET_AVX2 void nearest_wide_avx2(const Ray<R>& ray, R eps, Hit<R>& h) const {
-    nearest_wide<kAvx2Bytes<R>>(ray, eps, h);
+    nearest_wide<kAvx2BoxBytes, kAvx2Bytes<R>>(ray, eps, h);
   }
   MINRT_TARGET_AVX2 bool occluded_wide_avx2(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
-    return occluded_wide<kAvx2Bytes<R>>(ray, eps, limit, cached);
+    return occluded_wide<kAvx2BoxBytes, kAvx2Bytes<R>>(ray, eps, limit, cached);
   }
 #endif
 
@@ -254,7 +257,7 @@ class TracerCore {
 #if MINRT_AVX2_DISPATCH
         if (bvh_.wide.avx2) return occluded_wide_avx2(ray, eps, limit, cached);
 #endif
-        return occluded_wide<16>(ray, eps, limit, cached);
+        return occluded_wide<16, 16>(ray, eps, limit, cached);
       }
     }
     const Vec3<R> inv = inverse_dir(ray.dir);
@@ -336,6 +339,9 @@ class TracerCore {
   const Vec3<R>* light_dirs_;
   R min_weight_;
   const CsgObjects<R>* objects_;
+  // Whether the hierarchy holds anything besides spheres: a sphere-only
+  // scene on a path with triangles skips the leaves' second pass.
+  const bool mixed_ = s_.triangle_count + s_.solid_count != 0;
   // One tracer per row (per thread): the cache is never shared.
   mutable uint32_t shadow_cache_[kShadowCache] = {kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,
                                                   kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker, kNoBlocker,

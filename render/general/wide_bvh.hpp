@@ -1,4 +1,4 @@
-// Builds the four-wide hierarchy (wide_node.hpp) by collapsing the binary
+// Builds the eight-wide hierarchy (wide_node.hpp) by collapsing the binary
 // one (bvh.hpp).
 #pragma once
 
@@ -10,14 +10,28 @@
 
 namespace minrt::general {
 
+// The float at or below (at or above) a finite double: the nearest float
+// moved by one step where rounding went the wrong way. Beyond the float
+// range the result is the largest float or infinity, still on the right
+// side.
+inline WideBox wide_box_down(double v) {
+  constexpr WideBox kMaxFloat = 3.40282347e38f;
+  const WideBox f = static_cast<WideBox>(v);
+  if (!(static_cast<double>(f) > v)) return f;
+  if (f > kMaxFloat) return kMaxFloat;  // rounded up to infinity
+  // |f| / 2^23 is at least one step of f, and f is within half a step of v.
+  return f - (f < WideBox(0) ? -f : f) * WideBox(1.0f / 8388608.0f) - WideBox(1e-30f);
+}
+inline WideBox wide_box_up(double v) { return -wide_box_down(-v); }
+
 // Collapses `bvh` into `out`: every wide node takes the binary node's two
 // children and keeps opening the inner one with the largest box until it
-// has four. False (and `out` empty) when the arena is too small.
+// has eight. False (and `out` empty) when the arena is too small.
 template <class R>
 bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
   out = WideBvh<R>{};
   if (bvh.node_count == 0) return true;
-  auto* nodes = arena.alloc_zeroed<WideNode<R>>(bvh.node_count);
+  auto* nodes = arena.alloc_zeroed<WideNode>(bvh.node_count);
   if (nodes == nullptr) return false;
   struct Work {
     uint32_t wide, binary;
@@ -28,7 +42,7 @@ bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
   uint32_t used = 1;
   while (top > 0) {
     const Work w = stack[--top];
-    WideNode<R>& node = nodes[w.wide];
+    WideNode& node = nodes[w.wide];
     uint32_t kids[kWideArity];
     uint32_t n = 0;
     const BvhNode<R>& b = bvh.nodes[w.binary];
@@ -53,15 +67,15 @@ bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
         kids[n++] = first + 1;
       }
     }
-    node.used = n;
+    node.used_mask = (1u << n) - 1u;
     for (uint32_t k = 0; k < static_cast<uint32_t>(kWideArity); ++k) {
       const BvhNode<R>& c = bvh.nodes[kids[k < n ? k : 0]];
-      node.lo[0][k] = c.box.lo.x;
-      node.lo[1][k] = c.box.lo.y;
-      node.lo[2][k] = c.box.lo.z;
-      node.hi[0][k] = c.box.hi.x;
-      node.hi[1][k] = c.box.hi.y;
-      node.hi[2][k] = c.box.hi.z;
+      node.lo[0][k] = wide_box_down(c.box.lo.x);
+      node.lo[1][k] = wide_box_down(c.box.lo.y);
+      node.lo[2][k] = wide_box_down(c.box.lo.z);
+      node.hi[0][k] = wide_box_up(c.box.hi.x);
+      node.hi[1][k] = wide_box_up(c.box.hi.y);
+      node.hi[2][k] = wide_box_up(c.box.hi.z);
       if (k >= n) continue;  // unused lanes repeat child 0's box and are masked off
       if (c.count != 0) {
         node.child[k] = c.index;

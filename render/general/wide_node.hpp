@@ -1,12 +1,15 @@
-// The nodes of a four-wide bounding-volume hierarchy, collapsed from the
-// binary one (wide_bvh.hpp): each node keeps its four children's boxes side
-// by side, one array per bound and axis, so that one ray is tested against
-// all four in a single pass of the same arithmetic, which the compiler turns
-// into vector instructions (two doubles per SSE2 instruction on every
-// x86-64). The leaves are the binary tree's: ranges of its reference array.
-// Built on 64-bit hosts; the board keeps the binary tree, whose traversal
-// its instruction counts were measured with and whose nodes take a quarter
-// of the memory.
+// The nodes of an eight-wide bounding-volume hierarchy, collapsed from the
+// binary one (wide_bvh.hpp): each node keeps its eight children's boxes side
+// by side in single precision, one array per bound and axis, so that one ray
+// is tested against all eight in a single pass of the same arithmetic, which
+// the compiler turns into vector instructions (eight floats in one AVX
+// register, two SSE2 registers on any x86-64). The boxes are rounded
+// outward and the test is made conservative (wide_traversal.hpp), so a
+// float box never culls what the binary tree's box test keeps; the leaves
+// are the binary tree's ranges of its reference array and are tested in
+// the tracer's own precision. Built on 64-bit hosts; the board keeps the
+// binary tree, whose traversal its instruction counts were measured with
+// and whose nodes take less memory.
 #pragma once
 
 #include <stddef.h>
@@ -19,16 +22,19 @@ namespace minrt::general {
 // Whether the renderer builds and walks the wide tree.
 inline constexpr bool kWideBvh = sizeof(void*) >= 8;
 
-inline constexpr int kWideArity = 4;
+inline constexpr int kWideArity = 8;
 
-template <class R>
+// Whatever the tracer's precision: half the bytes of doubles, twice the
+// boxes per vector.
+using WideBox = float;
+
 struct WideNode {
   // lo/hi[axis][child]: the children's boxes, side by side.
-  R lo[3][kWideArity];
-  R hi[3][kWideArity];
+  WideBox lo[3][kWideArity];
+  WideBox hi[3][kWideArity];
   uint32_t child[kWideArity];  // an inner child's node, or a leaf's first reference
   uint16_t count[kWideArity];  // a leaf's references; 0 for an inner child
-  uint32_t used;               // children 0 .. used-1 are set
+  uint32_t used_mask;          // bit k set: child k is set
 };
 
 // The spheres' centres and squared radii by position in the BVH's reference
@@ -45,7 +51,7 @@ struct SphereLanes {
 
 template <class R>
 struct WideBvh {
-  const WideNode<R>* nodes = nullptr;
+  const WideNode* nodes = nullptr;
   uint32_t node_count = 0;  // 0: walk the binary tree
   SphereLanes<R> spheres{};
   bool avx2 = false;  // walk with the AVX2 copy (simd_dispatch.hpp)
@@ -72,7 +78,7 @@ inline constexpr uint32_t kSphereLanePad = 4;
 // binary tree has) and its sphere lanes.
 template <class R>
 constexpr size_t wide_bvh_footprint(uint32_t n) {
-  return kWideBvh ? Arena::footprint<WideNode<R>>(2 * static_cast<size_t>(n) + 1) +
+  return kWideBvh ? Arena::footprint<WideNode>(2 * static_cast<size_t>(n) + 1) +
                         4 * Arena::footprint<R>(static_cast<size_t>(n) + kSphereLanePad)
                   : 0;
 }

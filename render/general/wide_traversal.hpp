@@ -1,8 +1,9 @@
-// Walks the four-wide hierarchy (wide_node.hpp): the nearest hit, nearest
+// Walks the eight-wide hierarchy (wide_node.hpp): the nearest hit, nearest
 // children first, and any hit for shadow rays. The caller tests the leaves'
 // primitives; nothing here allocates or calls through a pointer.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "render/general/bvh.hpp"
@@ -11,70 +12,119 @@
 
 namespace minrt::general {
 
-// kBytes of values side by side (16: two doubles or four floats; 32: four
-// doubles): a GCC/Clang vector, which the compiler maps to the target's
-// vector registers (16 bytes: one SSE2 register on any x86-64; 32: one AVX
-// register, in code compiled for AVX2, simd_dispatch.hpp) or to scalar code
-// where there are none. A node's four boxes are tested in groups of
-// kLanes. Only passed by reference: a vector by value would depend on the
-// target's ABI.
-template <class R, int kBytes>
+// kBytes of values side by side (16: four floats or two doubles; 32: eight
+// floats or four doubles): a GCC/Clang vector, which the compiler maps to
+// the target's vector registers (16 bytes: one SSE2 register on any x86-64;
+// 32: one AVX register, in code compiled for AVX2, simd_dispatch.hpp) or to
+// scalar code where there are none. A node's eight boxes are tested in
+// groups of kLanes. Only passed by reference: a vector by value would
+// depend on the target's ABI.
+template <class T, int kBytes>
 struct LanesOf {
-  typedef R type __attribute__((vector_size(kBytes)));
+  typedef T type __attribute__((vector_size(kBytes)));
 };
-template <class R, int kBytes>
-using Lanes = typename LanesOf<R, kBytes>::type;
-template <class R, int kBytes>
-inline constexpr int kLanes = kBytes / static_cast<int>(sizeof(R));
-static_assert(kWideArity % kLanes<float, 16> == 0 && kWideArity % kLanes<double, 32> == 0, "whole groups per node");
+template <class T, int kBytes>
+using Lanes = typename LanesOf<T, kBytes>::type;
+template <class T, int kBytes>
+inline constexpr int kLanes = kBytes / static_cast<int>(sizeof(T));
+static_assert(kWideArity % kLanes<WideBox, 16> == 0 && kWideArity % kLanes<WideBox, 32> == 0, "whole groups per node");
 
-// A ray as the box test wants it: for each axis, which bound it meets first
-// (by the sign of the direction), and origin and 1/d in every lane.
-template <class R, int kBytes>
+// Bit k set where lane k of a float comparison is true: movmsk on each
+// 16-byte half on x86-64 (SSE, so the same code serves the SSE2 walk and,
+// inlined, the AVX2 one), a loop elsewhere.
+template <int kBytes>
+[[gnu::always_inline]] inline uint32_t lane_bits(const Lanes<int32_t, kBytes>& met) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  uint32_t bits = 0;
+  for (int h = 0; h < kBytes / 16; ++h) {
+    Lanes<float, 16> f;
+    __builtin_memcpy(&f, reinterpret_cast<const char*>(&met) + 16 * h, sizeof f);
+    bits |= static_cast<uint32_t>(__builtin_ia32_movmskps(f)) << (4 * h);
+  }
+  return bits;
+#else
+  uint32_t bits = 0;
+  for (int k = 0; k < kLanes<int32_t, kBytes>; ++k) bits |= static_cast<uint32_t>(met[k] & 1) << k;
+  return bits;
+#endif
+}
+
+// The box test's margins: the float distances below carry at most about
+// four roundings of 2^-24 each (the origin's is taken care of apart), so
+// entries scaled down and exits scaled up by 2^-20 are never later (or
+// earlier) than the exact ones.
+inline constexpr WideBox kEntryShrink = 1.0f - 1.0f / 1048576.0f;
+inline constexpr WideBox kExitGrow = 1.0f + 1.0f / 1048576.0f;
+
+// A ray as the box test wants it, in floats: for each axis, which bound it
+// meets first (by the sign of the direction), 1/d in every lane, and the
+// origin rounded toward the near bound for entries and away from it for
+// exits, so that the rounding of the origin only widens the boxes.
+template <int kBytes>
 struct WideRay {
-  Lanes<R, kBytes> origin[3];
-  Lanes<R, kBytes> inv[3];
-  bool negative[3];
+  using V = Lanes<WideBox, kBytes>;
+  V near_origin[3];
+  V far_origin[3];
+  V inv[3];
+  // Byte offsets in a node of each axis's near and far bounds (lo or hi,
+  // by the sign of the direction): loads without a branch.
+  uint32_t near_at[3];
+  uint32_t far_at[3];
 
+  template <class R>
   [[gnu::always_inline]] explicit WideRay(const Ray<R>& ray) {
     const Vec3<R> d = inverse_dir(ray.dir);
     const R o[3] = {ray.origin.x, ray.origin.y, ray.origin.z}, i[3] = {d.x, d.y, d.z};
     for (int a = 0; a < 3; ++a) {
-      origin[a] = Lanes<R, kBytes>{} + o[a];
-      inv[a] = Lanes<R, kBytes>{} + i[a];
-      negative[a] = i[a] < R(0);
+      const WideBox f = static_cast<WideBox>(o[a]);
+      // |f| / 2^23 is at least one step of f; f is within half a step of o.
+      const WideBox step = (f < WideBox(0) ? -f : f) * WideBox(1.0f / 8388608.0f) + WideBox(1e-30f);
+      const bool negative = i[a] < R(0);
+      // Entry: (bound - origin) * inv as small as may be, so the origin is
+      // taken above it for a positive direction and below for a negative.
+      const WideBox near = negative ? f - step : f + step, far = negative ? f + step : f - step;
+      near_origin[a] = V{} + near;
+      far_origin[a] = V{} + far;
+      inv[a] = V{} + static_cast<WideBox>(i[a]);
+      const uint32_t lo = static_cast<uint32_t>(offsetof(WideNode, lo) + sizeof(WideBox) * kWideArity * a);
+      const uint32_t hi = static_cast<uint32_t>(offsetof(WideNode, hi) + sizeof(WideBox) * kWideArity * a);
+      near_at[a] = negative ? hi : lo;
+      far_at[a] = negative ? lo : hi;
     }
   }
 };
 
-// Slab test of the ray against the node's four boxes at once: entry[k] is
-// where it enters box k (0 when it starts inside); bit k of the result is
-// set when it meets box k at or before `limit`. The arithmetic of
-// box_entry: for a positive 1/d the low bound gives the smaller distance, so
-// picking the bound by the sign replaces the min/max of the two, and
-// starting from [0, limit] replaces the clamp and the limit test.
-template <class R, int kBytes>
-[[gnu::always_inline]] inline uint32_t wide_entry(const WideNode<R>& n, const WideRay<R, kBytes>& r, R limit,
-                                                  R (&entry)[kWideArity]) {
-  using V = Lanes<R, kBytes>;
-  constexpr int kL = kLanes<R, kBytes>;
+// Slab test of the ray against the node's eight boxes at once: entry[k] is
+// no later than where it enters box k (0 when it starts inside); bit k of
+// the result is set when it may meet box k at or before `limit` (never
+// clear where the exact test in the tracer's precision would meet it).
+// For a positive 1/d the low bound gives the smaller distance, so picking
+// the bound by the sign replaces the min/max of the two, and starting from
+// [0, limit] replaces the clamp and the limit test.
+template <int kBytes>
+[[gnu::always_inline]] inline uint32_t wide_entry(const WideNode& n, const WideRay<kBytes>& r, WideBox limit,
+                                                  WideBox (&entry)[kWideArity]) {
+  using V = Lanes<WideBox, kBytes>;
+  constexpr int kL = kLanes<WideBox, kBytes>;
+  const char* base = reinterpret_cast<const char*>(&n);
   uint32_t mask = 0;
   for (int g = 0; g < kWideArity; g += kL) {
     V tmin{}, tmax = V{} + limit;
     for (int a = 0; a < 3; ++a) {
       V near, far;
-      __builtin_memcpy(&near, (r.negative[a] ? n.hi[a] : n.lo[a]) + g, sizeof near);
-      __builtin_memcpy(&far, (r.negative[a] ? n.lo[a] : n.hi[a]) + g, sizeof far);
-      const V lo = (near - r.origin[a]) * r.inv[a];
-      const V hi = (far - r.origin[a]) * r.inv[a];
+      __builtin_memcpy(&near, base + r.near_at[a] + sizeof(WideBox) * g, sizeof near);
+      __builtin_memcpy(&far, base + r.far_at[a] + sizeof(WideBox) * g, sizeof far);
+      const V lo = (near - r.near_origin[a]) * r.inv[a];
+      const V hi = (far - r.far_origin[a]) * r.inv[a];
       tmin = lo > tmin ? lo : tmin;
       tmax = hi < tmax ? hi : tmax;
     }
+    tmin = tmin * kEntryShrink;
+    tmax = tmax * kExitGrow;
     __builtin_memcpy(entry + g, &tmin, sizeof tmin);
-    const auto met = tmax >= tmin;
-    for (int k = 0; k < kL; ++k) mask |= static_cast<uint32_t>(met[k] & 1) << (g + k);
+    mask |= lane_bits<kBytes>(tmax >= tmin) << g;
   }
-  return mask & ((1u << n.used) - 1u);
+  return mask & n.used_mask;
 }
 
 // Nearest-hit walk. `limit()` is the distance of the best hit so far;
@@ -84,19 +134,19 @@ template <class R, int kBytes>
 // when a closer hit has turned up by the time they come off the stack.
 template <int kBytes, class R, class Limit, class Leaf>
 [[gnu::always_inline]] inline void wide_nearest(const WideBvh<R>& tree, const Ray<R>& ray, Limit limit, Leaf leaf) {
-  const WideRay<R, kBytes> r(ray);
+  const WideRay<kBytes> r(ray);
   struct Entry {
     uint32_t child;
     uint32_t count;
-    R t;
+    WideBox t;
   };
   Entry stack[kWideStack];
   int top = 0;
   uint32_t current = 0;
   for (;;) {
-    const WideNode<R>& node = tree.nodes[current];
-    R entry[kWideArity];
-    uint32_t mask = wide_entry(node, r, limit(), entry);
+    const WideNode& node = tree.nodes[current];
+    WideBox entry[kWideArity];
+    uint32_t mask = wide_entry(node, r, static_cast<WideBox>(limit()), entry);
     if (mask != 0 && (mask & (mask - 1)) == 0) {
       const int k = __builtin_ctz(mask);
       if (node.count[k] == 0) {
@@ -122,7 +172,7 @@ template <int kBytes, class R, class Limit, class Leaf>
     bool descend = false;
     while (top > 0) {
       const Entry e = stack[--top];
-      if (e.t > limit()) continue;
+      if (static_cast<R>(e.t) > limit()) continue;
       if (e.count == 0) {
         current = e.child;
         descend = true;
@@ -139,14 +189,15 @@ template <int kBytes, class R, class Limit, class Leaf>
 // soon as their box is met; inner children wait on the stack.
 template <int kBytes, class R, class Leaf>
 [[gnu::always_inline]] inline bool wide_any(const WideBvh<R>& tree, const Ray<R>& ray, R limit, Leaf leaf) {
-  const WideRay<R, kBytes> r(ray);
+  const WideRay<kBytes> r(ray);
+  const WideBox wide_limit = static_cast<WideBox>(limit);
   uint32_t stack[kWideStack];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const WideNode<R>& node = tree.nodes[stack[--top]];
-    R entry[kWideArity];
-    uint32_t mask = wide_entry(node, r, limit, entry);
+    const WideNode& node = tree.nodes[stack[--top]];
+    WideBox entry[kWideArity];
+    uint32_t mask = wide_entry(node, r, wide_limit, entry);
     while (mask != 0) {
       const int k = __builtin_ctz(mask);
       mask &= mask - 1;

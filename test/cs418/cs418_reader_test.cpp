@@ -93,6 +93,40 @@ TEST_CASE("cs418 reader: keywords build the scene", "[cs418][reader]") {
   CHECK(s.camera.projection == minrt::model::Projection::kFisheye);
 }
 
+TEST_CASE("cs418 reader: trif is a flat triangle and trit a textured one", "[cs418][reader]") {
+  const std::string verts = "png 4 4 o.png\ncolor 0.25 0.5 1\ntexcoord 0.5 1\nxyz 0 0 0\nxyz 1 0 0\nxyz 0 1 0\n";
+  const auto tri = parse(verts + "tri 1 -2 3\n");
+  const auto trif = parse(verts + "texture earth.png\ntrif 1 -2 3\ntrit 1 -2 3\nsphere 0 0 -1 0.5\n");
+  REQUIRE(tri->status == minrt::cs418::ReadStatus::kOk);
+  REQUIRE(trif->status == minrt::cs418::ReadStatus::kOk);
+  REQUIRE(trif->scene.triangle_count == 2);
+  const auto& a = tri->scene.triangles[0];
+  for (uint32_t k = 0; k < 2; ++k) {
+    const auto& b = trif->scene.triangles[k];
+    CHECK(b.p0.x == a.p0.x);
+    CHECK(b.p1.x == a.p1.x);  // -2 of 3 vertices is the second, as for tri
+    CHECK(b.p2.y == a.p2.y);
+    CHECK(b.u[0] == a.u[0]);
+  }
+  const auto& s = trif->scene;
+  const auto& flat = s.materials[s.triangles[0].material];
+  CHECK(flat.texture == minrt::model::kNoTexture);  // the current colour, not the texture
+  CHECK(flat.color.y == 0.5);
+  CHECK(s.materials[s.triangles[1].material].texture == 0);
+  REQUIRE(s.sphere_count == 1);
+  CHECK(s.materials[s.spheres[0].material].texture == 0);  // the state keeps its texture
+  CHECK(trif->warnings.empty());
+}
+
+TEST_CASE("cs418 reader: trif and trit lines give tri's errors under their own names", "[cs418][reader][errors]") {
+  const auto few = parse("png 4 4 o.png\nxyz 0 0 0\ntrif 1 1\n");
+  REQUIRE(few->status == minrt::cs418::ReadStatus::kSceneError);
+  CHECK(where(*few).find("trif I1 I2 I3") != std::string::npos);
+  const auto past = parse("png 4 4 o.png\nxyz 0 0 0\ntrit 1 1 -2\n");
+  REQUIRE(past->status == minrt::cs418::ReadStatus::kSceneError);
+  CHECK(where(*past) == "3:10: vertex -2 is not defined (1 vertex so far)");
+}
+
 TEST_CASE("cs418 reader: up and forward act in file order on the current basis", "[cs418][reader]") {
   const auto p = parse("png 4 4 o.png\nforward 0 0 -2\nup 1 1 0\n");
   REQUIRE(p->status == minrt::cs418::ReadStatus::kOk);
