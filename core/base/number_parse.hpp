@@ -244,12 +244,15 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
   }
   if (magnitude < -330) return NumberStatus::kOk;
   if (significant <= 19 && round_small_decimal<R>(small, exp10, out)) return NumberStatus::kOk;
-  BigUint d;
-  for (int k = 0; k < digits_end; ++k) {
-    if (s[k] == '.') continue;
-    const unsigned v = static_cast<unsigned>(s[k] - '0');
-    if (d.is_zero() && v == 0) continue;
-    if (!d.mul_add_small(10, v)) return NumberStatus::kInvalid;
+  BigUint d(small);
+  if (significant > 19) {
+    d.set_u64(0);
+    for (int k = 0; k < digits_end; ++k) {
+      if (s[k] == '.') continue;
+      const unsigned v = static_cast<unsigned>(s[k] - '0');
+      if (d.is_zero() && v == 0) continue;
+      if (!d.mul_add_small(10, v)) return NumberStatus::kInvalid;
+    }
   }
   return round_big_decimal<R>(d, exp10, out);
 }
