@@ -140,39 +140,10 @@ NumberStatus parse_hex_magnitude(const char* s, int n, typename IeeeFormat<R>::B
   return NumberStatus::kOk;
 }
 
+// d / 10^-exp10 (exp10 < 0) or d * 10^exp10, rounded: exact big-integer
+// arithmetic for any digit count.
 template <class R>
-NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R>::Bits& out) {
-  BigUint d;
-  int i = 0, significant = 0, exp10 = 0, digits = 0;
-  bool seen_point = false;
-  for (; i < n; ++i) {
-    if (s[i] == '.' && !seen_point) {
-      seen_point = true;
-      continue;
-    }
-    if (s[i] < '0' || s[i] > '9') break;
-    ++digits;
-    const unsigned v = static_cast<unsigned>(s[i] - '0');
-    if (seen_point) --exp10;
-    if (significant == 0 && v == 0) continue;
-    ++significant;
-    if (!d.mul_add_small(10, v)) return NumberStatus::kInvalid;
-  }
-  if (digits == 0) return NumberStatus::kInvalid;
-  if (i < n) {
-    if ((s[i] != 'e' && s[i] != 'E') || !parse_exponent(s + i + 1, n - i - 1, exp10))
-      return NumberStatus::kInvalid;
-  }
-  out = 0;
-  if (d.is_zero()) return NumberStatus::kOk;
-  // Decimal magnitude of the leading digit; outside these bounds the result
-  // is certainly infinite (or zero) in both formats.
-  const int magnitude = significant + exp10;
-  if (magnitude > 330) {
-    out = round_to_format<R>(1, 4096, false);
-    return NumberStatus::kOk;
-  }
-  if (magnitude < -330) return NumberStatus::kOk;
+NumberStatus round_big_decimal(BigUint& d, int exp10, typename IeeeFormat<R>::Bits& out) {
   if (exp10 >= 0) {
     d.mul_pow10(exp10);
     const int b = d.bit_length();
@@ -184,21 +155,6 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
     return NumberStatus::kOk;
   }
   // value = d / 10^-exp10: a 64-bit quotient with a sticky remainder.
-#if defined(__SIZEOF_INT128__)
-  // Where the compiler has 128-bit integers (the host, not RV32) the common
-  // case, at most 19 significant digits over at most 10^19, divides in one
-  // step; the same quotient and remainder as the long division below.
-  if (-exp10 <= 19 && d.bit_length() <= 64) {
-    uint64_t p = 1;
-    for (int e = 0; e < -exp10; ++e) p *= 10;
-    const uint64_t dv = d.bits_from(0);
-    const int k = 63 + (64 - __builtin_clzll(p)) - (64 - __builtin_clzll(dv));
-    const unsigned __int128 num = static_cast<unsigned __int128>(dv) << k;
-    const uint64_t q = static_cast<uint64_t>(num / p);
-    out = round_to_format<R>(q, -k, num % p != 0);
-    return NumberStatus::kOk;
-  }
-#endif
   BigUint den(1);
   den.mul_pow10(-exp10);
   const int k = 63 + den.bit_length() - d.bit_length();
@@ -218,6 +174,87 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
   }
   out = round_to_format<R>(q, -k, !d.is_zero());
   return NumberStatus::kOk;
+}
+
+// At most 19 significant digits `dv` (nonzero) times 10^exp10, rounded,
+// without a big integer where 64 bits (or the host's 128) hold the work.
+// False when it does not apply.
+template <class R>
+bool round_small_decimal(uint64_t dv, int exp10, typename IeeeFormat<R>::Bits& out) {
+  if (exp10 >= 0) {
+    uint64_t v = dv;
+    for (int e = 0; e < exp10; ++e) {
+      if (v > UINT64_MAX / 10) return false;
+      v *= 10;
+    }
+    out = round_to_format<R>(v, 0, false);
+    return true;
+  }
+#if defined(__SIZEOF_INT128__)
+  // Where the compiler has 128-bit integers (the host, not RV32): at most
+  // 10^19 below the point divides in one step, the same quotient and
+  // remainder as the long division.
+  if (-exp10 <= 19) {
+    uint64_t p = 1;
+    for (int e = 0; e < -exp10; ++e) p *= 10;
+    const int k = 63 + (64 - __builtin_clzll(p)) - (64 - __builtin_clzll(dv));
+    const unsigned __int128 num = static_cast<unsigned __int128>(dv) << k;
+    const uint64_t q = static_cast<uint64_t>(num / p);
+    out = round_to_format<R>(q, -k, num % p != 0);
+    return true;
+  }
+#endif
+  return false;
+}
+
+template <class R>
+NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R>::Bits& out) {
+  // First pass: the digits' count and place, and the first 19 significant
+  // ones in a word (they always fit); the big integer (4096 bits) is built
+  // only for the numbers that need it.
+  uint64_t small = 0;
+  int i = 0, significant = 0, exp10 = 0, digits = 0;
+  bool seen_point = false;
+  for (; i < n; ++i) {
+    if (s[i] == '.' && !seen_point) {
+      seen_point = true;
+      continue;
+    }
+    if (s[i] < '0' || s[i] > '9') break;
+    ++digits;
+    const unsigned v = static_cast<unsigned>(s[i] - '0');
+    if (seen_point) --exp10;
+    if (significant == 0 && v == 0) continue;
+    if (++significant <= 19) small = small * 10 + v;
+  }
+  if (digits == 0) return NumberStatus::kInvalid;
+  const int digits_end = i;
+  if (i < n) {
+    if ((s[i] != 'e' && s[i] != 'E') || !parse_exponent(s + i + 1, n - i - 1, exp10))
+      return NumberStatus::kInvalid;
+  }
+  out = 0;
+  if (significant == 0) return NumberStatus::kOk;
+  // Decimal magnitude of the leading digit; outside these bounds the result
+  // is certainly infinite (or zero) in both formats.
+  const int magnitude = significant + exp10;
+  if (magnitude > 330) {
+    out = round_to_format<R>(1, 4096, false);
+    return NumberStatus::kOk;
+  }
+  if (magnitude < -330) return NumberStatus::kOk;
+  if (significant <= 19 && round_small_decimal<R>(small, exp10, out)) return NumberStatus::kOk;
+  BigUint d(small);
+  if (significant > 19) {
+    d.set_u64(0);
+    for (int k = 0; k < digits_end; ++k) {
+      if (s[k] == '.') continue;
+      const unsigned v = static_cast<unsigned>(s[k] - '0');
+      if (d.is_zero() && v == 0) continue;
+      if (!d.mul_add_small(10, v)) return NumberStatus::kInvalid;
+    }
+  }
+  return round_big_decimal<R>(d, exp10, out);
 }
 
 }  // namespace number_detail

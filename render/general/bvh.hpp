@@ -189,18 +189,20 @@ bool build_bvh_over(uint32_t n, Arena& arena, Bvh<typename M::real>& out, Item i
     const R width = ext[axis];
     int best_split = -1;
     R best = R(0);
-    // Bins per unit of each axis the host tries (one division per axis),
-    // set before that axis is binned.
-    R per_unit[3];
+    // The bin of primitive i along axis `a`. The board compares with the
+    // bins' starts (no float-to-int conversion needed); the host converts
+    // and clamps.
+    const R scale = width > R(0) ? R(kBins) / width : R(0);  // the board's, one division a node
+    R per_unit[3];  // the host's bins per unit of each axis, set before that axis is binned
     auto bin_of = [&](uint32_t i, int a) {
       if constexpr (kWideBvh) {
         const R f = (centers[i][a] - cbox.lo[a]) * per_unit[a];
         const int b = f > R(0) ? static_cast<int>(f) : 0;
         return b < kBins - 1 ? b : kBins - 1;
       } else {
-        const R f = (centers[i][axis] - lo) * (R(kBins) / width);
+        const R f = (centers[i][a] - lo) * scale;
         int b = 0;
-        while (b + 1 < kBins && f >= M::from_int(b + 1)) ++b;  // no float-to-int conversion needed
+        while (b + 1 < kBins && f >= M::from_int(b + 1)) ++b;
         return b;
       }
     };
