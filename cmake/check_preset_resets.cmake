@@ -50,6 +50,17 @@ endwhile()
 string(REGEX REPLACE "[][\" ]" "" names "${names}")
 string(REPLACE "," ";" names "${names}")
 
+# The project's CMake text: a MINRT_* entry it never names is a leftover of
+# an older source tree in the same build folder, not a setting.
+get_filename_component(source_dir "${PRESETS}" DIRECTORY)
+file(GLOB cmake_files "${source_dir}/CMakeLists.txt" "${source_dir}/cmake/*.cmake" "${source_dir}/*/CMakeLists.txt"
+     "${source_dir}/*/*/CMakeLists.txt")
+set(cmake_text "")
+foreach(f IN LISTS cmake_files)
+  file(READ "${f}" text)
+  string(APPEND cmake_text "${text}")
+endforeach()
+
 # The cache: each entry follows its help text; find_program/find_library
 # results say "Path to a program." / "Path to a library.".
 file(STRINGS "${CACHE}" lines)
@@ -63,7 +74,8 @@ foreach(line IN LISTS lines)
   endif()
   if(line MATCHES "^(MINRT_[A-Z0-9_]+):(BOOL|STRING|PATH|FILEPATH)=")
     set(var "${CMAKE_MATCH_1}")
-    if(NOT help MATCHES "^Path to a (program|library|file)\\.$")
+    string(FIND "${cmake_text}" "${var}" named)
+    if(named GREATER -1 AND NOT help MATCHES "^Path to a (program|library|file)\\.$")
       math(EXPR checked "${checked} + 1")
       if(NOT var IN_LIST names)
         list(APPEND missing "${var}")
