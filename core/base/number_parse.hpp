@@ -244,9 +244,9 @@ NumberStatus parse_decimal_magnitude(const char* s, int n, typename IeeeFormat<R
   }
   if (magnitude < -330) return NumberStatus::kOk;
   if (significant <= 19 && round_small_decimal<R>(small, exp10, out)) return NumberStatus::kOk;
-  BigUint d(small);
+  // Up to 19 digits the word holds the number; past that every digit is read again.
+  BigUint d(significant <= 19 ? small : 0);
   if (significant > 19) {
-    d.set_u64(0);
     for (int k = 0; k < digits_end; ++k) {
       if (s[k] == '.') continue;
       const unsigned v = static_cast<unsigned>(s[k] - '0');
