@@ -175,6 +175,8 @@ int run_driver(const DriverOptions& options) {
     const int threads =
         render_rows(*scene, options.threads, image, shown, window_only ? window.closed_flag() : nullptr,
                     rows_to_file.started() ? &rows_to_file : nullptr, &progress);
+    // Off the terminal before --stats and the writer's messages; a second
+    // view's rows draw the line again from where the first left it.
     progress.finish();
     const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (window_only && window.closed()) {
