@@ -21,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "child_process.hpp"
 #include "core/base/crc32.hpp"
 
 namespace {
@@ -35,21 +36,7 @@ struct Run {
 // start. A run over 60 s is killed (status 137) so a hang fails the test.
 Run run(const std::vector<std::string>& argv, const std::string& dir, int sig = 0, int signal_after_ms = -1) {
   const std::string err_path = dir + "/.stderr";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(126);
-    const int in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open("/dev/null", O_WRONLY);
-    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    ::dup2(in, 0);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    ::execv(args[0], args.data());
-    ::_exit(127);
-  }
+  const pid_t pid = hs_test::start_program(argv, "/dev/null", err_path, dir);
   const auto start = std::chrono::steady_clock::now();
   bool signalled = false;
   int st = 0;

@@ -25,25 +25,7 @@ using Clock = std::chrono::steady_clock;
 
 // Starts argv in `dir` with its output to /dev/null and stderr to `err`.
 pid_t start(const std::vector<std::string>& argv, const std::string& dir, const std::string& err) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(126);
-    const int in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open("/dev/null", O_WRONLY);
-    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    ::dup2(in, 0);
-    ::dup2(out, 1);
-    ::dup2(e, 2);
-    // The test runner may ignore SIGINT for its children (a shell's
-    // background job does); a user's Ctrl-C reaches a program that has not.
-    ::signal(SIGINT, SIG_DFL);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    ::execv(args[0], args.data());
-    ::_exit(127);
-  }
-  return pid;
+  return hs_test::start_program(argv, "/dev/null", err, dir);
 }
 
 // Waits for `pid` at most `seconds`, then kills it (a hang fails the test).

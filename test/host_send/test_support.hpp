@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "child_process.hpp"
 #include "sim_launcher.hpp"
 
 namespace hs_test {
