@@ -1,7 +1,10 @@
 #include "row_pool.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -47,32 +50,41 @@ T wait_for_change(const std::atomic<T>& value, T old) {
   return now;
 }
 
-// Threads that render rows beside the calling thread. They are started
-// once (start_row_threads, or the first render) and live as long as the
-// process, sleeping between renders: starting a thread costs more than a
-// small scene's serial part, and a helper that is already running when the
-// rows are ready starts on them at once. The pool is never destroyed, so a
-// sleeping helper at exit holds nothing that the exit takes away.
+// Threads that render rows beside the calling thread, each for one
+// render. start_row_threads starts them before the scene is read, so that
+// they are running when its rows are ready: a helper then starts on them
+// at once, without the cost of a thread's start (more than a small
+// scene's serial part) or of a sleeping thread's wake-up. A helper ends
+// as soon as no rows are left, while the caller finishes the file, and
+// so is not in the way of the process's exit.
 class Helpers {
  public:
   using Job = void (*)(void* context, int thread);
 
+  // Makes sure that `count` helpers are waiting for the next render.
   void start(int count) {
     std::lock_guard<std::mutex> lock(start_mutex_);
-    for (; started_ < count; ++started_) std::thread(&Helpers::loop, this, started_ + 1).detach();
+    for (; waiting_ < count; ++waiting_)
+      std::thread(&Helpers::loop, this, generation_.load(std::memory_order_relaxed)).detach();
   }
 
-  // Runs job(context, t) on the calling thread (t = 0) and on helpers
-  // 1..count at the same time; returns when every one has returned.
+  // Runs job(context, t) on the calling thread (t = 0) and on `count`
+  // helpers (t = 1..count) at the same time; returns when every one has
+  // returned.
   void run(int count, Job job, void* context) {
     std::lock_guard<std::mutex> lock(run_mutex_);
-    start(count);
     if (count > 0) {
+      start(count);
+      {
+        std::lock_guard<std::mutex> started(start_mutex_);
+        waiting_ -= count;  // the first `count` to claim a place take them
+      }
       job_ = job;
       context_ = context;
-      count_ = count;
       pending_.store(count, std::memory_order_relaxed);
-      generation_.fetch_add(1, std::memory_order_release);
+      const unsigned generation = generation_.load(std::memory_order_relaxed) + 1;
+      places_.store(uint64_t{generation} << 32 | static_cast<uint32_t>(count), std::memory_order_release);
+      generation_.store(generation, std::memory_order_release);
       generation_.notify_all();
     }
     job(context, 0);
@@ -80,30 +92,45 @@ class Helpers {
   }
 
  private:
-  void loop(int index) {
-    unsigned seen = 0;
+  void loop(unsigned seen) {
     for (;;) {
       seen = wait_for_change(generation_, seen);
-      if (index > count_) continue;
-      job_(context_, index);
+      // A place in render `seen`, if one is left (more helpers may be
+      // waiting than it takes); a later render's places are taken after
+      // its generation is seen.
+      uint64_t places = places_.load(std::memory_order_acquire);
+      while (places >> 32 == seen && static_cast<uint32_t>(places) != 0 &&
+             !places_.compare_exchange_weak(places, places - 1, std::memory_order_acq_rel))
+        ;
+      if (places >> 32 != seen || static_cast<uint32_t>(places) == 0) continue;
+      job_(context_, static_cast<int>(static_cast<uint32_t>(places)));
       if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) pending_.notify_one();
+      return;
     }
   }
 
   std::mutex start_mutex_, run_mutex_;
-  int started_ = 0;
-  // The current job, written before generation_ moves on.
+  int waiting_ = 0;  // helpers started and not yet given a place
+  // The current render, written before generation_ moves on.
   Job job_ = nullptr;
   void* context_ = nullptr;
-  int count_ = 0;
   std::atomic<unsigned> generation_{0};
-  std::atomic<int> pending_{0};  // helpers still on the current job
+  // The current render's generation (high half) and its places not yet
+  // taken (low half), so that a place is taken in one step.
+  std::atomic<uint64_t> places_{0};
+  std::atomic<int> pending_{0};  // helpers still on the current render
 };
 
 Helpers& helpers() {
-  static Helpers* pool = new Helpers;  // never destroyed, see above
+  // Never destroyed: a helper waiting at exit for a render that does not
+  // come holds on to it.
+  static Helpers* pool = new Helpers;
   return *pool;
 }
+
+// Rows handed out at a time at most: a run of rows goes to the file with
+// one write, which costs a fifth of writing its rows one by one.
+constexpr std::size_t kRunBytes = 64 * 1024;
 
 struct RowJob {
   const PreparedScene& scene;
@@ -112,22 +139,43 @@ struct RowJob {
   const std::atomic<bool>* stop;
   RowFileWriter* file;
   WorkProgress* progress;
+  int threads;
   bool keep, live;
   std::size_t row_bytes;
-  uint8_t* own_rows;  // a row per thread when the image is not kept
+  int run_rows;       // rows per hand-out at most
+  uint8_t* own_rows;  // run_rows rows per thread for the file, when given
   std::atomic<int> next{0};
 
   static void run(void* context, int thread) noexcept { static_cast<RowJob*>(context)->rows(thread); }
 
+  // The next rows to render, `count` of them from the one returned (-1:
+  // none left). Runs shrink to single rows as the image nears its end,
+  // so that the threads finish within a row of each other.
+  int take(int& count) {
+    int y = next.load(std::memory_order_relaxed);
+    for (;;) {
+      const int left = scene.height - y;
+      if (left <= 0) return -1;
+      count = std::clamp(left / (4 * threads), 1, run_rows);
+      if (next.compare_exchange_weak(y, y + count, std::memory_order_relaxed)) return y;
+    }
+  }
+
   void rows(int thread) {
-    uint8_t* own = keep ? nullptr : own_rows + static_cast<std::size_t>(thread) * row_bytes;
-    for (int y; (y = next.fetch_add(1, std::memory_order_relaxed)) < scene.height;) {
-      if (stop != nullptr && stop->load(std::memory_order_acquire)) return;
-      uint8_t* row = keep ? image.rgba.data() + static_cast<std::size_t>(y) * row_bytes : own;
-      scene.render_row(y, row);
-      if (live) window->row_rgba(y, row);
-      if (file != nullptr) file->row(y, row);
-      if (progress != nullptr) progress->add();
+    uint8_t* own = own_rows == nullptr ? nullptr : own_rows + static_cast<std::size_t>(thread) * run_rows * row_bytes;
+    for (int y0, count; (y0 = take(count)) >= 0;) {
+      uint8_t* run = keep ? image.rgba.data() + static_cast<std::size_t>(y0) * row_bytes : own;
+      for (int i = 0; i < count; ++i) {
+        if (stop != nullptr && stop->load(std::memory_order_acquire)) return;
+        uint8_t* row = run + static_cast<std::size_t>(i) * row_bytes;
+        scene.render_row(y0 + i, row);
+        if (live) window->row_rgba(y0 + i, row);
+        if (progress != nullptr) progress->add();
+      }
+      if (file == nullptr) continue;
+      // The file's conversion is done in place: a kept image is copied first.
+      if (run != own) std::memcpy(own, run, static_cast<std::size_t>(count) * row_bytes);
+      file->rows(y0, count, own);
     }
   }
 };
@@ -149,10 +197,13 @@ int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveW
   if (keep) image.rgba.assign(row_bytes * scene.height, 0);
   else image.rgba.clear();
   if (live) window->begin(scene.width, scene.height);
-  // Every thread's own row taken here: a helper's first allocation would
-  // set up a heap of its own first.
-  std::vector<uint8_t> own_rows(keep ? 0 : row_bytes * static_cast<std::size_t>(n));
-  RowJob job{scene, image, window, stop, file, progress, keep, live, row_bytes, own_rows.data()};
+  // Every thread's own rows taken here, not zeroed (each thread's first
+  // touch of its pages is then its own): a helper's first allocation
+  // would set up a heap of its own first.
+  const int run_rows = static_cast<int>(std::max<std::size_t>(1, kRunBytes / std::max<std::size_t>(row_bytes, 1)));
+  std::unique_ptr<uint8_t[]> own_rows;
+  if (file != nullptr) own_rows = std::make_unique_for_overwrite<uint8_t[]>(row_bytes * run_rows * static_cast<std::size_t>(n));
+  RowJob job{scene, image, window, stop, file, progress, n, keep, live, row_bytes, run_rows, own_rows.get()};
   helpers().run(n - 1, &RowJob::run, &job);
   return n;
 }

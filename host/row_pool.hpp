@@ -1,6 +1,7 @@
 // The one pool that renders a prepared scene's rows on several threads (0:
 // every core), for every format but SLD, whose band renderer has its own
-// (render_variants.cpp). Each thread takes the next row; the image is the
+// (render_variants.cpp). Each thread takes the next rows (a run of them
+// while many are left, one at a time toward the end); the image is the
 // same for any thread count because rows do not depend on each other.
 #pragma once
 
