@@ -59,7 +59,7 @@ T wait_for_change(const std::atomic<T>& value, T old) {
 // so is not in the way of the process's exit.
 class Helpers {
  public:
-  using Job = void (*)(void* context, int thread);
+  using Job = void (*)(void* context);
 
   // Makes sure that `count` helpers are waiting for the next render.
   void start(int count) {
@@ -68,9 +68,8 @@ class Helpers {
       std::thread(&Helpers::loop, this, generation_.load(std::memory_order_relaxed)).detach();
   }
 
-  // Runs job(context, t) on the calling thread (t = 0) and on `count`
-  // helpers (t = 1..count) at the same time; returns when every one has
-  // returned.
+  // Runs job(context) on the calling thread and on `count` helpers at the
+  // same time; returns when every one has returned.
   void run(int count, Job job, void* context) {
     std::lock_guard<std::mutex> lock(run_mutex_);
     if (count > 0) {
@@ -87,7 +86,7 @@ class Helpers {
       generation_.store(generation, std::memory_order_release);
       generation_.notify_all();
     }
-    job(context, 0);
+    job(context);
     for (int left = pending_.load(std::memory_order_acquire); left != 0;) left = wait_for_change(pending_, left);
   }
 
@@ -103,7 +102,7 @@ class Helpers {
              !places_.compare_exchange_weak(places, places - 1, std::memory_order_acq_rel))
         ;
       if (places >> 32 != seen || static_cast<uint32_t>(places) == 0) continue;
-      job_(context_, static_cast<int>(static_cast<uint32_t>(places)));
+      job_(context_);
       if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) pending_.notify_one();
       return;
     }
@@ -142,11 +141,10 @@ struct RowJob {
   int threads;
   bool keep, live;
   std::size_t row_bytes;
-  int run_rows;       // rows per hand-out at most
-  uint8_t* own_rows;  // run_rows rows per thread for the file, when given
+  int run_rows;  // rows per hand-out at most
   std::atomic<int> next{0};
 
-  static void run(void* context, int thread) noexcept { static_cast<RowJob*>(context)->rows(thread); }
+  static void run(void* context) noexcept { static_cast<RowJob*>(context)->rows(); }
 
   // The next rows to render, `count` of them from the one returned (-1:
   // none left). Runs shrink to single rows as the image nears its end,
@@ -161,8 +159,18 @@ struct RowJob {
     }
   }
 
-  void rows(int thread) {
-    uint8_t* own = own_rows == nullptr ? nullptr : own_rows + static_cast<std::size_t>(thread) * run_rows * row_bytes;
+  void rows() {
+    // The file's rows on the thread's own stack: nothing to allocate
+    // (a helper's first allocation sets up a heap of its own) or to give
+    // back (unmapping memory that two threads have used interrupts both)
+    // but for rows wider than a run.
+    alignas(64) uint8_t stack_rows[kRunBytes];
+    std::unique_ptr<uint8_t[]> wide_rows;
+    uint8_t* own = stack_rows;
+    if (file != nullptr && row_bytes > kRunBytes) {
+      wide_rows = std::make_unique_for_overwrite<uint8_t[]>(row_bytes);
+      own = wide_rows.get();
+    }
     for (int y0, count; (y0 = take(count)) >= 0;) {
       uint8_t* run = keep ? image.rgba.data() + static_cast<std::size_t>(y0) * row_bytes : own;
       for (int i = 0; i < count; ++i) {
@@ -197,13 +205,8 @@ int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveW
   if (keep) image.rgba.assign(row_bytes * scene.height, 0);
   else image.rgba.clear();
   if (live) window->begin(scene.width, scene.height);
-  // Every thread's own rows taken here, not zeroed (each thread's first
-  // touch of its pages is then its own): a helper's first allocation
-  // would set up a heap of its own first.
   const int run_rows = static_cast<int>(std::max<std::size_t>(1, kRunBytes / std::max<std::size_t>(row_bytes, 1)));
-  std::unique_ptr<uint8_t[]> own_rows;
-  if (file != nullptr) own_rows = std::make_unique_for_overwrite<uint8_t[]>(row_bytes * run_rows * static_cast<std::size_t>(n));
-  RowJob job{scene, image, window, stop, file, progress, n, keep, live, row_bytes, run_rows, own_rows.get()};
+  RowJob job{scene, image, window, stop, file, progress, n, keep, live, row_bytes, run_rows};
   helpers().run(n - 1, &RowJob::run, &job);
   return n;
 }
