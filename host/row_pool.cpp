@@ -7,7 +7,6 @@
 #include <memory>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 #include "image_window.hpp"
 #include "row_file_writer.hpp"
@@ -51,7 +50,7 @@ T wait_for_change(const std::atomic<T>& value, T old) {
 }
 
 // Threads that render rows beside the calling thread, each for one
-// render. start_row_threads starts them before the scene is read, so that
+// render. start_row_threads starts them before the scene is parsed, so that
 // they are running when its rows are ready: a helper then starts on them
 // at once, without the cost of a thread's start (more than a small
 // scene's serial part) or of a sleeping thread's wake-up. A helper ends

@@ -19,8 +19,8 @@ class RowFileWriter;
 
 // Starts the threads that a later render_rows on `threads` (0: every core)
 // renders with beside the calling thread, so that they are running when
-// the rows are ready: call it before reading the scene. render_rows starts
-// any that are missing itself.
+// the rows are ready: call it before preparing the scene. render_rows
+// starts any that are missing itself.
 void start_row_threads(int threads);
 
 // Renders every row of `scene` into `image` (resized), handing each to
