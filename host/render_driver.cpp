@@ -109,6 +109,7 @@ int run_driver(const DriverOptions& options) {
 
   const formats::ErrorStyle style = format.errors;
   std::string error;
+  start_row_threads(options.threads);  // running by the time the scene is ready
   std::unique_ptr<PreparedScene> scene = host.prepare(in, options, warnings, error);
   if (!scene) {
     print_error(style, error.empty() ? "minrt: error: this combination of --precision and --shims is not built" : error);

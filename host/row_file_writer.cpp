@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -13,8 +14,8 @@ namespace minrt::host {
 
 namespace {
 
-// Pixels converted and written at a time: one buffer on the stack.
-constexpr int kChunkPixels = 1024;
+// Pixels converted at a time (BmpWriter::to_bgra takes an int count).
+constexpr std::size_t kChunkPixels = 1 << 20;
 
 }  // namespace
 
@@ -54,27 +55,28 @@ bool RowFileWriter::start(std::FILE* f, ImageFile kind, int width, int height) {
   return put(header, header_bytes, 0);
 }
 
-void RowFileWriter::row(int y, const uint8_t* rgba) {
-  if (error_.load(std::memory_order_relaxed) != 0) return;
-  const bool bmp = kind_ == ImageFile::kBmp;
-  const int file_row = bmp ? height_ - 1 - y : y;  // a BMP stores the bottom row first
-  std::size_t offset = header_bytes_ + static_cast<std::size_t>(file_row) * row_bytes_;
-  uint8_t chunk[4 * kChunkPixels];
-  for (int x = 0; x < width_; x += kChunkPixels) {
-    const int n = width_ - x < kChunkPixels ? width_ - x : kChunkPixels;
-    const uint8_t* src = rgba + 4 * static_cast<std::size_t>(x);
-    std::size_t bytes;
-    if (bmp) {
-      BmpWriter::to_bgra(src, chunk, n);
-      bytes = 4 * static_cast<std::size_t>(n);
-    } else {
-      for (int i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) chunk[3 * i + c] = src[4 * i + c];
-      bytes = 3 * static_cast<std::size_t>(n);
+void RowFileWriter::rows(int y, int count, uint8_t* rgba) {
+  if (count <= 0 || error_.load(std::memory_order_relaxed) != 0) return;
+  const std::size_t in_bytes = static_cast<std::size_t>(width_) * 4;
+  const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(count);
+  int first_file_row;
+  if (kind_ == ImageFile::kBmp) {
+    // A BMP stores the bottom row first: the run goes in reversed.
+    for (int i = 0, j = count - 1; i < j; ++i, --j)
+      std::swap_ranges(rgba + i * in_bytes, rgba + (i + 1) * in_bytes, rgba + j * in_bytes);
+    for (std::size_t p = 0; p < pixels; p += kChunkPixels) {
+      const std::size_t n = pixels - p < kChunkPixels ? pixels - p : kChunkPixels;
+      BmpWriter::to_bgra(rgba + 4 * p, rgba + 4 * p, static_cast<int>(n));
     }
-    if (!put(chunk, bytes, offset)) return;
-    offset += bytes;
+    first_file_row = height_ - y - count;
+  } else {
+    // RGB from RGBA: each pixel moves down, never over one not yet read.
+    for (std::size_t p = 0; p < pixels; ++p)
+      for (int c = 0; c < 3; ++c) rgba[3 * p + c] = rgba[4 * p + c];
+    first_file_row = y;
   }
+  (void)put(rgba, static_cast<std::size_t>(count) * row_bytes_,
+            header_bytes_ + static_cast<std::size_t>(first_file_row) * row_bytes_);
 }
 
 bool RowFileWriter::put(const uint8_t* bytes, std::size_t count, std::size_t offset) {

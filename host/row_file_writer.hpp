@@ -1,7 +1,7 @@
 // An image file whose rows each have a fixed place in it (BMP: 32-bit,
-// bottom row first; binary PPM), written one row at a time from any thread
-// as the rows are rendered: the header first, then each row with pwrite at
-// its own offset. Writing the file thus overlaps the render and shares its
+// bottom row first; binary PPM), written a few rows at a time from any
+// thread as the rows are rendered: the header first, then each run of
+// rows with pwrite at its own offset. Writing the file thus overlaps the render and shares its
 // threads, instead of following the last row on one thread, and no row
 // waits for the rows before it.
 #pragma once
@@ -25,9 +25,11 @@ class RowFileWriter {
   bool start(std::FILE* f, ImageFile kind, int width, int height);
   bool started() const { return fd_ >= 0; }
 
-  // Row y (0 = top) as RGBA, width x 4 bytes. Any thread, any order, each
+  // Rows y .. y + count - 1 (0 = top) as RGBA, width x 4 bytes each, one
+  // after the other in `rgba`, which is converted in place into the
+  // file's bytes and written with one call. Any thread, any order, each
   // row once; the first failing write is kept for finish().
-  void row(int y, const uint8_t* rgba);
+  void rows(int y, int count, uint8_t* rgba);
 
   // After the last row: leaves the file's offset at its end, as a
   // sequential writer would. False with the reason when a write failed.

@@ -1,13 +1,195 @@
 #include "row_pool.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <mutex>
 #include <thread>
-#include <vector>
 
 #include "image_window.hpp"
 #include "row_file_writer.hpp"
 #include "thread_count.hpp"
 
 namespace minrt::host {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// How long a new helper polls for its first rows before it sleeps: longer
+// than a small scene takes to read and prepare, so that its rows start at
+// once instead of after a wake-up (on a virtual machine an idle core can
+// take tens of microseconds to wake), and short enough that a large scene's
+// preparation does not keep a core busy. Also how long the calling thread
+// polls for the helpers' last rows before it sleeps.
+constexpr auto kPollTime = std::chrono::milliseconds(2);
+
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
+// Polls `value` until it differs from `old` for at most kPollTime, then
+// sleeps on it until it does.
+template <class T>
+T wait_for_change(const std::atomic<T>& value, T old) {
+  T now = value.load(std::memory_order_acquire);
+  const auto deadline = Clock::now() + kPollTime;
+  for (int i = 1; now == old; ++i) {
+    cpu_relax();
+    now = value.load(std::memory_order_acquire);
+    if (now == old && i % 256 == 0 && Clock::now() > deadline) {
+      value.wait(old, std::memory_order_acquire);
+      now = value.load(std::memory_order_acquire);
+    }
+  }
+  return now;
+}
+
+// Threads that render rows beside the calling thread, each for one
+// render. start_row_threads starts them before the scene is parsed, so that
+// they are running when its rows are ready: a helper then starts on them
+// at once, without the cost of a thread's start (more than a small
+// scene's serial part) or of a sleeping thread's wake-up. A helper ends
+// as soon as no rows are left, while the caller finishes the file, and
+// so is not in the way of the process's exit.
+class Helpers {
+ public:
+  using Job = void (*)(void* context);
+
+  // Makes sure that `count` helpers are waiting for the next render.
+  void start(int count) {
+    std::lock_guard<std::mutex> lock(start_mutex_);
+    for (; waiting_ < count; ++waiting_)
+      std::thread(&Helpers::loop, this, generation_.load(std::memory_order_relaxed)).detach();
+  }
+
+  // Runs job(context) on the calling thread and on `count` helpers at the
+  // same time; returns when every one has returned.
+  void run(int count, Job job, void* context) {
+    std::lock_guard<std::mutex> lock(run_mutex_);
+    if (count > 0) {
+      start(count);
+      {
+        std::lock_guard<std::mutex> started(start_mutex_);
+        waiting_ -= count;  // the first `count` to claim a place take them
+      }
+      job_ = job;
+      context_ = context;
+      pending_.store(count, std::memory_order_relaxed);
+      const unsigned generation = generation_.load(std::memory_order_relaxed) + 1;
+      places_.store(uint64_t{generation} << 32 | static_cast<uint32_t>(count), std::memory_order_release);
+      generation_.store(generation, std::memory_order_release);
+      generation_.notify_all();
+    }
+    job(context);
+    for (int left = pending_.load(std::memory_order_acquire); left != 0;) left = wait_for_change(pending_, left);
+  }
+
+ private:
+  void loop(unsigned seen) {
+    for (;;) {
+      seen = wait_for_change(generation_, seen);
+      // A place in render `seen`, if one is left (more helpers may be
+      // waiting than it takes); a later render's places are taken after
+      // its generation is seen.
+      uint64_t places = places_.load(std::memory_order_acquire);
+      while (places >> 32 == seen && static_cast<uint32_t>(places) != 0 &&
+             !places_.compare_exchange_weak(places, places - 1, std::memory_order_acq_rel))
+        ;
+      if (places >> 32 != seen || static_cast<uint32_t>(places) == 0) continue;
+      job_(context_);
+      if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) pending_.notify_one();
+      return;
+    }
+  }
+
+  std::mutex start_mutex_, run_mutex_;
+  int waiting_ = 0;  // helpers started and not yet given a place
+  // The current render, written before generation_ moves on.
+  Job job_ = nullptr;
+  void* context_ = nullptr;
+  std::atomic<unsigned> generation_{0};
+  // The current render's generation (high half) and its places not yet
+  // taken (low half), so that a place is taken in one step.
+  std::atomic<uint64_t> places_{0};
+  std::atomic<int> pending_{0};  // helpers still on the current render
+};
+
+Helpers& helpers() {
+  // Never destroyed: a helper waiting at exit for a render that does not
+  // come holds on to it.
+  static Helpers* pool = new Helpers;
+  return *pool;
+}
+
+// Rows handed out at a time at most: a run of rows goes to the file with
+// one write, which costs a fifth of writing its rows one by one.
+constexpr std::size_t kRunBytes = 64 * 1024;
+
+struct RowJob {
+  const PreparedScene& scene;
+  RgbaImage& image;
+  LiveWindow* window;
+  const std::atomic<bool>* stop;
+  RowFileWriter* file;
+  WorkProgress* progress;
+  int threads;
+  bool keep, live;
+  std::size_t row_bytes;
+  int run_rows;  // rows per hand-out at most
+  std::atomic<int> next{0};
+
+  static void run(void* context) noexcept { static_cast<RowJob*>(context)->rows(); }
+
+  // The next rows to render, `count` of them from the one returned (-1:
+  // none left). Runs shrink to single rows as the image nears its end,
+  // so that the threads finish within a row of each other.
+  int take(int& count) {
+    int y = next.load(std::memory_order_relaxed);
+    for (;;) {
+      const int left = scene.height - y;
+      if (left <= 0) return -1;
+      count = std::clamp(left / (4 * threads), 1, run_rows);
+      if (next.compare_exchange_weak(y, y + count, std::memory_order_relaxed)) return y;
+    }
+  }
+
+  void rows() {
+    // The file's rows on the thread's own stack: nothing to allocate
+    // (a helper's first allocation sets up a heap of its own) or to give
+    // back (unmapping memory that two threads have used interrupts both)
+    // but for rows wider than a run.
+    alignas(64) uint8_t stack_rows[kRunBytes];
+    std::unique_ptr<uint8_t[]> wide_rows;
+    uint8_t* own = stack_rows;
+    if (file != nullptr && row_bytes > kRunBytes) {
+      wide_rows = std::make_unique_for_overwrite<uint8_t[]>(row_bytes);
+      own = wide_rows.get();
+    }
+    for (int y0, count; (y0 = take(count)) >= 0;) {
+      uint8_t* run = keep ? image.rgba.data() + static_cast<std::size_t>(y0) * row_bytes : own;
+      for (int i = 0; i < count; ++i) {
+        if (stop != nullptr && stop->load(std::memory_order_acquire)) return;
+        uint8_t* row = run + static_cast<std::size_t>(i) * row_bytes;
+        scene.render_row(y0 + i, row);
+        if (live) window->row_rgba(y0 + i, row);
+        if (progress != nullptr) progress->add();
+      }
+      if (file == nullptr) continue;
+      // The file's conversion is done in place: a kept image is copied first.
+      if (run != own) std::memcpy(own, run, static_cast<std::size_t>(count) * row_bytes);
+      file->rows(y0, count, own);
+    }
+  }
+};
+
+}  // namespace
+
+void start_row_threads(int threads) { helpers().start(minrt_thread_count(threads, INT32_MAX) - 1); }
 
 int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveWindow* window,
                 const std::atomic<bool>* stop, RowFileWriter* file, WorkProgress* progress) {
@@ -22,22 +204,9 @@ int render_rows(const PreparedScene& scene, int threads, RgbaImage& image, LiveW
   if (keep) image.rgba.assign(row_bytes * scene.height, 0);
   else image.rgba.clear();
   if (live) window->begin(scene.width, scene.height);
-  std::atomic<int> next{0};
-  auto work = [&] {
-    std::vector<uint8_t> own(keep ? 0 : row_bytes);
-    for (int y; (y = next.fetch_add(1, std::memory_order_relaxed)) < scene.height;) {
-      if (stop != nullptr && stop->load(std::memory_order_acquire)) return;
-      uint8_t* row = keep ? image.rgba.data() + static_cast<std::size_t>(y) * row_bytes : own.data();
-      scene.render_row(y, row);
-      if (live) window->row_rgba(y, row);
-      if (file != nullptr) file->row(y, row);
-      if (progress != nullptr) progress->add();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < n; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  const int run_rows = static_cast<int>(std::max<std::size_t>(1, kRunBytes / std::max<std::size_t>(row_bytes, 1)));
+  RowJob job{scene, image, window, stop, file, progress, n, keep, live, row_bytes, run_rows};
+  helpers().run(n - 1, &RowJob::run, &job);
   return n;
 }
 

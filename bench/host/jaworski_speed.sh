@@ -3,26 +3,32 @@
 # built by hand outside this repository: pass its binary) on the issue's scene:
 # 640x480, 20 spheres, a mirror floor, 2 lights, ray depth 4
 # (bench/host/make_jaworski_scene.py).
-#   bench/host/jaworski_speed.sh [--runs N] [--minrt BINARY] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]
+#   bench/host/jaworski_speed.sh [--runs N] [--minrt BINARY] [--fifo] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]
 # e.g. bench/host/jaworski_speed.sh /work/ext/jaworski/ray-tracer +RTS -N -RTS
 # Checks first that both write the same BMP, byte for byte; then runs minrt on
 # one thread, minrt on every core and the original in turn, N times each,
-# and prints the medians of the wall and CPU times (user + system, from
-# bash's time), the ratios to the original and what every core gives over
-# one thread. --minrt: the minrt to measure (default build/release/host/minrt).
-# The load average is printed before and after the runs: the cores' gain is
-# a wall-time figure and means something only on an idle machine (load
-# well under 1); on a loaded one the CPU times are the steadier measure, a
-# short run's wall time being mostly waiting for a core.
+# and prints the medians of the wall and CPU times (user + system of the
+# process, to the microsecond), the ratios to the original and what every
+# core gives over one thread. --minrt: the minrt to measure (default
+# build/release/host/minrt). The load average is printed before and after
+# the runs: the cores' gain is a wall-time figure and means something only
+# on an idle machine (load well under 1); on a loaded one a short run's
+# wall time is mostly waiting for a core. --fifo runs minrt (not the
+# original) at real-time priority (SCHED_FIFO 10, which needs root or
+# CAP_SYS_NICE), ahead of every ordinary process: the figures of an idle
+# machine on a busy one, as far as the other processes' use of the caches
+# and of the host allows.
 . "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=7
 minrt=$root/build/release/host/minrt
-usage() { echo "usage: $0 [--runs N] [--minrt BINARY] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2; exit 2; }
+fifo=0
+usage() { echo "usage: $0 [--runs N] [--minrt BINARY] [--fifo] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2; exit 2; }
 while (($#)); do
   case $1 in
     --runs) [[ $# -ge 2 ]] || usage; runs=$2; shift 2 ;;
+    --fifo) fifo=1; shift ;;
     --minrt) [[ $# -ge 2 ]] || usage; minrt=$2; shift 2 ;;
     *) break ;;
   esac
@@ -49,47 +55,60 @@ if ! cmp -s "$work/original.bmp" "$work/minrt.bmp"; then
 fi
 echo "same BMP: sha256 $(sha256sum "$work/minrt.bmp" | cut -c1-16)... ($(stat -c %s "$work/minrt.bmp") bytes)"
 
-# command... ; prints "wall cpu" seconds (cpu: user + system), to the millisecond
-seconds() {
-  local t TIMEFORMAT='%3R %3U %3S'
-  t=$( { time "$@" >/dev/null 2>/dev/null; } 2>&1)
-  awk '{printf "%.3f %.3f\n", $1, $2 + $3}' <<<"$t"
-}
-median() { sort -g | awk '{a[NR]=$1} END{print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
+# The runs, interleaved: each program's wall time from its start to its
+# end as the parent sees it, its CPU time from its own rusage.
+python3 - "$runs" "$fifo" "$minrt" "$work" "$original" "${original_opts[@]}" <<'PY'
+import os, statistics, subprocess, sys, time
 
-load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-declare -A wall cpu
-names=(one all theirs)
-for ((i = 0; i < runs; i++)); do
-  for name in "${names[@]}"; do
-    case $name in
-      one) r=$(seconds "$minrt" -q --threads 1 -o "$work/a.bmp" "$work/scene.txt") ;;
-      all) r=$(seconds "$minrt" -q -o "$work/b.bmp" "$work/scene.txt") ;;
-      theirs) r=$(seconds "$original" "${original_opts[@]}" -o "$work/c.bmp" "$work/scene.txt") ;;
-    esac
-    wall[$name]+="${r% *} "
-    cpu[$name]+="${r#* } "
-  done
-done
-med() { tr ' ' '\n' <<<"$1" | grep . | median; }
-cpu_model=$(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo)
-printf 'cpu: %s, %s cores; load average %s before the runs, %s after\n' "$cpu_model" "$(nproc)" "$load_before" \
-  "$(cut -d' ' -f1-3 /proc/loadavg)"
-printf '640x480, 20 spheres, 2 lights, ray depth 4; medians of %d interleaved runs (seconds)\n' "$runs"
-printf '  %-26s %8s %8s   %s\n' program wall cpu 'wall times'
-label() {
-  case $1 in
-    one) echo "minrt, 1 thread" ;;
-    all) echo "minrt, $(nproc) threads" ;;
-    theirs) echo "original ${original_opts[*]:-}" ;;
-  esac
+runs, fifo, minrt, work, original = int(sys.argv[1]), sys.argv[2] == "1", sys.argv[3], sys.argv[4], sys.argv[5]
+original_opts = sys.argv[6:]
+scene = os.path.join(work, "scene.txt")
+programs = {
+    "one": ("minrt, 1 thread", [minrt, "-q", "--threads", "1", "-o", os.path.join(work, "a.bmp"), scene], fifo),
+    "all": (f"minrt, {os.cpu_count()} threads", [minrt, "-q", "-o", os.path.join(work, "b.bmp"), scene], fifo),
+    "theirs": ("original " + " ".join(original_opts), [original] + original_opts + ["-o", os.path.join(work, "c.bmp"), scene], False),
 }
-for name in "${names[@]}"; do
-  printf '  %-26s %8.3f %8.3f   [%s]\n' "$(label "$name")" "$(med "${wall[$name]}")" "$(med "${cpu[$name]}")" "${wall[$name]% }"
-done
-awk -v tw="$(med "${wall[theirs]}")" -v tc="$(med "${cpu[theirs]}")" \
-  -v ow="$(med "${wall[one]}")" -v oc="$(med "${cpu[one]}")" -v aw="$(med "${wall[all]}")" \
-  -v ac="$(med "${cpu[all]}")" \
-  'BEGIN{printf "  ratio, wall: original / minrt 1 thread %.1fx, / minrt all cores %.1fx\n", tw / ow, tw / aw;
-         printf "  ratio, cpu:  original / minrt 1 thread %.1fx\n", tc / oc;
-         printf "  all cores / 1 thread, wall: %.2fx (all cores use %.2fx the cpu)\n", ow / aw, ac / oc}'
+
+def ordinary():
+    os.sched_setscheduler(0, os.SCHED_OTHER, os.sched_param(0))
+
+def measure(args, rt):
+    start = time.perf_counter()
+    child = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                             preexec_fn=None if rt or not fifo else ordinary)
+    _, status, usage = os.wait4(child.pid, 0)
+    wall = time.perf_counter() - start
+    if status != 0:
+        sys.exit(f"{args[0]} failed (status {status})")
+    return wall, usage.ru_utime + usage.ru_stime
+
+if fifo:
+    # This runner too, so that it sees minrt's end at once; the original
+    # runs at the ordinary priority.
+    try:
+        os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(10))
+    except PermissionError as e:
+        sys.exit(f"--fifo: cannot run at real-time priority ({e})")
+load_before = open("/proc/loadavg").read().split()[:3]
+wall = {k: [] for k in programs}
+cpu = {k: [] for k in programs}
+for _ in range(runs):
+    for name, (_, args, rt) in programs.items():
+        w, c = measure(args, rt)
+        wall[name].append(w)
+        cpu[name].append(c)
+load_after = open("/proc/loadavg").read().split()[:3]
+model = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
+print(f"cpu: {model}, {os.cpu_count()} cores; load average {' '.join(load_before)} before the runs, "
+      f"{' '.join(load_after)} after{'; minrt at SCHED_FIFO' if fifo else ''}")
+print(f"640x480, 20 spheres, 2 lights, ray depth 4; medians of {runs} interleaved runs (seconds)")
+print(f"  {'program':26s} {'wall':>8s} {'cpu':>8s}   wall times (ms)")
+med = {k: (statistics.median(wall[k]), statistics.median(cpu[k])) for k in programs}
+for name, (label, _, _) in programs.items():
+    times = " ".join(f"{w * 1000:.1f}" for w in wall[name])
+    print(f"  {label:26s} {med[name][0]:8.4f} {med[name][1]:8.4f}   [{times}]")
+(ow, oc), (aw, ac), (tw, tc) = med["one"], med["all"], med["theirs"]
+print(f"  ratio, wall: original / minrt 1 thread {tw / ow:.1f}x, / minrt all cores {tw / aw:.1f}x")
+print(f"  ratio, cpu:  original / minrt 1 thread {tc / oc:.1f}x")
+print(f"  all cores / 1 thread, wall: {ow / aw:.2f}x (all cores use {ac / oc:.2f}x the cpu)")
+PY
