@@ -268,8 +268,10 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   uint32_t discount = 0;      // stall not charged at run_start (entered by a jump)
   bool discounted = false;    // run_start was entered by a jump
   intptr_t slot_bias = 0, enter_bias = 0, leave_bias = 0;
+  bool static_branches = false;  // branch cycles come from the slots (BlockCosts)
   if constexpr (Mode == 1) {
     if (costs_.built_for() != model_) costs_.build(code_, model);
+    static_branches = costs_.static_branches();
     slot_bias = reinterpret_cast<char*>(costs_.slots()) - reinterpret_cast<char*>(base);
     enter_bias = reinterpret_cast<char*>(costs_.enters()) - reinterpret_cast<char*>(base);
     leave_bias = reinterpret_cast<char*>(costs_.leaves()) - reinterpret_cast<char*>(base);
@@ -365,7 +367,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define BRANCH_THEN(cond, cont)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
-    if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0);  \
+    if constexpr (Mode == 1) {                                         \
+      if (!static_branches) MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0); \
+      else if (taken) CYC += static_cast<uint64_t>(int64_t{SLOT(ip).taken});  \
+    } else if constexpr (Timed) {                                      \
+      MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0);               \
+    }                                                                  \
     if (taken) JUMP(ip + ip->imm);                                     \
     NEXT_THEN(cont);                                                            \
   } while (0)
@@ -833,8 +840,10 @@ fault:
   stop.pc = PC_OF(ip);
 out:
   if constexpr (Mode == 1) {
+    uint32_t last = BlockCosts::kNoEntry;
     if (ip != run_start) {
       ++LEAVES(ip - 1);
+      last = static_cast<uint32_t>(ip - 1 - base);
       resume_pc_ = PC_OF(ip);
     } else {
       // Nothing of this run retired: undo its entry.
@@ -842,7 +851,7 @@ out:
       CYC += discount;
       if (ip != start_ip) resume_pc_ = ~0u;
     }
-    costs_.fold(code_, code_mem, model);
+    costs_.fold(code_, code_mem, model, last);
   }
   hart_.pc = PC_OF(ip);
   SYNC();  // ip is not retired: the count runs up to it
