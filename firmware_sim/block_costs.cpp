@@ -37,6 +37,11 @@ BlockCosts::~BlockCosts() {
 void BlockCosts::set(DecodeCache& code, const CycleModel& model, uint32_t index) {
   const Entry* e = code.entries();
   CostSlot& s = slots_[index];
+  // The sentinel past the end of code memory never retires (no counts).
+  if (index + 1 < count_) {
+    if (index < span_lo_) span_lo_ = index;
+    if (index > span_hi_) span_hi_ = index;
+  }
   const bool stall = index > 0 && e[index - 1].op != 0 && model.load_use(e[index - 1], e[index]);
   s.stall = static_cast<uint16_t>(stall ? model.load_use_stall() : 0);
   s.stalls = stall;
@@ -84,7 +89,8 @@ void BlockCosts::update(DecodeCache& code, const CycleModel& model, uint32_t ind
 void BlockCosts::fold(DecodeCache& code, const uint8_t* code_mem, CycleModel& model, uint32_t last) {
   const Entry* e = code.entries();
   uint64_t running = 0, stalls = 0, branches = 0, mispredicts = 0;
-  for (uint32_t i = 0; i < count_; ++i) {
+  // Runs start and end only at entries that were decoded, so have slots.
+  for (uint32_t i = span_lo_; i <= span_hi_ && i < count_; ++i) {
     if (!enters_[i] && !running) continue;
     running += enters_[i];
     if (running) {

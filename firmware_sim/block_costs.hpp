@@ -55,6 +55,7 @@ class BlockCosts {
 
   const CycleModel* model_ = nullptr;
   bool static_branches_ = false;
+  uint32_t span_lo_ = UINT32_MAX, span_hi_ = 0;  // entries set() has visited
   uint32_t count_ = 0;
   CostSlot* slots_ = nullptr;
   uint64_t* enters_ = nullptr;
