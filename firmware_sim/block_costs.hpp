@@ -15,10 +15,10 @@
 namespace fwsim {
 
 struct CostSlot {
-  uint32_t cost;       // latency + stall
+  uint32_t cost;       // latency + stall (+ a branch's not-taken cycles, static_branches())
   uint16_t stall;      // load-use stall cycles included in cost (not charged when entered by a jump)
   uint8_t stalls;      // 1 when the entry suffers a load-use stall after its predecessor
-  uint8_t pad;
+  int8_t taken;        // a branch's taken cycles minus its not-taken cycles (static_branches())
 };
 static_assert(sizeof(CostSlot) == sizeof(Entry), "slots parallel the entries, same stride");
 
@@ -33,9 +33,17 @@ class BlockCosts {
   void build(DecodeCache& code, const CycleModel& model);
   // Entry `index` was (re)decoded: its slot and its successor's change.
   void update(DecodeCache& code, const CycleModel& model, uint32_t index);
-  // Adds the counted runs to the model's op and stall counts, then clears
-  // them. `code_mem` decodes entries no longer decoded (debugger changes).
-  void fold(DecodeCache& code, const uint8_t* code_mem, CycleModel& model);
+  // Adds the counted runs to the model's op and stall counts (and with
+  // static_branches() its branch and misprediction counts), then clears
+  // them. `code_mem` decodes entries no longer decoded (debugger changes);
+  // `last` is the entry the final run ended at (its leave is not a taken
+  // jump), kNoEntry when none.
+  static constexpr uint32_t kNoEntry = UINT32_MAX;
+  void fold(DecodeCache& code, const uint8_t* code_mem, CycleModel& model, uint32_t last);
+  // The slots include conditional branches' cycles: the model's predictor
+  // is static and the taken/not-taken difference fits CostSlot::taken. The
+  // loop then adds `taken` on a taken branch instead of calling the model.
+  bool static_branches() const { return static_branches_; }
 
   CostSlot* slots() { return slots_; }
   uint64_t* enters() { return enters_; }
@@ -46,6 +54,8 @@ class BlockCosts {
   void set(DecodeCache& code, const CycleModel& model, uint32_t index);
 
   const CycleModel* model_ = nullptr;
+  bool static_branches_ = false;
+  uint32_t span_lo_ = UINT32_MAX, span_hi_ = 0;  // entries set() has visited
   uint32_t count_ = 0;
   CostSlot* slots_ = nullptr;
   uint64_t* enters_ = nullptr;

@@ -86,6 +86,25 @@ class CycleModel {
   }
   uint32_t load_use_stall() const { return cfg_.load_use_stall; }
   void add_executions(uint8_t op, uint64_t n) { op_count_[op] += n; }
+  // With a static predictor a conditional branch's cycles depend only on
+  // its outcome and direction, so the block-costed loop charges them from
+  // pre-computed slots and the branch and misprediction counts are added
+  // afterwards from the per-entry execution and taken counts.
+  bool static_predictor() const {
+    return cfg_.predictor == PredictorKind::StaticNotTaken || cfg_.predictor == PredictorKind::BackwardTaken;
+  }
+  bool mispredicted(bool taken, bool backward) const {
+    const bool predicted_taken = cfg_.predictor == PredictorKind::BackwardTaken && backward;
+    return taken != predicted_taken;
+  }
+  uint64_t branch_cycles(bool taken, bool backward) const {
+    return uint64_t{taken ? cfg_.branch_taken : cfg_.branch_not_taken} +
+           (mispredicted(taken, backward) ? cfg_.mispredict_penalty : 0);
+  }
+  void add_branches(uint64_t n, uint64_t mispredicted) {
+    branches_ += n;
+    mispredicts_ += mispredicted;
+  }
   void add_load_use_stalls(uint64_t n) { load_use_stalls_ += n; }
 
   uint64_t op_count(Op op) const { return op_count_[static_cast<size_t>(op)]; }

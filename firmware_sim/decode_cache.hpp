@@ -52,6 +52,7 @@ class DecodeCache {
     self_jump_halts_ = self_jump_halts;
   }
   const IsaSpec& isa() const { return isa_; }
+  bool self_jump_halts() const { return self_jump_halts_; }
   // Load and store immediates are stored minus `ram_base` (interpreter.cpp).
   void set_ram_base(uint32_t ram_base) { ram_base_ = ram_base; }
   // Fills entry `index` from the instruction word at that position.

@@ -260,16 +260,34 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   // taken jump updates k with one subtraction and straight-line code pays
   // nothing for counting.
   static_assert(sizeof(Entry) == 8);
-  uint64_t k = 0 - reinterpret_cast<uint64_t>(ip);
+  // The plain loop keeps k in the cycle count's register, which it has no
+  // other use for: a taken jump then updates it without a stack load and
+  // store.
+  uint64_t k_timed = 0;
+#define K_VALUE() (Timed ? k_timed : static_cast<uint64_t>(CYC))
+#define K_SET(v)                      \
+  do {                                \
+    if constexpr (Timed) k_timed = (v); \
+    else CYC = (v);                   \
+  } while (0)
+  K_SET(0 - reinterpret_cast<uint64_t>(ip));
   // Block-costed timing (Mode 1): slots, enters and leaves parallel the
   // entries with the same stride, so each is `ip` plus a fixed distance.
   Entry* const start_ip = ip;
   Entry* run_start = ip;      // first entry of the current straight-line run
-  uint32_t discount = 0;      // stall not charged at run_start (entered by a jump)
-  bool discounted = false;    // run_start was entered by a jump
-  intptr_t slot_bias = 0, enter_bias = 0, leave_bias = 0;
+  // A run entered by a jump is not charged its first entry's stall (the
+  // slot's `stall`, subtracted on entry). Every run after the first was; the
+  // first is while k + run_start is 0 (any taken jump makes it the count).
+  bool start_discounted = false;
+#define DISCOUNTED() (start_discounted || K_VALUE() + reinterpret_cast<uint64_t>(run_start) != 0)
+  // The slots' distance is read by every instruction of the block-costed
+  // loop: pinned like `ram` (GCC otherwise may leave it in a stack slot).
+  FWSIM_PINNED(intptr_t, slot_bias, "r13") = 0;
+  intptr_t enter_bias = 0, leave_bias = 0;
+  bool static_branches = false;  // branch cycles come from the slots (BlockCosts)
   if constexpr (Mode == 1) {
     if (costs_.built_for() != model_) costs_.build(code_, model);
+    static_branches = costs_.static_branches();
     slot_bias = reinterpret_cast<char*>(costs_.slots()) - reinterpret_cast<char*>(base);
     enter_bias = reinterpret_cast<char*>(costs_.enters()) - reinterpret_cast<char*>(base);
     leave_bias = reinterpret_cast<char*>(costs_.leaves()) - reinterpret_cast<char*>(base);
@@ -281,9 +299,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     ++ENTERS(ip);
     // Resuming right after the previous run's last instruction: the stall
     // (if any) applies as in straight-line code.
-    discounted = resume_pc_ != hart_.pc;
-    discount = discounted ? SLOT(ip).stall : 0;
-    CYC -= discount;
+    start_discounted = resume_pc_ != hart_.pc;
+    if (start_discounted) CYC -= SLOT(ip).stall;
   }
   const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
   StopInfo stop;
@@ -298,7 +315,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     CYC = cycles_;               \
   } while (0)
 #define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
-#define RETIRED() ((k + reinterpret_cast<uint64_t>(ip)) >> 3)
+#define RETIRED() ((K_VALUE() + reinterpret_cast<uint64_t>(ip)) >> 3)
 #define NOW() (Timed ? CYC : start + RETIRED())
 #define SYNC()                                                 \
   do {                                                         \
@@ -308,6 +325,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define KEEP_PINNED()                                   \
   do {                                                  \
     FWSIM_KEEP(ram);                                    \
+    if constexpr (Mode == 1) FWSIM_KEEP(slot_bias);     \
   } while (0)
 #define DISPATCH()      \
   do {                  \
@@ -339,15 +357,13 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       ++LEAVES(ip);                                           \
       ++ENTERS(target);                                       \
       run_start = (target);                                   \
-      discounted = true;                                      \
-      discount = SLOT(run_start).stall;                       \
-      CYC -= discount;                                     \
+      CYC -= SLOT(run_start).stall;                           \
     }                                                         \
-    k = (done) - reinterpret_cast<uint64_t>(target);          \
+    K_SET((done) - reinterpret_cast<uint64_t>(target));       \
     ip = (target);                                            \
     if ((done) > limit8) goto limit_reached;                  \
   } while (0)
-#define DONE() (k + reinterpret_cast<uint64_t>(ip + 1))
+#define DONE() (K_VALUE() + reinterpret_cast<uint64_t>(ip + 1))
 #define JUMP(target)                          \
   do {                                        \
     STEP();                                   \
@@ -365,7 +381,12 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
 #define BRANCH_THEN(cond, cont)                                                   \
   do {                                                                 \
     const bool taken = (cond);                                         \
-    if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0);  \
+    if constexpr (Mode == 1) {                                         \
+      if (!static_branches) MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0); \
+      else if (taken) CYC += static_cast<uint64_t>(int64_t{SLOT(ip).taken});  \
+    } else if constexpr (Timed) {                                      \
+      MODEL_CALL(branch, PC_OF(ip), taken, ip->imm < 0);               \
+    }                                                                  \
     if (taken) JUMP(ip + ip->imm);                                     \
     NEXT_THEN(cont);                                                            \
   } while (0)
@@ -600,13 +621,10 @@ L_UNDECODED: {
   std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
   code_.fill(static_cast<uint32_t>(ip - base), word);
   if constexpr (Mode == 1) {
+    const uint64_t old_stall = SLOT(ip).stall;
     costs_.update(code_, model, static_cast<uint32_t>(ip - base));
     // A run entered here by a jump was discounted before the stall was known.
-    if (ip == run_start && discounted) {
-      CYC += discount;
-      discount = SLOT(ip).stall;
-      CYC -= discount;
-    }
+    if (ip == run_start && DISCOUNTED()) CYC = CYC + old_stall - SLOT(ip).stall;
   }
   DISPATCH();
 }
@@ -833,16 +851,18 @@ fault:
   stop.pc = PC_OF(ip);
 out:
   if constexpr (Mode == 1) {
+    uint32_t last = BlockCosts::kNoEntry;
     if (ip != run_start) {
       ++LEAVES(ip - 1);
+      last = static_cast<uint32_t>(ip - 1 - base);
       resume_pc_ = PC_OF(ip);
     } else {
       // Nothing of this run retired: undo its entry.
       --ENTERS(ip);
-      CYC += discount;
+      if (DISCOUNTED()) CYC += SLOT(ip).stall;
       if (ip != start_ip) resume_pc_ = ~0u;
     }
-    costs_.fold(code_, code_mem, model);
+    costs_.fold(code_, code_mem, model, last);
   }
   hart_.pc = PC_OF(ip);
   SYNC();  // ip is not retired: the count runs up to it
@@ -855,6 +875,9 @@ out:
 #undef CYC
 #undef NOW
 #undef RETIRED
+#undef K_VALUE
+#undef DISCOUNTED
+#undef K_SET
 #undef ENTER
 #undef SLOT
 #undef ENTERS

@@ -93,6 +93,24 @@ TEST_CASE("branch predictors: static, backward-taken, bimodal, gshare", "[cycle]
   CHECK(g < base + 99 * 10);
 }
 
+TEST_CASE("branch and misprediction counts, the last branch falling through to a trap", "[cycle]") {
+  // The loop's final, not-taken branch is the last instruction to retire
+  // (the ebreak after it traps): it must not count as taken.
+  struct Case {
+    const char* predictor;
+    uint64_t mispredicts;
+  };
+  for (const Case c : {Case{"static_not_taken", 99}, Case{"backward_taken", 1}, Case{"bimodal", 2}}) {
+    INFO(c.predictor);
+    Sim s({addi(1, 0, 100), addi(1, 1, -1), bne(1, 0, -4)});
+    CycleModel model(parse_cycle_model(std::string(kUnit) + "predictor=" + c.predictor + "\n", "test"));
+    s.m.set_cycle_model(&model);
+    REQUIRE(s.run().cause == fwsim::StopCause::Ebreak);
+    CHECK(model.branches() == 100u);
+    CHECK(model.mispredicts() == c.mispredicts);
+  }
+}
+
 TEST_CASE("data cache misses cost the miss penalty, LRU keeps the working set", "[cycle]") {
   // Two loads to the same line: 1 miss. Then 3 lines in a 2-way, 1-set cache:
   // a, b, a, c, b -> misses a, b, c, b (b was evicted by c as LRU).
