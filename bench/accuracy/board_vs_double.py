@@ -53,8 +53,9 @@ def read_bmp(data):
     return w, abs(h), bytes(out)
 
 
-def read_png(data):
-    """8-bit RGB or RGBA, non-interlaced PNG as RGB (alpha dropped)."""
+def read_png(data, alpha=False):
+    """8-bit RGB or RGBA, non-interlaced PNG as RGB (alpha dropped), or as
+    RGBA with alpha=True (255 where the file has none)."""
     pos, idat, w = 8, b"", 0
     while pos < len(data):
         n, kind = struct.unpack_from(">I4s", data, pos)
@@ -90,6 +91,8 @@ def read_png(data):
         prev = line
         for x in range(w):
             out += line[x * bpp:x * bpp + 3]
+            if alpha:
+                out.append(line[x * bpp + 3] if bpp == 4 else 255)
     return w, h, bytes(out)
 
 

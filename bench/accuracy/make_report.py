@@ -758,10 +758,12 @@ def main():
     w("- huge.sld shows that single precision cannot render scenes with coordinates around 1e6; "
       "nothing in the shims can fix that.\n")
 
-    # This section is bench/accuracy/board_vs_double.py's: kept as it was.
-    board = kept_section(os.path.join(args.root, "docs", "accuracy.md"), "## The board against double")
-    if board:
-        w(board)
+    # These sections are bench/accuracy/format_speed.py's (rewritten after this
+    # script by run.sh) and board_vs_double.py's: kept as they were.
+    for heading in ("## Speed against error, per format", "## The board against double"):
+        kept = kept_section(os.path.join(args.root, "docs", "accuracy.md"), heading)
+        if kept:
+            w(kept)
     w("## Regenerating\n")
     w("```sh\n" + args.command + "\n```\n")
     w("Without `--write-docs`, `bench/accuracy/run.sh` writes the same report into "
