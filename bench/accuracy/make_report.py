@@ -768,7 +768,9 @@ def main():
     w("```sh\n" + args.command + "\n```\n")
     w("Without `--write-docs`, `bench/accuracy/run.sh` writes the same report into "
       "`build/reports/accuracy` (or `--out DIR`) and leaves docs/ alone. It prints one "
-      "progress line per step on stderr.\n")
+      "progress line per step on stderr. With `--formats` it redoes only "
+      "[Speed against error, per format](#speed-against-error-per-format) (a few minutes; "
+      "that section ends with the command and time of its run).\n")
     reused = [isa for isa, (res, _) in firmware.items() if res and res["cached"]]
     w(f"This run took {elapsed:.0f} s of wall time on the development machine ({cpu_model()}, "
       f"{os.cpu_count()} cores) after the "
