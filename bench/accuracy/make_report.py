@@ -691,7 +691,9 @@ def main():
     w("- The x86 counts are the whole `accuracy-report --variant V` process (start-up, "
       "reading the scene, rendering, no file written), counted by `valgrind --tool=callgrind`. "
       "They are x86-64 instructions of a `-O3` host build and are not comparable with the "
-      "RV32 counts.\n")
+      "RV32 counts.")
+    w("- The other formats (CS418, Jaworski, miniRT, EASTRAY): "
+      "[Speed against error, per format](#speed-against-error-per-format).\n")
 
     # Speed against error: the host variants, the firmware, the FPU models.
     course_n = len(course)
