@@ -290,28 +290,29 @@ def main():
     elapsed = time.time() - start
     load_end = open("/proc/loadavg").read().split()[0]
     L = [SECTION, "",
-         "Each text format in every math variant minrt has for it (`--precision` and `--shims`: "
-         "the policies of docs/architecture.md, the same five for every format; float/portable+fma "
-         "exists only in accuracy-report, for SLD). **Error**: every scene of `shared/formats/<format>` "
-         "rendered by minrt against double/libm, at the size its file gives (miniRT: "
-         f"{MINIRT_ERROR_SIZE}, as in [the board against double](#the-board-against-double)); columns as "
-         "above, **px > 1** = pixels with a channel off by more than 1. For CS418 the channels are "
-         "SPEC.md's premultiplied RGBA (colour times alpha), **α ≠** counts pixels whose alpha differs, "
-         f"and **block PSNR** is SPEC.md's metric for its random scenes (aa, dof, roughness, gi): PSNR of "
-         f"the {CS418_BLOCK}x{CS418_BLOCK}-block averages, the lowest over those scenes. **Speed**: three "
-         "scenes per format, the format's heaviest on the board first (miniRT at "
+         "The text formats in every math variant minrt has for them (`--precision` and `--shims`: the "
+         "policies of docs/architecture.md, the same five for every format; float/portable+fma exists only "
+         "in accuracy-report, for SLD):", "",
+         "- **Error**: every scene of `shared/formats/<format>` rendered by minrt against double/libm, at "
+         f"the size its file gives (miniRT: {MINIRT_ERROR_SIZE}, as in "
+         "[the board against double](#the-board-against-double)). Columns as above; **px > 1** = pixels "
+         "with a channel off by more than 1. For CS418 the channels are SPEC.md's premultiplied RGBA "
+         "(colour times alpha), **α ≠** counts pixels whose alpha differs, and **block PSNR** is SPEC.md's "
+         f"metric for its random scenes (aa, dof, roughness, gi): the PSNR of {CS418_BLOCK}x{CS418_BLOCK}-"
+         "block averages, the lowest over those scenes.",
+         "- **Speed**, on three scenes per format, the format's heaviest on the board first (miniRT at "
          f"{MINIRT_SPEED_SIZE}): **x86-64 instructions** of the whole `minrt --threads 1 -n` process "
-         "(start-up, reading, rendering, no file written) counted by `valgrind --tool=callgrind`, "
-         "independent of the machine's load; **RV32** instructions and modelled cycles "
-         "(default cycle model) of the rv32imf firmware in `firmware-sim --stats --cycle-model default`, "
-         "sent the scene by `host-send --sim` over the raw protocol as the firmware tests do (textures "
-         "and EASTRAY's preprocessing on the host, the scene behind its byte count and CRC). The RV32 "
-         "counts include the firmware's UART polls while host-send's bytes arrive through the "
-         "pseudo-terminal, so they vary between runs by up to about 0.1% on a busy machine; the x86 "
-         "counts are exact (and kept in the work folder's callgrind cache while minrt and the scene "
-         "stay byte-identical). The "
-         "firmware computes float/portable only (with `fsqrt.s`: the same bits), so the other variants "
-         "have no RV32 figures. x86 and RV32 counts are not comparable with each other.", ""]
+         "(start-up, reading, rendering, no file written; the minrt of the build the command below names) "
+         "counted by `valgrind --tool=callgrind`: exact, whatever the machine's load, and kept in the work "
+         "folder's callgrind cache while minrt and the scene stay byte-identical.",
+         "- **RV32** instructions and modelled cycles of the rv32imf firmware, from "
+         "`firmware-sim --stats --cycle-model default`, the scene sent by `host-send --sim` over the raw "
+         "protocol as the firmware tests do (textures and EASTRAY's preprocessing on the host, the scene "
+         "behind its byte count and CRC). They include the firmware's UART polls while host-send's bytes "
+         "arrive through the pseudo-terminal, so they vary between runs by up to about 0.1% on a busy "
+         "machine. The firmware computes float/portable only (with `fsqrt.s`: the same bits), so the "
+         "other variants have no RV32 figures; **board = host** says whether its image equals minrt's "
+         "float/portable one. x86 and RV32 counts are not comparable with each other.", ""]
     plot_data = []
     for name, pattern, *_ in FORMATS:
         res = results[name]
@@ -348,7 +349,7 @@ def main():
                 points.append((v, t["ne"], hs))
         L += ["", "Per speed scene: x86-64 instructions per variant; RV32 of the firmware (float/portable).", "",
               "| scene | size | " + " | ".join(v for v, _ in VARIANTS) + " | RV32 instructions | RV32 cycles | "
-              "board = host float/portable |",
+              "board = host |",
               "|---|---|" + "---:|" * len(VARIANTS) + "---:|---:|---|"]
         for r in sp:
             b = r["board"]
