@@ -117,6 +117,9 @@ def render(minrt, scene, extra, variant, out):
     return out if r.returncode == 0 else None
 
 
+CACHE_HITS = []  # the callgrind counts this run took from the cache
+
+
 def host_instructions(minrt, scene, extra, variant, cache_dir):
     """x86-64 instructions of the whole minrt process (read, render, no file written).
     Exact, so kept in cache_dir under a hash of minrt, the scene, the files beside it
@@ -128,6 +131,7 @@ def host_instructions(minrt, scene, extra, variant, cache_dir):
     h.update(" ".join(extra + variant).encode())
     cached = os.path.join(cache_dir, h.hexdigest()[:32] + ".ir")
     if os.path.exists(cached):
+        CACHE_HITS.append(cached)
         return int(open(cached).read())
     r = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", minrt, "-q", "-n",
                         "--threads", "1", scene] + extra + variant,
@@ -397,8 +401,9 @@ def main():
     L += ["", "![speed against error, per format](accuracy/formats-speed-vs-error.png)", "",
           f"Made by `{args.command}` in {elapsed:.0f} s of wall time on the {cpu_model()} "
           f"({os.cpu_count()} cores shared with other work: one-minute load average {load_start} at the start, "
-          f"{load_end} at the end; {args.jobs} runs at a time). The instruction counts do not depend on the "
-          "load.", "", ""]
+          f"{load_end} at the end; {args.jobs} runs at a time; {len(CACHE_HITS)} of "
+          f"{sum(1 for k in jobs if k[2].startswith('callgrind'))} callgrind counts came from the cache). "
+          "The instruction counts do not depend on the load.", "", ""]
     if failures:
         L[-1:-1] = ["Failed: " + "; ".join(failures) + ".", ""]
     plots.formats_speed_vs_error(plot_data, REF, os.path.join(figdir, "formats-speed-vs-error.png"))
