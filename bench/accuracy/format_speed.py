@@ -164,6 +164,22 @@ def board_counts(host_send, sim, elf, scene, extra, out, work):
     return {"instructions": int(ins.group(1)), "cycles": int(cyc.group(1)), "image": out}
 
 
+def build_kind(minrt):
+    """CMAKE_BUILD_TYPE and MINRT_PGO of the build minrt comes from (its CMakeCache.txt)."""
+    cache = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(minrt))), "CMakeCache.txt")
+    found = {}
+    try:
+        for line in open(cache):
+            m = re.match(r"(CMAKE_BUILD_TYPE|MINRT_PGO):\w+=(.*)", line.strip())
+            if m:
+                found[m.group(1)] = m.group(2)
+    except OSError:
+        return "a build without CMakeCache.txt"
+    return (f"a {found.get('CMAKE_BUILD_TYPE') or 'default'} build "
+            + ("with" if found.get("MINRT_PGO", "").upper() in ("ON", "1", "TRUE") else "without")
+            + " profile-guided optimisation")
+
+
 def cpu_model():
     for line in open("/proc/cpuinfo"):
         if line.startswith("model name"):
@@ -306,7 +322,7 @@ def main():
          "block averages, the lowest over those scenes.",
          "- **Speed**, on three scenes per format, the format's heaviest on the board first (miniRT at "
          f"{MINIRT_SPEED_SIZE}): **x86-64 instructions** of the whole `minrt --threads 1 -n` process "
-         "(start-up, reading, rendering, no file written; the minrt of the build the command below names) "
+         f"(start-up, reading, rendering, no file written; minrt from {build_kind(args.minrt)}) "
          "counted by `valgrind --tool=callgrind`: exact, whatever the machine's load, and kept in the work "
          "folder's callgrind cache while minrt and the scene stay byte-identical.",
          "- **RV32** instructions and modelled cycles of the rv32imf firmware, from "
