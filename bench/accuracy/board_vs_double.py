@@ -25,6 +25,7 @@ import zlib
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools", "images"))
 from image_files import parse_p6, write_png  # noqa: E402
+from safe_output import write_atomically  # noqa: E402
 SECTION = "## The board against double"
 MINIRT_SIZE = "800x600"
 # Format, scene pattern under formats/, extra minrt arguments, output extension.
@@ -53,8 +54,9 @@ def read_bmp(data):
     return w, abs(h), bytes(out)
 
 
-def read_png(data):
-    """8-bit RGB or RGBA, non-interlaced PNG as RGB (alpha dropped)."""
+def read_png(data, alpha=False):
+    """8-bit RGB or RGBA, non-interlaced PNG as RGB (alpha dropped), or as
+    RGBA with alpha=True (255 where the file has none)."""
     pos, idat, w = 8, b"", 0
     while pos < len(data):
         n, kind = struct.unpack_from(">I4s", data, pos)
@@ -90,6 +92,8 @@ def read_png(data):
         prev = line
         for x in range(w):
             out += line[x * bpp:x * bpp + 3]
+            if alpha:
+                out.append(line[x * bpp + 3] if bpp == 4 else 255)
     return w, h, bytes(out)
 
 
@@ -153,6 +157,10 @@ def main():
     ap.add_argument("--minrt", default=os.path.join(ROOT, "build/release/host/minrt"))
     ap.add_argument("--shared", default=os.path.join(ROOT, "../shared"))
     args = ap.parse_args()
+    command = "bench/accuracy/board_vs_double.py" + "".join(
+        f" --{k} {os.path.relpath(v, ROOT)}" for k, v in (("minrt", args.minrt), ("shared", args.shared))
+        if os.path.abspath(v) != os.path.abspath(ap.get_default(k)))
+    args.minrt = os.path.abspath(args.minrt)  # minrt runs in the render folder
     start = time.time()
     results = {}  # format -> [(scene, pixels, ne, gt1, gt8, max, far, double, float, w, h)]
     refused = {}
@@ -208,8 +216,8 @@ def main():
         lines += ["", f"The most pixels off by more than 1: {worst[0]}, {worst[3]} of {worst[1]} (double left, "
                   "float right, each such pixel in a magenta square):", "",
                   "![the worst miniRT scene, double and float](accuracy/minirt-worst.png)"]
-    lines += ["", f"Made by `bench/accuracy/board_vs_double.py` ({time.time() - start:.0f} s on the {cpu}, 2 "
-              "cores shared with other work).", ""]
+    lines += ["", f"Made by `{command}` ({time.time() - start:.0f} s on the {cpu}, 2 "
+              "cores shared with other work).", "", ""]
     section = "\n".join(lines)
     path = os.path.join(ROOT, "docs/accuracy.md")
     with open(path) as fdoc:
@@ -221,10 +229,7 @@ def main():
     else:
         a = doc.index("## Regenerating")
         doc = doc[:a] + section + "\n" + doc[a:]
-    tmp = path + ".tmp"
-    with open(tmp, "w") as fdoc:
-        fdoc.write(doc)
-    os.replace(tmp, path)
+    write_atomically(path, doc)
     print(f"wrote {path} and docs/accuracy/minirt-worst.png", file=sys.stderr)
 
 

@@ -691,7 +691,9 @@ def main():
     w("- The x86 counts are the whole `accuracy-report --variant V` process (start-up, "
       "reading the scene, rendering, no file written), counted by `valgrind --tool=callgrind`. "
       "They are x86-64 instructions of a `-O3` host build and are not comparable with the "
-      "RV32 counts.\n")
+      "RV32 counts.")
+    w("- The other formats (CS418, Jaworski, miniRT, EASTRAY): "
+      "[Speed against error, per format](#speed-against-error-per-format).\n")
 
     # Speed against error: the host variants, the firmware, the FPU models.
     course_n = len(course)
@@ -758,15 +760,19 @@ def main():
     w("- huge.sld shows that single precision cannot render scenes with coordinates around 1e6; "
       "nothing in the shims can fix that.\n")
 
-    # This section is bench/accuracy/board_vs_double.py's: kept as it was.
-    board = kept_section(os.path.join(args.root, "docs", "accuracy.md"), "## The board against double")
-    if board:
-        w(board)
+    # These sections are bench/accuracy/format_speed.py's (rewritten after this
+    # script by run.sh) and board_vs_double.py's: kept as they were.
+    for heading in ("## Speed against error, per format", "## The board against double"):
+        kept = kept_section(os.path.join(args.root, "docs", "accuracy.md"), heading)
+        if kept:
+            w(kept)
     w("## Regenerating\n")
     w("```sh\n" + args.command + "\n```\n")
     w("Without `--write-docs`, `bench/accuracy/run.sh` writes the same report into "
       "`build/reports/accuracy` (or `--out DIR`) and leaves docs/ alone. It prints one "
-      "progress line per step on stderr.\n")
+      "progress line per step on stderr. With `--formats` it redoes only "
+      "[Speed against error, per format](#speed-against-error-per-format) (a few minutes; "
+      "that section ends with the command and time of its run).\n")
     reused = [isa for isa, (res, _) in firmware.items() if res and res["cached"]]
     w(f"This run took {elapsed:.0f} s of wall time on the development machine ({cpu_model()}, "
       f"{os.cpu_count()} cores) after the "

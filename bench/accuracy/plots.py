@@ -231,3 +231,46 @@ def fpu_gallery(scenes, path):
         bar.ax.tick_params(labelsize=7)
         bar.set_label("channel error", fontsize=7)
     save(fig, path)
+
+
+def formats_speed_vs_error(formats, reference, path):
+    """One panel per format: each variant's pixels differing from the reference
+    (x) against its x86-64 instructions on the format's speed scenes (y).
+
+    formats: [(format, [(variant, pixels differing, instructions)], board cycles or
+    None, speed scene names)]."""
+    cols = 2
+    rows = (len(formats) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(10, 3.4 * rows), layout="constrained", squeeze=False)
+    variants = []
+    for ax, (name, points, cycles, scenes) in zip(axes.flat, formats):
+        for variant, x, y in points:
+            if variant not in variants:
+                variants.append(variant)
+            ax.scatter([x], [y / 1e6], marker=MARKERS[variants.index(variant)], s=45,
+                       color=f"C{variants.index(variant)}", label=variant)
+        top = max((x for _, x, _ in points), default=0)
+        ax.set_xscale("symlog", linthresh=10)
+        ax.set_xlim(-1, max(20, top * 1.6))
+        ys = [y / 1e6 for _, _, y in points]
+        if ys:
+            pad = max(0.05 * (max(ys) - min(ys)), 0.02 * max(ys))
+            ax.set_ylim(min(ys) - pad, max(ys) + pad)
+        ax.yaxis.set_major_locator(MaxNLocator(5))
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _p: f"{v:,.0f}" if v >= 100 else f"{v:,.1f}"))
+        ax.set_xlabel(f"pixels differing from {reference}\n(every scene of the format)", fontsize=8)
+        ax.set_ylabel("x86-64 million instructions\n(speed scenes, callgrind)", fontsize=8)
+        ax.tick_params(labelsize=8)
+        board = f"; board: {cycles / 1e6:,.0f} M RV32 cycles" if cycles else ""
+        ax.set_title(f"{name}{board}", fontsize=9)
+        ax.grid(alpha=0.3)
+    for ax in list(axes.flat)[len(formats):]:
+        ax.set_axis_off()
+    handles = {}
+    for ax in axes.flat:
+        for h, label in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(label, h)
+    if handles:
+        axes[0][-1].legend(list(handles.values()), list(handles.keys()), fontsize=8, loc="upper left",
+                           bbox_to_anchor=(1.02, 1.0), frameon=False)
+    save(fig, path)

@@ -15,9 +15,14 @@
 # counts are cached in $BUILD/accuracy-work/firmware-cache (keyed by a hash of
 # the simulator, ELF, scene, arguments and cycle/FPU model; the soft-float run
 # takes minutes, the FPU-model renders several).
-# Needs Debian's python3-numpy and python3-matplotlib (run with /usr/bin/python3).
+# Then (bench/accuracy/format_speed.py) the text formats' speed against error:
+# every scene of ../shared/formats/{cs418,jaworski,minirt/valid,eastray} in
+# every variant, three scenes per format under callgrind and on the rv32imf
+# firmware (host-send --sim); --formats does only this part (a few minutes),
+# replacing its section of the output folder's accuracy.md.
+# Needs Debian's python3-numpy, python3-matplotlib and python3-pil (run with /usr/bin/python3).
 # Prints one progress line per step on stderr (step n of N, elapsed seconds).
-#   [ENV=VALUE ...] bench/accuracy/run.sh [--out DIR | --write-docs]   (several minutes)
+#   [ENV=VALUE ...] bench/accuracy/run.sh [--formats] [--out DIR | --write-docs]   (several minutes)
 . "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -30,6 +35,7 @@ while [ $# -gt 0 ]; do
   case $1 in
     --out) out=${2:?$1 needs a folder}; shift 2 ;;
     --write-docs) out=$root/docs; write_docs=1; shift ;;
+    --formats) formats_only=1; shift ;;
     *) echo "run.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -41,16 +47,33 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   fi
 fi
-echo "accuracy: building accuracy-report in $build" >&2
-cmake --build "$build" --target accuracy-report -j "$jobs"
 mkdir -p "$out"
-
 command=bench/accuracy/run.sh
 for var in BUILD MINRT_SHARED_DIR FW_BUILD JOBS FIRMWARE_ISAS NO_CACHE; do
   eval "val=\${$var:-}"
   [ -n "$val" ] && command="$var=$val $command"
 done
+[ -n "${formats_only:-}" ] && command="$command --formats"
 [ -n "${write_docs:-}" ] && command="$command --write-docs"
+
+# The text formats' part: minrt and host-send from $build, the simulator and
+# the rv32imf firmware from $fw_build.
+formats() {
+  echo "accuracy: building minrt and host-send in $build, firmware-sim and the firmware in $fw_build" >&2
+  cmake --build "$build" --target minrt host-send -j "$jobs"
+  cmake --build "$fw_build" --target firmware-sim firmware-rv32imf -j "$jobs"
+  /usr/bin/python3 "$root/bench/accuracy/format_speed.py" --minrt "$build/host/minrt" \
+    --host-send "$build/host/send/host-send" --sim "$fw_build/firmware_sim/firmware-sim" \
+    --elf "$fw_build/firmware/minrt-rv32imf.elf" --shared "$shared" --work "$build/accuracy-work/formats" \
+    --doc "$out/accuracy.md" --jobs "$jobs" --command "$command"
+}
+if [ -n "${formats_only:-}" ]; then
+  formats
+  exit
+fi
+
+echo "accuracy: building accuracy-report in $build" >&2
+cmake --build "$build" --target accuracy-report -j "$jobs"
 set -- --tool "$build/tools/accuracy/accuracy-report" --root "$root" --shared "$shared" \
   --work "$build/accuracy-work" --out "$out" --jobs "$jobs" --command "$command" \
   --firmware-isas "${FIRMWARE_ISAS:-rv32imf,rv32im}"
@@ -60,4 +83,7 @@ if [ -x "$fw_build/firmware_sim/firmware-sim" ]; then
 else
   echo "run.sh: no $fw_build/firmware_sim/firmware-sim: firmware counts left out" >&2
 fi
-exec /usr/bin/python3 "$root/bench/accuracy/make_report.py" "$@"
+status=0
+/usr/bin/python3 "$root/bench/accuracy/make_report.py" "$@" || status=$?
+formats || status=$?
+exit $status
