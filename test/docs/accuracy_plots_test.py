@@ -58,9 +58,15 @@ try:
         {"host_x": "pixels differing", "host_y": "x86-64 million instructions", "fw_x": "million cycles",
          "fpu_x": "pixels differing", "fpu_y": "million cycles", "fpu_title": "FPU models"},
         os.path.join(out, "speed.png"))
+    variants = ["double/libm"] + names[:4]
+    plots.formats_speed_vs_error(
+        [(fmt, [(v, 0 if i == 0 else 20 * i + k, 3.0e8 + 1.5e7 * i + 1e6 * k) for i, v in enumerate(variants)],
+          4.0e8 * (k + 1) if k != 3 else None, ["a", "b", "c"])
+         for k, fmt in enumerate(["CS418", "Jaworski", "miniRT", "EASTRAY"])],
+        "double/libm", os.path.join(out, "formats.png"))
 except plots.FigureError as e:
     failures.append(f"the report's figures: {e}")
-for name in ("heat.png", "fpu.png", "speed.png"):
+for name in ("heat.png", "fpu.png", "speed.png", "formats.png"):
     if not os.path.getsize(os.path.join(out, name)) > 1000:
         failures.append(f"{name} not written")
 for f in failures:
