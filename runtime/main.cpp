@@ -287,9 +287,9 @@ extern "C" int main(int argc, char** argv) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
     textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
     if (textures == nullptr) error.text("no room for the texture table");
-    const bool packed = first == MINRT_TEXTURES_DEFLATE_MARKER;
+    const bool packed = first != MINRT_TEXTURES_MARKER;
     if (textures == nullptr ||
-        !(packed ? minrt::send::textures::receive_compressed(binary.source(), arena, *textures, error)
+        !(packed ? minrt::send::textures::receive_compressed(binary.source(), arena, *textures, error, first)
                  : minrt::send::textures::receive(binary.source(), arena, *textures, error))) {
       send_error(uart, error);
       return MINRT_STATUS_OUT_OF_MEMORY;

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <minrt/serial_protocol.h>
+
 #include "core/base/crc32.hpp"
 
 namespace minrt::send {
@@ -73,6 +75,13 @@ bool PngReceiver::step(std::uint8_t c) {
       }
       return true;
     case State::kBody: {
+      // A board that stops between rows (a texel of a sparse texture not
+      // sent, MINRT_UNSENT_TEXEL_ERROR) sends its error line there; no
+      // chunk's length starts with that byte (they are below kMaxChunk).
+      if (at_ == 0 && c == static_cast<std::uint8_t>(MINRT_ERROR_MARKER[0]) && seen_ihdr_) {
+        state_ = State::kStart;
+        return start(c, kSignature[0], "PNG");
+      }
       if (at_ < 8) {
         head_[at_++] = c;
         if (at_ == 8) {

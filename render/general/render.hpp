@@ -88,6 +88,12 @@ class Renderer {
     return true;
   }
 
+  // Every texel the CS418 path reads goes to g_texel_watch (surface_maps.hpp):
+  // host-send's recording, or a board holding sparse textures.
+  void watch_texels() {
+    if (path_ == kPathFull) path_ = kPathFull | kTexelWatch;
+  }
+
   uint32_t features() const { return features_; }
   uint32_t path() const { return path_; }
   const Bvh<R>& bvh() const { return bvh_; }
@@ -118,6 +124,7 @@ class Renderer {
       case kPathPhong: row<kPathPhong>(y, rgba); break;
       case kPathPhongFull: row<kPathPhongFull>(y, rgba); break;
       case kPathEastray: eastray_row(y, rgba); break;
+      case kPathFull | kTexelWatch: row<kPathFull | kTexelWatch>(y, rgba); break;
       default: row<kPathFull>(y, rgba); break;
     }
   }
