@@ -61,6 +61,7 @@ struct Job {
   decltype(Upload::write_as) write_as;
   bool stereo = false;
   bool sparse = false;  // the textures went sparse: the board may ask for them whole
+  std::string note;     // the summary's third line (how many texels went)
 };
 
 // The scene, recognised as minrt recognises it (formats/registry.hpp) and
@@ -89,6 +90,7 @@ int prepare_scene(Options& o, Job& job) {
     return fail(kExitFirmware, "scene rejected before sending: " + why);
   job.bytes = std::move(upload.bytes);
   job.sparse = upload.sparse;
+  job.note = upload.note;
   if (upload.width > 0 && format.default_width > 0) {  // a format whose reply size the board takes from --size
     o.spec.width = upload.width;
     o.spec.height = upload.height;
@@ -354,6 +356,7 @@ void print_summary(const Options& o, const Job& job, const Link& link, const Tra
   std::fprintf(stderr, "%s\n", line);
   std::fprintf(stderr, "host-send: sha256 %s%s%s\n", digest.c_str(), recompressed ? " as the board sent it" : "",
                r.crc_checked ? " (CRC-32 trailer checked)" : "");
+  if (!job.note.empty()) std::fprintf(stderr, "host-send: %s\n", job.note.c_str());
 }
 
 // --show: rows the stream could not hand over live (the framed protocol, a
@@ -416,7 +419,7 @@ int run(const Options& options) {
     // A simulated board that read a texel not sent starts again, and gets
     // every texel; a real one needs a reset first (transfer_error says so).
     if (!(o.sim && job.sparse && unsent_texel(r))) break;
-    if (!o.quiet) warn("the board read a texel host-send did not send (" + r.message + "); sending the textures whole");
+    warn("the board read a texel host-send did not send (" + r.message + "); sending the textures whole");
     o.full_textures = true;
     job = Job{};
     if (const int status = prepare_scene(o, job); status != kExitOk) return status;

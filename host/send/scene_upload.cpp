@@ -45,10 +45,15 @@ bool prepare_cs418(const UploadRequest& r, std::string scene, Upload& out, std::
   const bool recorded = r.sparse_textures && scene.find("texture") != std::string::npos &&
                         record_cs418_texels(scene, r.base_dir, marks);
   std::string preamble;
-  if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error, recorded ? &marks : nullptr))
+  TexelCount count;
+  if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error, recorded ? &marks : nullptr,
+                              &count))
     return false;
   out.text_at = preamble.size();
   out.sparse = !preamble.empty() && static_cast<unsigned char>(preamble[0]) == MINRT_TEXTURES_SPARSE_MARKER;
+  if (out.sparse)
+    out.note = "textures: " + std::to_string(count.sent) + " of " + std::to_string(count.texels) +
+               " texels sent, the tiles the render reads (--full-textures sends every one)";
   out.bytes = preamble + scene;
   return true;
 }

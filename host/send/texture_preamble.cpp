@@ -127,7 +127,7 @@ struct Packed {
 // (null: send every texel).
 bool assemble(const std::vector<std::string>& names, const std::vector<std::string>& where,
               const std::string& base_dir, TextureProbe probe, TextureLoader load, std::uint64_t board_bytes,
-              const TexelMarks* marks, std::string& out, std::string& error) {
+              const TexelMarks* marks, std::string& out, std::string& error, TexelCount* count = nullptr) {
   out.clear();
   if (names.empty()) return true;
   if (names.size() > MINRT_MAX_TEXTURES) {
@@ -243,6 +243,10 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
     lead = std::max(lead, static_cast<long long>(decoded) + p.lead - static_cast<long long>(stream_at));
     decoded += static_cast<std::uint64_t>(p.width) * p.height * 3;
     body += stream;
+    if (count != nullptr) {
+      count->texels += static_cast<std::uint64_t>(p.width) * p.height;
+      count->sent += part ? p.part.sent : static_cast<std::uint64_t>(p.width) * p.height;
+    }
   }
   out.push_back(static_cast<char>(marker));
   out.push_back(static_cast<char>(names.size()));
@@ -254,7 +258,8 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
 }  // namespace
 
 bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,
-                            std::uint64_t board_bytes, std::string& out, std::string& error, const TexelMarks* marks) {
+                            std::uint64_t board_bytes, std::string& out, std::string& error, const TexelMarks* marks,
+                            TexelCount* sent) {
   std::vector<std::string> names;
   std::vector<std::string> where;  // each name's first use, as the reader counts lines and columns
   std::set<std::string> seen;
@@ -270,7 +275,7 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
     where.push_back(scene_name + ":" + std::to_string(number) + ":" + std::to_string(col) + ": error: ");
   }
   return assemble(names, where, base_dir, &minrt::host::probe_png_texture, &minrt::host::load_png_texture, board_bytes,
-                  marks, out, error);
+                  marks, out, error, sent);
 }
 
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,

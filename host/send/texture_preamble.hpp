@@ -25,9 +25,14 @@ namespace minrt::send {
 // whose read tiles deflate smaller than the whole goes sparse
 // (MINRT_TEXTURES_SPARSE_MARKER); without, or when none does, every texel
 // goes, in the compressed preamble.
+// `sent`, when given, gets the texels that go (sparse: those of the tiles
+// sent) and `texels` all of them.
+struct TexelCount {
+  std::uint64_t texels = 0, sent = 0;
+};
 bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,
                             std::uint64_t board_bytes, std::string& out, std::string& error,
-                            const TexelMarks* marks = nullptr);
+                            const TexelMarks* marks = nullptr, TexelCount* sent = nullptr);
 
 // The same for a miniRT scene: the PPM files its `spt` lines name, found
 // where minrt finds them (host/texture_files.hpp).
