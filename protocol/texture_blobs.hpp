@@ -1,7 +1,9 @@
 // The board side of the texture preamble a scene's textures travel in ahead
-// of its text (include/minrt/serial_protocol.h), plain or compressed: the
-// texels go straight into the arena, and the scene reader later finds them
-// by name.
+// of its text (include/minrt/serial_protocol.h), plain, compressed or
+// sparse (only the tiles host-send's render reads, with their tile mask for
+// the render's check): the texels go straight into the arena, and the
+// scene reader later finds them by name. The four readers (from the line or
+// in memory) share the header readers.
 #pragma once
 
 #include <stddef.h>
