@@ -13,6 +13,8 @@ namespace {
 constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 // The writer's chunks are one row (4W + 6 bytes per 64 KiB block) at most.
 constexpr std::uint32_t kMaxChunk = 1u << 24;
+static_assert(static_cast<std::uint32_t>(MINRT_ERROR_MARKER[0]) << 24 > kMaxChunk,
+              "an error line between chunks cannot start a chunk's length");
 
 std::uint32_t be32(const std::uint8_t* p) {
   return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
