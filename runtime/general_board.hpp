@@ -35,7 +35,8 @@ inline SceneResult render_general_scene(model::SceneBuilder<Math::real>& builder
     scene.textures = table;
     scene.texture_count = static_cast<uint32_t>(count);
   }
-  // Sparse textures: every texel read is checked against the tiles sent.
+  // Sparse textures: every texel read is checked against the tiles sent
+  // (a scene off the path that has the check reads no texel).
   general::TexelWatch watch;
   if (count > 0 && textures->sparse)
     watch.entries = arena.alloc_zeroed<general::TexelWatch::Entry>(static_cast<size_t>(count));
@@ -46,7 +47,7 @@ inline SceneResult render_general_scene(model::SceneBuilder<Math::real>& builder
         " bytes)");
     return SceneResult::kOutOfMemory;
   }
-  if (watch.entries == nullptr) {
+  if (watch.entries == nullptr || !renderer.can_watch_texels()) {
     renderer.render(rows, row);
     return SceneResult::kOk;
   }
@@ -59,10 +60,9 @@ inline SceneResult render_general_scene(model::SceneBuilder<Math::real>& builder
   }
   watch.count = count;
   general::g_texel_watch = &watch;
-  renderer.watch_texels();
   rows.begin(scene.width, scene.height);
   for (int y = 0; y < scene.height; ++y) {
-    renderer.render_row(y, row);
+    renderer.render_row_watched(y, row);
     if (watch.missed) {
       general::g_texel_watch = nullptr;
       error.text(MINRT_UNSENT_TEXEL_ERROR)

@@ -88,11 +88,12 @@ class Renderer {
     return true;
   }
 
-  // Every texel the CS418 path reads goes to g_texel_watch (surface_maps.hpp):
-  // host-send's recording, or a board holding sparse textures.
-  void watch_texels() {
-    if (path_ == kPathFull) path_ = kPathFull | kTexelWatch;
-  }
+  // render_row_watched renders what render_row would, every texel read
+  // going to g_texel_watch (surface_maps.hpp): host-send's recording, or a
+  // board holding sparse textures. Only for a scene on the CS418 path with
+  // every feature (one with textures always is); render_row is untouched.
+  bool can_watch_texels() const { return path_ == kPathFull; }
+  void render_row_watched(int y, uint8_t* rgba) const { row<kPathFull | kTexelWatch>(y, rgba); }
 
   uint32_t features() const { return features_; }
   uint32_t path() const { return path_; }
@@ -124,7 +125,6 @@ class Renderer {
       case kPathPhong: row<kPathPhong>(y, rgba); break;
       case kPathPhongFull: row<kPathPhongFull>(y, rgba); break;
       case kPathEastray: eastray_row(y, rgba); break;
-      case kPathFull | kTexelWatch: row<kPathFull | kTexelWatch>(y, rgba); break;
       default: row<kPathFull>(y, rgba); break;
     }
   }

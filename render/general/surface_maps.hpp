@@ -84,11 +84,12 @@ struct TexelWatch {
 // such a path (one render at a time: host-send's recording, the board).
 inline TexelWatch* g_texel_watch = nullptr;
 
-// A texel's bytes, noted in the watch on the paths that have it.
+// A texel's bytes, noted in the watch on the paths that have it. Always
+// inlined: without the watch it is the address arithmetic alone.
 template <bool kWatch>
-inline const uint8_t* read_texel(const model::Texture& tex, int32_t col, int32_t row) {
+[[gnu::always_inline]] inline const uint8_t* read_texel(const model::Texture& tex, int32_t col, int32_t row) {
   if constexpr (kWatch) g_texel_watch->note(tex, col, row);
-  return texel_at(tex, col, row);
+  return tex.rgb + 3 * (static_cast<uint32_t>(row) * static_cast<uint32_t>(tex.width) + static_cast<uint32_t>(col));
 }
 
 template <class M>
