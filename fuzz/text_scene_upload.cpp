@@ -34,8 +34,9 @@ void check_textures(const uint8_t* data, size_t size) {
   }
 }
 
-// A compressed preamble at `data` (its marker byte first), decoded into a
-// 64 KiB arena: every texture it accepts lies inside the arena.
+// A compressed or sparse preamble at `data` (its marker byte first),
+// decoded into a 64 KiB arena: every texture it accepts, and a sparse
+// one's tile mask, lies inside the arena.
 void check_packed(const uint8_t* data, size_t size) {
   using namespace minrt::send;
   static textures::Table table;
@@ -53,6 +54,7 @@ void check_packed(const uint8_t* data, size_t size) {
     const textures::Received& r = table.items[i];
     const size_t bytes = static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
     if (r.rgb < mem || r.rgb + bytes > mem + sizeof mem) std::abort();
+    if (r.tiles != nullptr && (r.tiles < mem || r.tiles >= mem + sizeof mem || r.form < 1)) std::abort();
   }
 }
 
@@ -67,11 +69,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (text::view_framed(data, size, scene, ok, error) && ok) {
     if (scene.bytes + scene.size != data + size || !text::is_text_format(scene.format)) std::abort();
     if (scene.size > 0 && scene.bytes[0] == MINRT_TEXTURES_MARKER) check_textures(scene.bytes + 1, scene.size - 1);
-    if (scene.size > 0 && scene.bytes[0] == MINRT_TEXTURES_DEFLATE_MARKER) check_packed(scene.bytes, scene.size);
+    if (scene.size > 0 && scene.bytes[0] != MINRT_TEXTURES_MARKER && textures::is_marker(scene.bytes[0]))
+      check_packed(scene.bytes, scene.size);
   }
-  // The bytes as a texture preamble on their own, plain and compressed.
+  // The bytes as a texture preamble on their own, plain, compressed and sparse.
   if (size > 0) check_textures(data + 1, size - 1);
-  if (size > 0 && data[0] == MINRT_TEXTURES_DEFLATE_MARKER) check_packed(data, size);
+  if (size > 0 && data[0] != MINRT_TEXTURES_MARKER && textures::is_marker(data[0])) check_packed(data, size);
   // Course: the bytes after the marker word, into a 256-byte arena, both
   // byte orders.
   for (auto endian : {course::Endian::kLittle, course::Endian::kBig}) {

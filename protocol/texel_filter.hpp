@@ -11,6 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <minrt/serial_protocol.h>
+
 namespace minrt::send::texel_filter {
 
 // Median edge detector: the smaller or larger of left and up when the
@@ -55,6 +57,83 @@ inline void unfilter(uint8_t* data, size_t w, size_t h, uint8_t* scratch) {
     for (size_t x = 0; x < w; ++x) {
       int q[3];
       for (int p = 0; p < 3; ++p) q[p] = (scratch[p * w + x] + predict_at(data, w, x, y, p)) & 0xFF;
+      row[3 * x + 0] = static_cast<uint8_t>(q[1] + q[0]);
+      row[3 * x + 1] = static_cast<uint8_t>(q[0]);
+      row[3 * x + 2] = static_cast<uint8_t>(q[2] + q[0]);
+    }
+  }
+}
+
+// Sparse textures (MINRT_TEXTURES_SPARSE_MARKER): the tiles sent, one bit
+// a tile of 2^shift texels a side, rows of tiles top first.
+struct TileMask {
+  const uint8_t* bits;
+  size_t tiles_x;
+  int shift;
+  bool has(size_t x, size_t y) const {
+    const size_t t = (y >> shift) * tiles_x + (x >> shift);
+    return ((bits[t >> 3] >> (t & 7)) & 1) != 0;
+  }
+};
+
+inline size_t tiles_along(size_t n, int shift) { return (n + (size_t{1} << shift) - 1) >> shift; }
+inline size_t mask_bytes(size_t w, size_t h, int shift) { return (tiles_along(w, shift) * tiles_along(h, shift) + 7) / 8; }
+
+// Texels of row y in marked tiles.
+inline size_t row_sent(const TileMask& m, size_t w, size_t y) {
+  size_t n = 0;
+  const size_t side = size_t{1} << m.shift;
+  for (size_t tx = 0; tx < m.tiles_x; ++tx) {
+    const size_t x = tx << m.shift;
+    if (m.has(x, y)) n += w - x < side ? w - x : side;
+  }
+  return n;
+}
+
+inline size_t sent_texels(const TileMask& m, size_t w, size_t h) {
+  size_t n = 0;
+  for (size_t y = 0; y < h; ++y) n += row_sent(m, w, y);
+  return n;
+}
+
+// The value the board gives a texel that was not sent.
+inline constexpr uint8_t kUnsent[3] = MINRT_TEXTURES_UNSENT_RGB;
+
+// Host: the residuals of the marked texels of `view` (the texture as the
+// board will hold it: unmarked texels already kUnsent) into `out`, row by
+// row, each row's texels plane by plane, predicted from `view` as the whole
+// form predicts. Returns the bytes written (3 a texel sent).
+inline size_t filter_sparse(const uint8_t* view, size_t w, size_t h, const TileMask& m, uint8_t* out) {
+  size_t at = 0;
+  for (size_t y = 0; y < h; ++y)
+    for (int p = 0; p < 3; ++p)
+      for (size_t x = 0; x < w; ++x)
+        if (m.has(x, y))
+          out[at++] = static_cast<uint8_t>((plane(view + (y * w + x) * 3, p) - predict_at(view, w, x, y, p)) & 0xFF);
+  return at;
+}
+
+// Board: the texture from the residuals filter_sparse made, which lie in
+// the same buffer at or above where their texels go (`residuals`, at the
+// buffer's tail): rows in order, each row's residuals copied to `scratch`
+// (3*w bytes) first, so no texel is written over a residual still to be
+// read; unmarked texels become kUnsent.
+inline void unfilter_sparse(uint8_t* data, size_t w, size_t h, const TileMask& m, const uint8_t* residuals,
+                            uint8_t* scratch) {
+  for (size_t y = 0; y < h; ++y) {
+    const size_t n = row_sent(m, w, y);
+    for (size_t i = 0; i < 3 * n; ++i) scratch[i] = residuals[i];
+    residuals += 3 * n;
+    uint8_t* row = data + y * 3 * w;
+    size_t j = 0;
+    for (size_t x = 0; x < w; ++x) {
+      if (!m.has(x, y)) {
+        for (int c = 0; c < 3; ++c) row[3 * x + c] = kUnsent[c];
+        continue;
+      }
+      int q[3];
+      for (int p = 0; p < 3; ++p) q[p] = (scratch[p * n + j] + predict_at(data, w, x, y, p)) & 0xFF;
+      ++j;
       row[3 * x + 0] = static_cast<uint8_t>(q[1] + q[0]);
       row[3 * x + 1] = static_cast<uint8_t>(q[0]);
       row[3 * x + 2] = static_cast<uint8_t>(q[2] + q[0]);

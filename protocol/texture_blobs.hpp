@@ -1,7 +1,9 @@
 // The board side of the texture preamble a scene's textures travel in ahead
-// of its text (include/minrt/serial_protocol.h), plain or compressed: the
-// texels go straight into the arena, and the scene reader later finds them
-// by name.
+// of its text (include/minrt/serial_protocol.h), plain, compressed or
+// sparse (only the tiles host-send's render reads, with their tile mask for
+// the render's check): the texels go straight into the arena, and the
+// scene reader later finds them by name. The four readers (from the line or
+// in memory) share the header readers.
 #pragma once
 
 #include <stddef.h>
@@ -27,13 +29,22 @@ struct Received {
   uint32_t packed_size;
   uint32_t crc;
   const uint8_t* packed;
+  // Sparse preamble only: the form (0: every texel; k: tiles of 2^(k-1)
+  // texels a side), the texels sent, and the tile mask (in the arena; null
+  // when every texel is there).
+  uint8_t form;
+  uint32_t sent;
+  const uint8_t* tiles;
 };
 
-inline bool is_marker(int c) { return c == MINRT_TEXTURES_MARKER || c == MINRT_TEXTURES_DEFLATE_MARKER; }
+inline bool is_marker(int c) {
+  return c == MINRT_TEXTURES_MARKER || c == MINRT_TEXTURES_DEFLATE_MARKER || c == MINRT_TEXTURES_SPARSE_MARKER;
+}
 
 struct Table {
   Received items[MINRT_MAX_TEXTURES];
   int count = 0;
+  bool sparse = false;  // some texture came without every texel (its `tiles` set)
 
   // Index of the texture with this name, or -1.
   int32_t find(const char* name) const {
@@ -46,7 +57,7 @@ struct Table {
   }
 };
 
-// The texture count that starts either preamble.
+// The texture count that starts every preamble.
 inline bool read_count(ByteSource& in, int& count, Diagnostic& error) {
   count = in.get();
   if (count < 1 || count > MINRT_MAX_TEXTURES) {
@@ -56,8 +67,37 @@ inline bool read_count(ByteSource& in, int& count, Diagnostic& error) {
   return true;
 }
 
+namespace detail {
+
+inline uint32_t le32(const uint8_t* p) {
+  return static_cast<uint32_t>(p[0]) | static_cast<uint32_t>(p[1]) << 8 | static_cast<uint32_t>(p[2]) << 16 |
+         static_cast<uint32_t>(p[3]) << 24;
+}
+
+inline bool read_bytes(ByteSource& in, uint8_t* out, size_t n) {
+  for (size_t k = 0; k < n; ++k) {
+    const int c = in.get();
+    if (c < 0) return false;
+    out[k] = static_cast<uint8_t>(c);
+  }
+  return true;
+}
+
+inline bool read_le32(ByteSource& in, uint32_t& v) {
+  uint8_t b[4];
+  if (!read_bytes(in, b, 4)) return false;
+  v = le32(b);
+  return true;
+}
+
+inline size_t texel_bytes(const Received& r) {
+  return static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
+}
+
+}  // namespace detail
+
 // A texture's name (length byte, bytes) and size (two 16-bit little-endian
-// words), the head both preambles give each texture.
+// words), the head every preamble gives each texture.
 inline bool read_name_and_size(ByteSource& in, Received& r, Diagnostic& error) {
   const int len = in.get();
   if (len < 1) {
@@ -73,12 +113,11 @@ inline bool read_name_and_size(ByteSource& in, Received& r, Diagnostic& error) {
     r.name[k] = static_cast<char>(c);
   }
   r.name[len] = 0;
-  int b[4];
-  for (int& v : b)
-    if ((v = in.get()) < 0) {
-      error.text("texture preamble cut off in the size of ").text(r.name);
-      return false;
-    }
+  uint8_t b[4];
+  if (!detail::read_bytes(in, b, 4)) {
+    error.text("texture preamble cut off in the size of ").text(r.name);
+    return false;
+  }
   r.width = b[0] | b[1] << 8;
   r.height = b[2] | b[3] << 8;
   if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
@@ -88,20 +127,72 @@ inline bool read_name_and_size(ByteSource& in, Received& r, Diagnostic& error) {
   return true;
 }
 
-// Reads the preamble after its marker byte (`in` must pass every byte value
-// through). False with the reason: a cut-off preamble, a bad size, or a
-// texture that does not fit in the arena.
+// One texture's whole header in a preamble with this marker: name and
+// size; compressed: the stream's size and the CRC-32; sparse: the form and
+// the texels sent too.
+inline bool read_texture_header(ByteSource& in, int marker, Received& r, Diagnostic& error) {
+  r.form = 0;
+  r.tiles = nullptr;
+  if (!read_name_and_size(in, r, error)) return false;
+  r.sent = static_cast<uint32_t>(r.width) * static_cast<uint32_t>(r.height);
+  if (marker == MINRT_TEXTURES_MARKER) return true;
+  uint8_t form = 0;
+  if (!detail::read_le32(in, r.packed_size) || !detail::read_le32(in, r.crc) ||
+      (marker == MINRT_TEXTURES_SPARSE_MARKER && (!detail::read_bytes(in, &form, 1) || !detail::read_le32(in, r.sent)))) {
+    error.text("texture preamble cut off in the header of ").text(r.name);
+    return false;
+  }
+  r.form = form;
+  const uint32_t texels = static_cast<uint32_t>(r.width) * static_cast<uint32_t>(r.height);
+  if (form > MINRT_TEXTURES_MAX_TILE_FORM || r.sent > texels || (form == 0 && r.sent != texels)) {
+    error.text("texture ").text(r.name).text(": bad form");
+    return false;
+  }
+  return true;
+}
+
+// Every header of a preamble in memory (`data` after the marker byte), the
+// table pointing into it: plain texels and compressed streams where they
+// lie. `lead`: the compressed preamble's. `used`: the bytes read.
+inline bool read_headers(const uint8_t* data, size_t size, int marker, Table& table, uint32_t& lead, size_t& used,
+                         Diagnostic& error) {
+  MemorySource mem{data, size};
+  ByteSource in = mem.source();
+  int count = 0;
+  if (!read_count(in, count, error)) return false;
+  lead = 0;
+  if (marker != MINRT_TEXTURES_MARKER && !detail::read_le32(in, lead)) {
+    error.text("texture preamble cut off in its header");
+    return false;
+  }
+  for (int t = 0; t < count; ++t) {
+    Received& r = table.items[t];
+    if (!read_texture_header(in, marker, r, error)) return false;
+    const size_t bytes = marker == MINRT_TEXTURES_MARKER ? detail::texel_bytes(r) : r.packed_size;
+    if (bytes > size - mem.pos) {
+      error.text("texture ").text(r.name).text(" cut off after ").number(static_cast<int64_t>(size - mem.pos)).text(
+          " bytes");
+      return false;
+    }
+    r.rgb = marker == MINRT_TEXTURES_MARKER ? data + mem.pos : nullptr;
+    r.packed = data + mem.pos;
+    mem.pos += bytes;
+    table.count = t + 1;
+  }
+  used = mem.pos;
+  return true;
+}
+
+// Reads the plain preamble after its marker byte (`in` must pass every byte
+// value through). False with the reason: a cut-off preamble, a bad size, or
+// a texture that does not fit in the arena.
 inline bool receive(ByteSource in, Arena& arena, Table& table, Diagnostic& error) {
-  auto byte = [&](int& v) {
-    v = in.get();
-    return v >= 0;
-  };
   int count = 0;
   if (!read_count(in, count, error)) return false;
   for (int t = 0; t < count; ++t) {
     Received& r = table.items[t];
-    if (!read_name_and_size(in, r, error)) return false;
-    const size_t bytes = static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
+    if (!read_texture_header(in, MINRT_TEXTURES_MARKER, r, error)) return false;
+    const size_t bytes = detail::texel_bytes(r);
     uint8_t* rgb = arena.alloc_zeroed<uint8_t>(bytes);
     if (rgb == nullptr) {
       error.text("texture ").text(r.name).text(" (").number(r.width).text("x").number(r.height).text(
@@ -109,8 +200,8 @@ inline bool receive(ByteSource in, Arena& arena, Table& table, Diagnostic& error
       return false;
     }
     for (size_t i = 0; i < bytes; ++i) {
-      int c = 0;
-      if (!byte(c)) {
+      const int c = in.get();
+      if (c < 0) {
         error.text("texture ").text(r.name).text(" cut off after ").number(static_cast<int64_t>(i)).text(" bytes");
         return false;
       }
@@ -122,66 +213,16 @@ inline bool receive(ByteSource in, Arena& arena, Table& table, Diagnostic& error
   return true;
 }
 
-// The same preamble already in memory (course and framed protocols: the
+// The plain preamble already in memory (course and framed protocols: the
 // scene upload holds it, protocol/text_scene_upload.hpp): the table points
 // into `data`, nothing is copied. `data` starts after the marker byte;
 // `used` is the preamble's length from there.
 inline bool view(const uint8_t* data, size_t size, Table& table, size_t& used, Diagnostic& error) {
-  size_t at = 0;
-  auto cut = [&](size_t need) { return need > size - at; };
-  if (cut(1) || data[0] < 1 || data[0] > MINRT_MAX_TEXTURES) {
-    error.text("texture preamble: bad texture count");
-    return false;
-  }
-  const int count = data[at++];
-  for (int t = 0; t < count; ++t) {
-    Received& r = table.items[t];
-    if (cut(1) || data[at] < 1) {
-      error.text("texture preamble: bad name length");
-      return false;
-    }
-    const size_t len = data[at++];
-    if (cut(len)) {
-      error.text("texture preamble cut off in a name");
-      return false;
-    }
-    for (size_t k = 0; k < len; ++k) r.name[k] = static_cast<char>(data[at + k]);
-    r.name[len] = 0;
-    at += len;
-    if (cut(4)) {
-      error.text("texture preamble cut off in the size of ").text(r.name);
-      return false;
-    }
-    r.width = data[at] | data[at + 1] << 8;
-    r.height = data[at + 2] | data[at + 3] << 8;
-    at += 4;
-    if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
-      error.text("texture ").text(r.name).text(": bad size");
-      return false;
-    }
-    const size_t bytes = static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
-    if (cut(bytes)) {
-      error.text("texture ").text(r.name).text(" cut off after ").number(static_cast<int64_t>(size - at)).text(" bytes");
-      return false;
-    }
-    r.rgb = data + at;
-    at += bytes;
-    table.count = t + 1;
-  }
-  used = at;
-  return true;
+  uint32_t lead = 0;
+  return read_headers(data, size, MINRT_TEXTURES_MARKER, table, lead, used, error);
 }
 
 namespace detail {
-
-inline uint32_t le32(const uint8_t* p) {
-  return static_cast<uint32_t>(p[0]) | static_cast<uint32_t>(p[1]) << 8 | static_cast<uint32_t>(p[2]) << 16 |
-         static_cast<uint32_t>(p[3]) << 24;
-}
-
-inline size_t texel_bytes(const Received& r) {
-  return static_cast<size_t>(r.width) * static_cast<size_t>(r.height) * 3;
-}
 
 // A ByteSource that ends after `left` bytes of another.
 struct Limited {
@@ -198,10 +239,25 @@ struct Limited {
 
 // Inflates one texture's stream into `out` (its texel bytes), undoes the
 // filter and checks the CRC-32. `in_place`: the stream's address when it
-// lies in the same memory above `out`.
-inline bool decode(ByteSource stream, const Received& r, uint8_t* out, const uint8_t* in_place, Arena& arena,
+// lies in the same memory above `out`. A sparse texture's stream decodes
+// into the tail of `out`, its tile mask is copied to the arena's bottom
+// end, and its texels are spread out from there (texel_filter.hpp).
+inline bool decode(ByteSource stream, Received& r, uint8_t* out, const uint8_t* in_place, Arena& arena,
                    Diagnostic& error) {
   const size_t bytes = texel_bytes(r);
+  const int shift = r.form - 1;
+  const size_t mask = r.form == 0 ? 0 : texel_filter::mask_bytes(r.width, r.height, shift);
+  uint8_t* tiles = mask == 0 ? nullptr : arena.alloc_uninit<uint8_t>(mask);
+  if (mask != 0 && tiles == nullptr) {
+    error.text("texture ").text(r.name).text(": no room for its tile mask");
+    return false;
+  }
+  const size_t want = r.form == 0 ? bytes : mask + 3 * static_cast<size_t>(r.sent);
+  if (want > bytes) {
+    error.text("texture ").text(r.name).text(": bad form");
+    return false;
+  }
+  uint8_t* at = out + (bytes - want);
   const size_t mark = arena.top_mark();
   Inflater* inflater = arena.alloc_top<Inflater>(1);
   uint8_t* scratch = arena.alloc_top<uint8_t>(static_cast<size_t>(r.width) * 3);
@@ -210,17 +266,31 @@ inline bool decode(ByteSource stream, const Received& r, uint8_t* out, const uin
     error.text("texture ").text(r.name).text(": no room to decode it");
     return false;
   }
-  const InflateStatus s = inflater->run(stream, out, bytes, in_place);
-  const bool whole = s == InflateStatus::kDone && inflater->produced() == bytes && inflater->consumed() == r.packed_size;
-  if (whole) texel_filter::unfilter(out, static_cast<size_t>(r.width), static_cast<size_t>(r.height), scratch);
+  const InflateStatus s = inflater->run(stream, at, want, in_place);
+  const bool whole = s == InflateStatus::kDone && inflater->produced() == want && inflater->consumed() == r.packed_size;
+  bool tiles_match = true;
+  if (whole && r.form == 0) texel_filter::unfilter(out, static_cast<size_t>(r.width), static_cast<size_t>(r.height), scratch);
+  if (whole && r.form != 0) {
+    for (size_t i = 0; i < mask; ++i) tiles[i] = at[i];
+    const texel_filter::TileMask m{tiles, texel_filter::tiles_along(static_cast<size_t>(r.width), shift), shift};
+    tiles_match = texel_filter::sent_texels(m, static_cast<size_t>(r.width), static_cast<size_t>(r.height)) == r.sent;
+    if (tiles_match)
+      texel_filter::unfilter_sparse(out, static_cast<size_t>(r.width), static_cast<size_t>(r.height), m, at + mask,
+                                    scratch);
+    r.tiles = tiles;
+  }
   arena.release_top(mark);
   if (!whole) {
     error.text("texture ").text(r.name).text(": ");
     if (s != InflateStatus::kDone) error.text(inflate_message(s));
-    else if (inflater->produced() != bytes)
+    else if (inflater->produced() != want)
       error.text("compressed data decodes to ").number(static_cast<int64_t>(inflater->produced())).text(" of ").number(
-          static_cast<int64_t>(bytes)).text(" bytes");
+          static_cast<int64_t>(want)).text(" bytes");
     else error.text("compressed data ends before its stated size");
+    return false;
+  }
+  if (!tiles_match) {
+    error.text("texture ").text(r.name).text(": the tile mask does not hold the texels sent");
     return false;
   }
   if (crc32(out, bytes) != r.crc) {
@@ -232,37 +302,21 @@ inline bool decode(ByteSource stream, const Received& r, uint8_t* out, const uin
 
 }  // namespace detail
 
-// Reads a compressed preamble after its marker byte from the line, each
-// texture inflated into the arena as its bytes arrive (nothing is held).
-inline bool receive_compressed(ByteSource in, Arena& arena, Table& table, Diagnostic& error) {
-  auto byte = [&](int& v) {
-    v = in.get();
-    return v >= 0;
-  };
-  auto word = [&](uint32_t& v) {
-    uint8_t b[4];
-    for (uint8_t& x : b) {
-      int c = 0;
-      if (!byte(c)) return false;
-      x = static_cast<uint8_t>(c);
-    }
-    v = detail::le32(b);
-    return true;
-  };
+// Reads a compressed or sparse preamble after its marker byte from the
+// line, each texture inflated into the arena as its bytes arrive (nothing
+// is held).
+inline bool receive_compressed(ByteSource in, Arena& arena, Table& table, Diagnostic& error,
+                               int marker = MINRT_TEXTURES_DEFLATE_MARKER) {
   int count = 0;
   uint32_t lead = 0;
   if (!read_count(in, count, error)) return false;
-  if (!word(lead)) {
+  if (!detail::read_le32(in, lead)) {
     error.text("texture preamble cut off in its header");
     return false;
   }
   for (int t = 0; t < count; ++t) {
     Received& r = table.items[t];
-    if (!read_name_and_size(in, r, error)) return false;
-    if (!word(r.packed_size) || !word(r.crc)) {
-      error.text("texture preamble cut off in the header of ").text(r.name);
-      return false;
-    }
+    if (!read_texture_header(in, marker, r, error)) return false;
     uint8_t* rgb = arena.alloc_uninit<uint8_t>(detail::texel_bytes(r));
     if (rgb == nullptr) {
       error.text("texture ").text(r.name).text(" (").number(r.width).text("x").number(r.height).text(
@@ -273,79 +327,37 @@ inline bool receive_compressed(ByteSource in, Arena& arena, Table& table, Diagno
     if (!detail::decode(stream.source(), r, rgb, nullptr, arena, error)) return false;
     r.rgb = rgb;
     table.count = t + 1;
+    table.sparse = table.sparse || r.tiles != nullptr;
   }
   return true;
 }
 
-// A preamble of either kind already in memory, `data` at its marker byte
+// A preamble of any kind already in memory, `data` at its marker byte
 // (the course and framed protocols and a checked raw upload hold it,
 // protocol/text_scene_upload.hpp): plain texels are pointed at where they
 // lie; compressed ones are decoded where they lie when the upload is the
 // arena's top block (the lead's bytes below it are free), else into the
-// arena. `used` is the preamble's length with its marker.
+// arena, as are sparse ones. `used` is the preamble's length with its marker.
 inline bool unpack(const uint8_t* data, size_t size, Arena& arena, Table& table, size_t& used, Diagnostic& error) {
   if (size == 0 || !is_marker(data[0])) {
     error.text("texture preamble: bad marker");
     return false;
   }
-  if (data[0] == MINRT_TEXTURES_MARKER) {
-    if (!view(data + 1, size - 1, table, used, error)) return false;
-    used += 1;
-    return true;
-  }
-  size_t at = 1;
-  auto cut = [&](size_t need) { return need > size - at; };
-  if (cut(5) || data[at] < 1 || data[at] > MINRT_MAX_TEXTURES) {
-    error.text("texture preamble: bad texture count");
-    return false;
-  }
-  const int count = data[at];
-  const uint32_t lead = detail::le32(data + at + 1);
-  at += 5;
+  const int marker = data[0];
+  uint32_t lead = 0;
+  if (!read_headers(data + 1, size - 1, marker, table, lead, used, error)) return false;
+  used += 1;
+  if (marker == MINRT_TEXTURES_MARKER) return true;
   size_t total = 0;
-  for (int t = 0; t < count; ++t) {
-    Received& r = table.items[t];
-    if (cut(1) || data[at] < 1) {
-      error.text("texture preamble: bad name length");
-      return false;
-    }
-    const size_t len = data[at++];
-    if (cut(len)) {
-      error.text("texture preamble cut off in a name");
-      return false;
-    }
-    for (size_t k = 0; k < len; ++k) r.name[k] = static_cast<char>(data[at + k]);
-    r.name[len] = 0;
-    at += len;
-    if (cut(12)) {
-      error.text("texture preamble cut off in the header of ").text(r.name);
-      return false;
-    }
-    r.width = data[at] | data[at + 1] << 8;
-    r.height = data[at + 2] | data[at + 3] << 8;
-    r.packed_size = detail::le32(data + at + 4);
-    r.crc = detail::le32(data + at + 8);
-    at += 12;
-    if (r.width < 1 || r.height < 1 || r.width > MINRT_MAX_TEXTURE_SIDE || r.height > MINRT_MAX_TEXTURE_SIDE) {
-      error.text("texture ").text(r.name).text(": bad size");
-      return false;
-    }
-    if (cut(r.packed_size)) {
-      error.text("texture ").text(r.name).text(" cut off after ").number(static_cast<int64_t>(size - at)).text(" bytes");
-      return false;
-    }
-    r.packed = data + at;
-    at += r.packed_size;
-    total += detail::texel_bytes(r);
-  }
-  used = at;
+  for (int t = 0; t < table.count; ++t) total += detail::texel_bytes(table.items[t]);
   // The upload is the arena's top block when the lead's bytes taken from
   // the top end end just below it, or below the header that came ahead of
   // the preamble (a text-scene upload's 12 bytes, read before this): then
-  // the texels start there, else in the bottom end.
+  // the texels start there, else in the bottom end. Sparse textures
+  // outgrow their streams, so they always go to the bottom end.
   constexpr size_t kMaxHeaderAhead = 16;
   const size_t mark = arena.top_mark();
-  uint8_t* below = arena.alloc_top<uint8_t>(lead);
+  uint8_t* below = marker == MINRT_TEXTURES_SPARSE_MARKER ? nullptr : arena.alloc_top<uint8_t>(lead);
   const bool in_place = below != nullptr && below + lead <= data &&
                         static_cast<size_t>(data - (below + lead)) <= kMaxHeaderAhead;
   uint8_t* out = below;
@@ -358,14 +370,14 @@ inline bool unpack(const uint8_t* data, size_t size, Arena& arena, Table& table,
       return false;
     }
   }
-  for (int t = 0; t < count; ++t) {
+  for (int t = 0; t < table.count; ++t) {
     Received& r = table.items[t];
     MemorySource stream{r.packed, r.packed_size};
     // The memory is the arena's; the upload is read-only only to its readers.
     if (!detail::decode(stream.source(), r, out, in_place ? r.packed : nullptr, arena, error)) return false;
     r.rgb = out;
     out += detail::texel_bytes(r);
-    table.count = t + 1;
+    table.sparse = table.sparse || r.tiles != nullptr;
   }
   return true;
 }

@@ -31,8 +31,7 @@ SceneResult render_cs418_rows(ByteSource in, RgbaRowSink rows, Arena& arena, boo
     case cs418::ReadStatus::kOutOfMemory: return SceneResult::kOutOfMemory;
     case cs418::ReadStatus::kSceneError: return SceneResult::kSceneError;
   }
-  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return SceneResult::kOutOfMemory;
-  return SceneResult::kOk;
+  return render_general_scene(builder, scene, textures, rows, arena, all_features, error);
 }
 
 

@@ -15,13 +15,16 @@
 #include "formats/model/scene_builder.hpp"
 #include "protocol/texture_blobs.hpp"
 #include "render/general/render.hpp"
+#include "scene_result.hpp"
 
 namespace minrt::fw {
 
-// False when the arena is too small, with the message in `error`.
-inline bool render_general_scene(model::SceneBuilder<Math::real>& builder, model::Scene<Math::real>& scene,
-                                 const send::textures::Table* textures, RgbaRowSink rows, Arena& arena,
-                                 bool all_features, Diagnostic& error) {
+// kOutOfMemory when the arena is too small; kSceneError when the scene
+// read a texel of a sparse texture that was not sent (MINRT_UNSENT_TEXEL_ERROR:
+// the rows before it went out, the rest do not); the message in `error`.
+inline SceneResult render_general_scene(model::SceneBuilder<Math::real>& builder, model::Scene<Math::real>& scene,
+                                        const send::textures::Table* textures, RgbaRowSink rows, Arena& arena,
+                                        bool all_features, Diagnostic& error) {
   general::Renderer<Math> renderer;
   uint8_t* row = nullptr;
   model::Texture* table = nullptr;
@@ -32,14 +35,53 @@ inline bool render_general_scene(model::SceneBuilder<Math::real>& builder, model
     scene.textures = table;
     scene.texture_count = static_cast<uint32_t>(count);
   }
-  if ((count > 0 && table == nullptr) || !builder.finish(scene) || !renderer.setup(scene, arena, 1, all_features) ||
+  // Sparse textures: every texel read is checked against the tiles sent
+  // (a scene off the path that has the check reads no texel).
+  general::TexelWatch watch;
+  if (count > 0 && textures->sparse)
+    watch.entries = arena.alloc_zeroed<general::TexelWatch::Entry>(static_cast<size_t>(count));
+  if ((count > 0 && table == nullptr) || (count > 0 && textures->sparse && watch.entries == nullptr) ||
+      !builder.finish(scene) || !renderer.setup(scene, arena, 1, all_features) ||
       (row = arena.alloc_zeroed<uint8_t>(4 * static_cast<size_t>(scene.width))) == nullptr) {
     error.text("scene does not fit in the board's memory (").number(static_cast<int64_t>(arena.capacity())).text(
         " bytes)");
-    return false;
+    return SceneResult::kOutOfMemory;
   }
-  renderer.render(rows, row);
-  return true;
+  if (watch.entries == nullptr || !renderer.can_watch_texels()) {
+    renderer.render(rows, row);
+    return SceneResult::kOk;
+  }
+  for (int i = 0; i < count; ++i) {
+    const send::textures::Received& r = textures->items[i];
+    const int32_t shift = r.form > 0 ? r.form - 1 : 0;
+    watch.entries[i] = general::TexelWatch::Entry{
+        r.rgb, r.width, nullptr, r.tiles,
+        static_cast<uint32_t>(send::texel_filter::tiles_along(static_cast<size_t>(r.width), shift)), shift};
+  }
+  watch.count = count;
+  general::g_texel_watch = &watch;
+  rows.begin(scene.width, scene.height);
+  for (int y = 0; y < scene.height; ++y) {
+    renderer.render_row_watched(y, row);
+    if (watch.missed) {
+      general::g_texel_watch = nullptr;
+      error.text(MINRT_UNSENT_TEXEL_ERROR)
+          .text("texture ")
+          .text(textures->items[watch.miss_entry].name)
+          .text(" at ")
+          .number(watch.miss_col)
+          .text(",")
+          .number(watch.miss_row)
+          .text(", row ")
+          .number(y)
+          .text(" of the image");
+      return SceneResult::kSceneError;
+    }
+    rows.row(y, row);
+  }
+  rows.end();
+  general::g_texel_watch = nullptr;
+  return SceneResult::kOk;
 }
 
 }  // namespace minrt::fw

@@ -265,17 +265,19 @@ extern "C" int main(int argc, char** argv) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
     const auto r = upload.receive_raw(binary.source(), arena, error);
     bool present = false;
-    if (r == minrt::send::scene_check::Result::kOk) {
+    // The table only for an upload that starts with textures.
+    const bool has_textures = r == minrt::send::scene_check::Result::kOk && upload.size() > 0 &&
+                              minrt::send::textures::is_marker(upload.data()[0]);
+    if (has_textures) {
       textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
       if (textures == nullptr) error.text("no room for the texture table");
     }
-    if (r != minrt::send::scene_check::Result::kOk || textures == nullptr ||
-        !upload.view_textures(arena, *textures, present, error)) {
+    if (r != minrt::send::scene_check::Result::kOk ||
+        (has_textures && (textures == nullptr || !upload.view_textures(arena, *textures, present, error)))) {
       send_error(uart, error);
       return r == minrt::send::scene_check::Result::kTooLarge || textures == nullptr ? MINRT_STATUS_OUT_OF_MEMORY
                                                                                   : MINRT_STATUS_SCENE_ERROR;
     }
-    if (!present) textures = nullptr;
   }
   const bool checked = lead == MINRT_CHECK_REQUEST || upload.received();
   minrt::send::raw_check::CheckedSink output(uart_out.sink(), checked);
@@ -287,9 +289,9 @@ extern "C" int main(int argc, char** argv) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
     textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
     if (textures == nullptr) error.text("no room for the texture table");
-    const bool packed = first == MINRT_TEXTURES_DEFLATE_MARKER;
+    const bool packed = first != MINRT_TEXTURES_MARKER;
     if (textures == nullptr ||
-        !(packed ? minrt::send::textures::receive_compressed(binary.source(), arena, *textures, error)
+        !(packed ? minrt::send::textures::receive_compressed(binary.source(), arena, *textures, error, first)
                  : minrt::send::textures::receive(binary.source(), arena, *textures, error))) {
       send_error(uart, error);
       return MINRT_STATUS_OUT_OF_MEMORY;

@@ -36,8 +36,7 @@ SceneResult render_minirt_rows(ByteSource in, RgbaRowSink rows, Arena& arena, in
   scene.width = width;
   scene.height = height;
   scene.camera = minirt::place_camera<Math>(view, width, height);
-  if (!render_general_scene(builder, scene, textures, rows, arena, all_features, error)) return SceneResult::kOutOfMemory;
-  return SceneResult::kOk;
+  return render_general_scene(builder, scene, textures, rows, arena, all_features, error);
 }
 
 }  // namespace minrt::fw

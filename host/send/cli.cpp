@@ -74,6 +74,11 @@ const std::vector<Group>& option_groups() {
            {"format", 0, "p3|p6", "PPM flavour the board sends (default p3)"},
            {"program", 0, "FILE", "course protocol: program sent after 0x99"},
            {"endian", 0, "little|big", "course protocol: byte order of the scene words"},
+           {"full-textures", 0, nullptr,
+            "send every texel of a CS418 scene's textures; by\n"
+            "default only the tiles host-send's own render of the\n"
+            "scene reads go (the board reports any other read,\n"
+            "and with --sim the textures then go whole)"},
        }},
       {"output and checks",
        {
@@ -186,6 +191,7 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
   } else if (name == "allow-any-output") o.allow_any_output = true;
   else if (name == "write-through") o.write_through = true;
   else if (name == "as-received") o.as_received = true;
+  else if (name == "full-textures") o.full_textures = true;
   else if (name == "verify") o.verify_ref = v;
   else if (name == "expect-sha256") {
     if (!valid_sha256_hex(v)) return "bad --expect-sha256: expected 64 hex digits";

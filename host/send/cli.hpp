@@ -38,6 +38,7 @@ struct Options {
   RawCheck check = RawCheck::kAuto;  // raw: --check / --no-check (the CRC-32 trailer)
   std::string program;       // course: --program FILE
   bool big_endian = false;   // course: --endian
+  bool full_textures = false;  // --full-textures: every texel (default: those the render reads, CS418)
   bool list = false;
   bool quiet = false;
   bool progress_forced = false;  // --progress: draw even without a terminal

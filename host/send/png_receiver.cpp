@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include <minrt/serial_protocol.h>
+
 #include "core/base/crc32.hpp"
 
 namespace minrt::send {
@@ -11,6 +13,8 @@ namespace {
 constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 // The writer's chunks are one row (4W + 6 bytes per 64 KiB block) at most.
 constexpr std::uint32_t kMaxChunk = 1u << 24;
+static_assert(static_cast<std::uint32_t>(MINRT_ERROR_MARKER[0]) << 24 > kMaxChunk,
+              "an error line between chunks cannot start a chunk's length");
 
 std::uint32_t be32(const std::uint8_t* p) {
   return static_cast<std::uint32_t>(p[0]) << 24 | static_cast<std::uint32_t>(p[1]) << 16 |
@@ -73,6 +77,13 @@ bool PngReceiver::step(std::uint8_t c) {
       }
       return true;
     case State::kBody: {
+      // A board that stops between rows (a texel of a sparse texture not
+      // sent, MINRT_UNSENT_TEXEL_ERROR) sends its error line there; no
+      // chunk's length starts with that byte (they are below kMaxChunk).
+      if (at_ == 0 && c == static_cast<std::uint8_t>(MINRT_ERROR_MARKER[0]) && seen_ihdr_) {
+        state_ = State::kStart;
+        return start(c, kSignature[0], "PNG");
+      }
       if (at_ < 8) {
         head_[at_++] = c;
         if (at_ == 8) {

@@ -60,6 +60,8 @@ struct Job {
   // 16-bit, a window into an existing file); empty: written as received.
   decltype(Upload::write_as) write_as;
   bool stereo = false;
+  bool sparse = false;  // the textures went sparse: the board may ask for them whole
+  std::string note;     // the summary's third line (how many texels went)
 };
 
 // The scene, recognised as minrt recognises it (formats/registry.hpp) and
@@ -82,11 +84,13 @@ int prepare_scene(Options& o, Job& job) {
   const std::size_t slash = o.scene.rfind('/');
   const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
   UploadRequest request{o.scene, slash == std::string::npos ? "" : o.scene.substr(0, slash + 1), ram - kFirmwareReserve,
-                        o.size_given ? o.spec.width : 0, o.size_given ? o.spec.height : 0};
+                        o.size_given ? o.spec.width : 0, o.size_given ? o.spec.height : 0, !o.full_textures};
   Upload upload;
   if (!upload_format(format.id).prepare(request, scene, upload, why))
     return fail(kExitFirmware, "scene rejected before sending: " + why);
   job.bytes = std::move(upload.bytes);
+  job.sparse = upload.sparse;
+  job.note = upload.note;
   if (upload.width > 0 && format.default_width > 0) {  // a format whose reply size the board takes from --size
     o.spec.width = upload.width;
     o.spec.height = upload.height;
@@ -279,8 +283,21 @@ void close_link(Link& link, const TransferResult& r) {
   std::fprintf(stderr, "host-send: simulator said: %s\n", out.substr(nl == std::string::npos ? 0 : nl + 1).c_str());
 }
 
-int transfer_error(const TransferResult& r) {
+// The board read a texel of a sparse texture that host-send did not send
+// (its render differs from host-send's): the error line says so.
+bool unsent_texel(const TransferResult& r) {
+  return r.status == TransferResult::Status::kFirmwareError && r.message.find(MINRT_UNSENT_TEXEL_ERROR) != std::string::npos;
+}
+
+int transfer_error(const Job& job, const TransferResult& r) {
   if (r.status == TransferResult::Status::kSceneError) return fail(kExitFirmware, "scene rejected before sending: " + r.message);
+  if (unsent_texel(r))
+    return fail(kExitFirmware, "the board read a texel host-send did not send (" + r.message +
+                                   "); reset the board and send again with --full-textures");
+  // A board older than sparse textures does not know their marker.
+  if (r.status == TransferResult::Status::kFirmwareError && job.sparse)
+    return fail(kExitFirmware, "the board reported an error: " + r.message +
+                                   " (the textures went sparse: a board without them needs --full-textures)");
   if (r.status == TransferResult::Status::kFirmwareError)
     return fail(kExitFirmware, "the board reported an error: " + r.message);
   return fail(kExitLink, r.message);
@@ -339,6 +356,7 @@ void print_summary(const Options& o, const Job& job, const Link& link, const Tra
   std::fprintf(stderr, "%s\n", line);
   std::fprintf(stderr, "host-send: sha256 %s%s%s\n", digest.c_str(), recompressed ? " as the board sent it" : "",
                r.crc_checked ? " (CRC-32 trailer checked)" : "");
+  if (!job.note.empty()) std::fprintf(stderr, "host-send: %s\n", job.note.c_str());
 }
 
 // --show: rows the stream could not hand over live (the framed protocol, a
@@ -380,21 +398,35 @@ int run(const Options& options) {
   if (const int status = prepare_scene(o, job); status != kExitOk) return status;
   if (const int status = check_before_sending(o, job); status != kExitOk) return status;
 
-  Link link;
-  if (const int status = find_device(o, link); status != kExitOk) return status;
+  std::unique_ptr<Link> link_held;
   minrt::host::LiveWindow window;
   TransferResult r;
-  {
-    // While the port is open, an interrupt only ends the transfer: the
-    // port's settings go back and the simulator stops first, and the
-    // interrupt takes effect at the end of this block.
-    minrt::host::InterruptsHeld held;
-    if (const int status = open_port(o, link); status != kExitOk) return status;
-    if (o.show && !window.open("host-send: " + o.output, r.message)) warn("not showing the image: " + r.message);
-    r = transfer(o, job, link, window);
-    close_link(link, r);
+  for (;;) {
+    link_held = std::make_unique<Link>();
+    Link& link = *link_held;
+    if (const int status = find_device(o, link); status != kExitOk) return status;
+    {
+      // While the port is open, an interrupt only ends the transfer: the
+      // port's settings go back and the simulator stops first, and the
+      // interrupt takes effect at the end of this block.
+      minrt::host::InterruptsHeld held;
+      if (const int status = open_port(o, link); status != kExitOk) return status;
+      if (o.show && !window.is_open() && !window.open("host-send: " + o.output, r.message))
+        warn("not showing the image: " + r.message);
+      r = transfer(o, job, link, window);
+      close_link(link, r);
+    }
+    // A simulated board that read a texel not sent starts again, and gets
+    // every texel; a real one needs a reset first (transfer_error says so).
+    if (!(o.sim && job.sparse && unsent_texel(r))) break;
+    warn("the board read a texel host-send did not send (" + r.message + "); sending the textures whole");
+    o.full_textures = true;
+    job = Job{};
+    if (const int status = prepare_scene(o, job); status != kExitOk) return status;
+    if (const int status = check_before_sending(o, job); status != kExitOk) return status;
   }
-  if (r.status != TransferResult::Status::kOk) return transfer_error(r);
+  if (r.status != TransferResult::Status::kOk) return transfer_error(job, r);
+  const Link& link = *link_held;
 
   const std::string digest = sha256_hex_of(r.image);
   std::size_t file_bytes = 0;

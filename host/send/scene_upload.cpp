@@ -1,12 +1,14 @@
 #include "scene_upload.hpp"
 
 #include <minrt/limits.hpp>
+#include <minrt/serial_protocol.h>
 
 #include "format_sides/cs418_host.hpp"
 #include "format_sides/eastray_host.hpp"
 #include "format_sides/jaworski_host.hpp"
 #include "format_sides/minirt_host.hpp"
 #include "render_driver.hpp"
+#include "texel_record.hpp"
 #include "texture_preamble.hpp"
 
 namespace minrt::send {
@@ -37,9 +39,21 @@ bool prepare_cs418(const UploadRequest& r, std::string scene, Upload& out, std::
     return false;
   }
   out.output = name;
+  // Only the tiles the render reads, found by rendering the scene here
+  // as the board will (texel_record.hpp), unless --full-textures.
+  TexelMarks marks;
+  const bool recorded = r.sparse_textures && scene.find("texture") != std::string::npos &&
+                        record_cs418_texels(scene, r.base_dir, marks);
   std::string preamble;
-  if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error)) return false;
+  TexelCount count;
+  if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error, recorded ? &marks : nullptr,
+                              &count))
+    return false;
   out.text_at = preamble.size();
+  out.sparse = !preamble.empty() && static_cast<unsigned char>(preamble[0]) == MINRT_TEXTURES_SPARSE_MARKER;
+  if (out.sparse)
+    out.note = "textures: " + std::to_string(count.sent) + " of " + std::to_string(count.texels) +
+               " texels sent, the tiles the render reads (--full-textures sends every one)";
   out.bytes = preamble + scene;
   return true;
 }

@@ -18,11 +18,14 @@ struct UploadRequest {
   std::string base_dir;         // its folder, with the slash, or ""
   std::uint64_t texture_bytes;  // board RAM the textures may take
   int width = 0, height = 0;    // --size (0: not given)
+  bool sparse_textures = true;  // CS418: send only the texture tiles the render reads (not --full-textures)
 };
 
 struct Upload {
   std::string bytes;            // what raw sends before its 0x04 (course and framed: the same behind a header)
   std::size_t text_at = 0;      // where the scene's text starts in `bytes` (after a texture preamble)
+  bool sparse = false;          // the textures went sparse (MINRT_TEXTURES_SPARSE_MARKER)
+  std::string note;             // for the summary: how many texels went
   int width = 0, height = 0;    // the reply's size (0: the board's --size; BMP: the scene's)
   std::string output;           // where the image goes without -o ("": the scene's stem with the reply's extension)
   std::string warning;          // printed before the transfer, when no -o names the output

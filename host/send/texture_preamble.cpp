@@ -25,21 +25,17 @@ using minrt::host::RgbTexture;
 using minrt::host::TextureLoader;
 using minrt::host::TextureProbe;
 
-// The texels of one texture filtered (protocol/texel_filter.hpp) and
-// deflated as a raw stream. False with zlib's reason.
-bool deflate_texels(const RgbTexture& img, std::string& packed, std::string& error) {
-  std::vector<std::uint8_t> residuals(img.rgb.size());
-  texel_filter::filter(img.rgb.data(), static_cast<std::size_t>(img.width), static_cast<std::size_t>(img.height),
-                       residuals.data());
+// `bytes` deflated as a raw stream. False with zlib's reason.
+bool deflate_bytes(const std::vector<std::uint8_t>& bytes, std::string& packed, std::string& error) {
   z_stream z{};
   // Raw deflate (negative window bits): the board checks the texels' own CRC-32.
   if (deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) {
     error = "zlib: cannot start the compressor";
     return false;
   }
-  packed.resize(deflateBound(&z, residuals.size()));
-  z.next_in = residuals.data();
-  z.avail_in = static_cast<uInt>(residuals.size());
+  packed.resize(deflateBound(&z, bytes.size()));
+  z.next_in = const_cast<Bytef*>(bytes.data());
+  z.avail_in = static_cast<uInt>(bytes.size());
   z.next_out = reinterpret_cast<Bytef*>(packed.data());
   z.avail_out = static_cast<uInt>(packed.size());
   const int r = deflate(&z, Z_FINISH);
@@ -52,15 +48,86 @@ bool deflate_texels(const RgbTexture& img, std::string& packed, std::string& err
   return true;
 }
 
+// The texels of one texture filtered (protocol/texel_filter.hpp) and deflated.
+bool deflate_texels(const RgbTexture& img, std::string& packed, std::string& error) {
+  std::vector<std::uint8_t> residuals(img.rgb.size());
+  texel_filter::filter(img.rgb.data(), static_cast<std::size_t>(img.width), static_cast<std::size_t>(img.height),
+                       residuals.data());
+  return deflate_bytes(residuals, packed, error);
+}
+
+// One texture's sparse form (include/minrt/serial_protocol.h): the tiles
+// of 2^(form-1) texels a side that hold a texel read, their texels
+// deflated behind the tile mask, and the CRC-32 of the texture as the
+// board will hold it.
+struct SparseForm {
+  int form = 0;
+  std::uint32_t sent = 0;
+  std::uint32_t crc = 0;
+  std::string packed;
+};
+
+// The smallest sparse form of `img` for the texels `read` marks; false
+// when none is smaller than the whole form would decode to.
+bool best_sparse_form(const RgbTexture& img, const std::vector<std::uint8_t>& read, SparseForm& best,
+                      std::string& error) {
+  const std::size_t w = static_cast<std::size_t>(img.width), h = static_cast<std::size_t>(img.height);
+  bool found = false;
+  // Tiles of 1 to 16 texels a side: small tiles send fewer texels, large
+  // ones a smaller mask and better predictions.
+  for (int shift = 0; shift <= 4 && shift < MINRT_TEXTURES_MAX_TILE_FORM; ++shift) {
+    const std::size_t tx = texel_filter::tiles_along(w, shift);
+    const std::size_t mask = texel_filter::mask_bytes(w, h, shift);
+    std::vector<std::uint8_t> stream(mask, 0);
+    for (std::size_t y = 0; y < h; ++y)
+      for (std::size_t x = 0; x < w; ++x)
+        if (read[y * w + x] != 0) {
+          const std::size_t t = (y >> shift) * tx + (x >> shift);
+          stream[t >> 3] = static_cast<std::uint8_t>(stream[t >> 3] | 1u << (t & 7));
+        }
+    const texel_filter::TileMask m{stream.data(), tx, shift};
+    const std::size_t sent = texel_filter::sent_texels(m, w, h);
+    if (mask + 3 * sent > img.rgb.size()) continue;  // no room for it in the texture's own bytes
+    std::vector<std::uint8_t> view = img.rgb;
+    for (std::size_t y = 0; y < h; ++y)
+      for (std::size_t x = 0; x < w; ++x)
+        if (!m.has(x, y))
+          for (int c = 0; c < 3; ++c) view[(y * w + x) * 3 + c] = texel_filter::kUnsent[c];
+    stream.resize(mask + 3 * sent);
+    texel_filter::filter_sparse(view.data(), w, h, texel_filter::TileMask{stream.data(), tx, shift}, stream.data() + mask);
+    SparseForm f;
+    f.form = shift + 1;
+    f.sent = static_cast<std::uint32_t>(sent);
+    f.crc = crc32(view.data(), view.size());
+    if (!deflate_bytes(stream, f.packed, error)) return false;
+    if (!found || f.packed.size() < best.packed.size()) best = std::move(f);
+    found = true;
+  }
+  return found;
+}
+
 void put_le32(std::string& out, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
 }
 
+// One texture ready for the line: its name, size, whole form (and the
+// lead its in-place decoding needs) and, when it has one, its sparse form.
+struct Packed {
+  std::string name;
+  int width = 0, height = 0;
+  std::string whole;
+  std::uint32_t crc = 0;
+  long long lead = 0;  // how far the board's inflater ran ahead of the stream's start
+  bool sparse = false;
+  SparseForm part;
+};
+
 // `where`: for each name, the "SCENE:LINE:COL: error: " its errors start
-// with (empty: not located).
+// with (empty: not located). `marks`: the texels the render reads, by name
+// (null: send every texel).
 bool assemble(const std::vector<std::string>& names, const std::vector<std::string>& where,
               const std::string& base_dir, TextureProbe probe, TextureLoader load, std::uint64_t board_bytes,
-              std::string& out, std::string& error) {
+              const TexelMarks* marks, std::string& out, std::string& error, TexelCount* count = nullptr) {
   out.clear();
   if (names.empty()) return true;
   if (names.size() > MINRT_MAX_TEXTURES) {
@@ -97,6 +164,59 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
       return false;
     }
   }
+  std::vector<Packed> packed(names.size());
+  bool any_sparse = false;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    Packed& p = packed[k];
+    p.name = names[k];
+    const std::string at = k < where.size() ? where[k] : std::string();
+    RgbTexture img;
+    if (!load(base_dir, p.name, img, error)) {
+      error = at + error;
+      return false;
+    }
+    if (img.width > MINRT_MAX_TEXTURE_SIDE || img.height > MINRT_MAX_TEXTURE_SIDE) {
+      error = at + "texture " + p.name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
+      return false;
+    }
+    p.width = img.width;
+    p.height = img.height;
+    p.crc = crc32(img.rgb.data(), img.rgb.size());
+    if (!deflate_texels(img, p.whole, error)) {
+      error = at + "texture " + p.name + ": " + error;
+      return false;
+    }
+    // The board's own inflater over the stream: the lead, and a check that
+    // the stream gives back these texels' residuals.
+    std::vector<std::uint8_t> check(img.rgb.size());
+    MemorySource src{reinterpret_cast<const std::uint8_t*>(p.whole.data()), p.whole.size()};
+    Inflater inflater;
+    if (inflater.run(src.source(), check.data(), check.size()) != InflateStatus::kDone ||
+        inflater.produced() != check.size()) {
+      error = at + "texture " + p.name + ": the compressed texels do not decode";
+      return false;
+    }
+    p.lead = inflater.lead();
+    const auto read = marks != nullptr ? marks->find(p.name) : TexelMarks::const_iterator{};
+    if (marks != nullptr && read != marks->end() && read->second.size() == img.rgb.size() / 3) {
+      std::string why;
+      if (!best_sparse_form(img, read->second, p.part, why)) {
+        if (!why.empty()) {
+          error = at + "texture " + p.name + ": " + why;
+          return false;
+        }
+      } else if (p.part.packed.size() < p.whole.size()) {
+        p.sparse = true;
+        any_sparse = true;
+      }
+    }
+  }
+  // Sparse textures are decoded into the arena beside the held upload, not
+  // in place: when both do not fit, every texel goes.
+  std::uint64_t sparse_upload = 0;
+  for (const Packed& p : packed) sparse_upload += 32 + p.name.size() + (p.sparse ? p.part.packed.size() : p.whole.size());
+  if (any_sparse && texel_bytes + sparse_upload > board_bytes) any_sparse = false;
+  const int marker = any_sparse ? MINRT_TEXTURES_SPARSE_MARKER : MINRT_TEXTURES_DEFLATE_MARKER;
   // Each texture's header, then its stream; `lead` is the most the texels
   // (counted from the first) run ahead of the bytes read (counted from the
   // marker) while the board's inflater decodes them in place.
@@ -104,49 +224,33 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
   std::uint64_t decoded = 0;
   long long lead = 0;
   const std::size_t header = 6;  // marker, count, lead
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const std::string& name = names[k];
-    const std::string at = k < where.size() ? where[k] : std::string();
-    RgbTexture img;
-    if (!load(base_dir, name, img, error)) {
-      error = at + error;
-      return false;
-    }
-    if (img.width > MINRT_MAX_TEXTURE_SIDE || img.height > MINRT_MAX_TEXTURE_SIDE) {
-      error = at + "texture " + name + " is larger than " + std::to_string(MINRT_MAX_TEXTURE_SIDE) + " pixels a side";
-      return false;
-    }
-    std::string packed;
-    if (!deflate_texels(img, packed, error)) {
-      error = at + "texture " + name + ": " + error;
-      return false;
-    }
-    body.push_back(static_cast<char>(name.size()));
-    body += name;
-    for (int v : {img.width, img.height}) {
+  for (const Packed& p : packed) {
+    const bool part = any_sparse && p.sparse;
+    const std::string& stream = part ? p.part.packed : p.whole;
+    body.push_back(static_cast<char>(p.name.size()));
+    body += p.name;
+    for (int v : {p.width, p.height}) {
       body.push_back(static_cast<char>(v & 0xff));
       body.push_back(static_cast<char>(v >> 8));
     }
-    put_le32(body, static_cast<std::uint32_t>(packed.size()));
-    put_le32(body, crc32(img.rgb.data(), img.rgb.size()));
-    // The board's own inflater over the stream: the lead, and a check that
-    // the stream gives back these texels' residuals.
-    const std::size_t stream_at = header + body.size();
-    std::vector<std::uint8_t> check(img.rgb.size());
-    MemorySource src{reinterpret_cast<const std::uint8_t*>(packed.data()), packed.size()};
-    Inflater inflater;
-    if (inflater.run(src.source(), check.data(), check.size()) != InflateStatus::kDone ||
-        inflater.produced() != check.size()) {
-      error = at + "texture " + name + ": the compressed texels do not decode";
-      return false;
+    put_le32(body, static_cast<std::uint32_t>(stream.size()));
+    put_le32(body, part ? p.part.crc : p.crc);
+    if (any_sparse) {
+      body.push_back(static_cast<char>(part ? p.part.form : 0));
+      put_le32(body, part ? p.part.sent : static_cast<std::uint32_t>(p.width) * static_cast<std::uint32_t>(p.height));
     }
-    lead = std::max(lead, static_cast<long long>(decoded) + inflater.lead() - static_cast<long long>(stream_at));
-    decoded += img.rgb.size();
-    body += packed;
+    const std::size_t stream_at = header + body.size();
+    lead = std::max(lead, static_cast<long long>(decoded) + p.lead - static_cast<long long>(stream_at));
+    decoded += static_cast<std::uint64_t>(p.width) * p.height * 3;
+    body += stream;
+    if (count != nullptr) {
+      count->texels += static_cast<std::uint64_t>(p.width) * p.height;
+      count->sent += part ? p.part.sent : static_cast<std::uint64_t>(p.width) * p.height;
+    }
   }
-  out.push_back(static_cast<char>(MINRT_TEXTURES_DEFLATE_MARKER));
+  out.push_back(static_cast<char>(marker));
   out.push_back(static_cast<char>(names.size()));
-  put_le32(out, static_cast<std::uint32_t>(lead));
+  put_le32(out, any_sparse ? 0u : static_cast<std::uint32_t>(lead));
   out += body;
   return true;
 }
@@ -154,7 +258,8 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
 }  // namespace
 
 bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,
-                            std::uint64_t board_bytes, std::string& out, std::string& error) {
+                            std::uint64_t board_bytes, std::string& out, std::string& error, const TexelMarks* marks,
+                            TexelCount* sent) {
   std::vector<std::string> names;
   std::vector<std::string> where;  // each name's first use, as the reader counts lines and columns
   std::set<std::string> seen;
@@ -169,7 +274,8 @@ bool build_texture_preamble(const std::string& scene, const std::string& scene_n
     const std::size_t col = line.find(name, line.find("texture") + 7) + 1;
     where.push_back(scene_name + ":" + std::to_string(number) + ":" + std::to_string(col) + ": error: ");
   }
-  return assemble(names, where, base_dir, &minrt::host::probe_png_texture, &minrt::host::load_png_texture, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::probe_png_texture, &minrt::host::load_png_texture, board_bytes,
+                  marks, out, error, sent);
 }
 
 bool build_minirt_texture_preamble(const std::string& scene, const std::string& scene_name,
@@ -192,7 +298,8 @@ bool build_minirt_texture_preamble(const std::string& scene, const std::string& 
                       (i == 4 ? "texture" : "bump map") + " \"" + w[i] + "\": ");
     }
   }
-  return assemble(names, where, base_dir, &minrt::host::probe_minirt_texture, &minrt::host::load_minirt_texture, board_bytes, out, error);
+  return assemble(names, where, base_dir, &minrt::host::probe_minirt_texture, &minrt::host::load_minirt_texture, board_bytes,
+                  nullptr, out, error);
 }
 
 bool build_eastray_texture_preamble(const std::vector<std::pair<std::string, std::string>>& maps,
@@ -205,8 +312,8 @@ bool build_eastray_texture_preamble(const std::vector<std::pair<std::string, std
     names.push_back(m.first);
     where.push_back(m.second);
   }
-  return assemble(names, where, base_dir, &minrt::host::probe_eastray_map, &minrt::host::load_eastray_map, board_bytes, out,
-                  error);
+  return assemble(names, where, base_dir, &minrt::host::probe_eastray_map, &minrt::host::load_eastray_map, board_bytes,
+                  nullptr, out, error);
 }
 
 }  // namespace minrt::send

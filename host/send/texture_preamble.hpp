@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "texel_record.hpp"
+
 namespace minrt::send {
 
 // Fills `out` with the preamble for the textures `scene` names (empty when it
@@ -19,8 +21,18 @@ namespace minrt::send {
 // that crosses it, the decoded total and the limit).
 // A texture that cannot be read is reported where the scene names it,
 // "SCENE_NAME:LINE:COL: error: texture PATH: why", as minrt reports it.
+// With `marks` (the texels the render reads, texel_record.hpp) a texture
+// whose read tiles deflate smaller than the whole goes sparse
+// (MINRT_TEXTURES_SPARSE_MARKER); without, or when none does, every texel
+// goes, in the compressed preamble.
+// `sent`, when given, gets the texels that go (sparse: those of the tiles
+// sent) and `texels` all of them.
+struct TexelCount {
+  std::uint64_t texels = 0, sent = 0;
+};
 bool build_texture_preamble(const std::string& scene, const std::string& scene_name, const std::string& base_dir,
-                            std::uint64_t board_bytes, std::string& out, std::string& error);
+                            std::uint64_t board_bytes, std::string& out, std::string& error,
+                            const TexelMarks* marks = nullptr, TexelCount* sent = nullptr);
 
 // The same for a miniRT scene: the PPM files its `spt` lines name, found
 // where minrt finds them (host/texture_files.hpp).

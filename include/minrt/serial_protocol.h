@@ -56,6 +56,26 @@
  * the board's inflater checks that too (core/base/inflate.hpp). */
 #define MINRT_TEXTURES_DEFLATE_MARKER 0x06 /* ASCII ACK: no scene format starts with it */
 
+/* Sparse textures, host-send's default for CS418 scenes: the compressed
+ * preamble's layout under its own marker, each texture's header followed by
+ * its form (1 byte) and the count of texels sent (4 bytes LE):
+ *   form 0: every texel, the stream as above (sent = width*height);
+ *   form k in 1..MINRT_TEXTURES_MAX_TILE_FORM: the texels of some tiles of
+ *   2^(k-1) x 2^(k-1) texels (the last row and column of tiles cut at the
+ *   edges). The stream decodes to the tile mask (one bit a tile, rows of
+ *   tiles top first, least significant bit first, ceil(tiles/8) bytes), then
+ *   the `sent` texels of the marked tiles, row by row, filtered as
+ *   protocol/texel_filter.hpp's sparse form says.
+ * The texels not sent read as MINRT_TEXTURES_UNSENT_RGB, and the CRC-32 is
+ * that of the whole texture so filled. The host sends the tiles its own
+ * render of the scene read; a board that reads any other texel stops with
+ * MINRT_UNSENT_TEXEL_ERROR in its error line, and host-send sends the
+ * textures whole instead. No texture is decoded in place: lead is 0. */
+#define MINRT_TEXTURES_SPARSE_MARKER 0x07 /* ASCII BEL: no scene format starts with it */
+#define MINRT_TEXTURES_MAX_TILE_FORM 8
+#define MINRT_TEXTURES_UNSENT_RGB {0xFF, 0x00, 0xFF}
+#define MINRT_UNSENT_TEXEL_ERROR "texel not sent: "
+
 /* Raw protocol, CRC-32 trailer (host-send asks for it unless --no-check).
  *   Host -> board: MINRT_CHECK_REQUEST as the very first byte, before the
  *   textures marker or the scene.

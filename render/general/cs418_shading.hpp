@@ -10,6 +10,7 @@
 #include "core/base/counter_rng.hpp"
 #include "core/image/srgb.hpp"
 #include "render/general/sampling.hpp"
+#include "render/general/surface_maps.hpp"
 #include "render/general/tracer.hpp"
 
 namespace minrt::general {
@@ -197,7 +198,7 @@ class Cs418Shader : public TracerCore<M, F> {
     }
     const int32_t x = wrap(u * M::from_int(tex.width), tex.width);
     const int32_t y = wrap(v * M::from_int(tex.height), tex.height);
-    const uint8_t* c = tex.rgb + 3 * (static_cast<uint32_t>(y) * static_cast<uint32_t>(tex.width) + static_cast<uint32_t>(x));
+    const uint8_t* c = read_texel<(F & kTexelWatch) != 0>(tex, x, y);
     return {srgb_decode<R>(c[0]), srgb_decode<R>(c[1]), srgb_decode<R>(c[2])};
   }
   // round(x) mod n, for any finite x (non-finite gives 0).

@@ -27,6 +27,9 @@ enum Feature : uint32_t {
   // path carries their code.
   kQuadrics = 1u << 12,  // quadric solids in a CSG tree
   kEastray = 1u << 13,   // EASTRAY's finish (eastray_shading.hpp, eastray_view.hpp)
+  // Not a scene's: every texel read goes to the texel watch
+  // (surface_maps.hpp), on the CS418 path of a render that asks for it.
+  kTexelWatch = 1u << 14,
 };
 inline constexpr uint32_t kAllFeatures = (1u << 12) - 1;
 

@@ -88,6 +88,13 @@ class Renderer {
     return true;
   }
 
+  // render_row_watched renders what render_row would, every texel read
+  // going to g_texel_watch (surface_maps.hpp): host-send's recording, or a
+  // board holding sparse textures. Only for a scene on the CS418 path with
+  // every feature (one with textures always is); render_row is untouched.
+  bool can_watch_texels() const { return path_ == kPathFull; }
+  void render_row_watched(int y, uint8_t* rgba) const { row<kPathFull | kTexelWatch>(y, rgba); }
+
   uint32_t features() const { return features_; }
   uint32_t path() const { return path_; }
   const Bvh<R>& bvh() const { return bvh_; }

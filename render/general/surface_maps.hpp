@@ -40,6 +40,58 @@ inline const uint8_t* texel_at(const model::Texture& tex, int32_t col, int32_t r
   return tex.rgb + 3 * (static_cast<uint32_t>(row) * static_cast<uint32_t>(tex.width) + static_cast<uint32_t>(col));
 }
 
+// The texels a render reads, per texture (known by its texels' address):
+// host-send records them to send only those (sparse textures), and a board
+// that holds sparse textures checks each read against the tiles it got.
+// Only the tracer's paths compiled with kTexelWatch (features.hpp) consult
+// it, through read_texel; every other path reads texels as before.
+struct TexelWatch {
+  struct Entry {
+    const uint8_t* rgb;
+    int32_t width;
+    uint8_t* marks;        // recording: one byte a texel, set to 1 when read
+    const uint8_t* tiles;  // checking: one bit a tile of 2^shift texels a side, rows of tiles top first
+    uint32_t tiles_x;
+    int32_t shift;
+  };
+  Entry* entries = nullptr;
+  int32_t count = 0;
+  // Checking: the first read of a texel not sent.
+  bool missed = false;
+  int32_t miss_entry = 0, miss_col = 0, miss_row = 0;
+
+  void note(const model::Texture& tex, int32_t col, int32_t row) {
+    for (int32_t i = 0; i < count; ++i) {
+      const Entry& e = entries[i];
+      if (e.rgb != tex.rgb) continue;
+      if (e.marks != nullptr) {
+        e.marks[static_cast<uint32_t>(row) * static_cast<uint32_t>(e.width) + static_cast<uint32_t>(col)] = 1;
+      } else if (e.tiles != nullptr && !missed) {
+        const uint32_t t = (static_cast<uint32_t>(row) >> e.shift) * e.tiles_x + (static_cast<uint32_t>(col) >> e.shift);
+        if (((e.tiles[t >> 3] >> (t & 7)) & 1) == 0) {
+          missed = true;
+          miss_entry = i;
+          miss_col = col;
+          miss_row = row;
+        }
+      }
+      return;
+    }
+  }
+};
+
+// The watch the kTexelWatch paths report to; set by whoever renders on
+// such a path (one render at a time: host-send's recording, the board).
+inline TexelWatch* g_texel_watch = nullptr;
+
+// A texel's bytes, noted in the watch on the paths that have it. Always
+// inlined: without the watch it is the address arithmetic alone.
+template <bool kWatch>
+[[gnu::always_inline]] inline const uint8_t* read_texel(const model::Texture& tex, int32_t col, int32_t row) {
+  if constexpr (kWatch) g_texel_watch->note(tex, col, row);
+  return tex.rgb + 3 * (static_cast<uint32_t>(row) * static_cast<uint32_t>(tex.width) + static_cast<uint32_t>(col));
+}
+
 template <class M>
 Vec3<typename M::real> sphere_colour(const Vec3<typename M::real>& q, const model::Texture& tex) {
   using R = typename M::real;

@@ -151,6 +151,7 @@ const std::map<std::string, Sample>& samples() {
       {"format", {{"--format", "p6"}, [](const Options& o) { return o.spec.kind == minrt::send::PpmKind::kP6; }}},
       {"program", {{"--protocol", "course", "--program", "p.bin"}, [](const Options& o) { return o.program == "p.bin"; }}},
       {"endian", {{"--endian", "big"}, [](const Options& o) { return o.big_endian; }}},
+      {"full-textures", {{"--full-textures"}, [](const Options& o) { return o.full_textures; }}},
       {"output", {{"--output", "x.ppm"}, [](const Options& o) { return o.output_given && o.output == "x.ppm"; }}},
       {"write-through", {{"--write-through"}, [](const Options& o) { return o.write_through; }}},
       {"allow-any-output", {{"--allow-any-output"}, [](const Options& o) { return o.allow_any_output; }}},

@@ -58,3 +58,17 @@ TEST_CASE("PngReceiver: damage, a wrong size, a cut and an error line are each c
   CHECK(err.firmware_error());
   CHECK(err.message() == "2:15: not a number: 'O.5'");
 }
+
+TEST_CASE("PngReceiver: an error line between the rows is the board's, not damage", "[png][receiver]") {
+  // A board that stops at a texel of a sparse texture not sent: signature,
+  // IHDR and the first rows' chunks went out, then its error line.
+  const std::string s = stream(5, 3);
+  const std::string whole_rows = s.substr(0, s.find("IDAT") - 4);  // up to the first row's chunk
+  const auto err = fed(whole_rows + "!minrt-error: texel not sent: texture a.png at 3,4, row 0 of the image\n", 5, 3);
+  CHECK(err.firmware_error());
+  CHECK(err.message() == "texel not sent: texture a.png at 3,4, row 0 of the image");
+  // Inside a chunk the same byte is data, caught by the chunk's CRC-32.
+  std::string inside = s;
+  inside[s.find("IDAT") + 6] = '!';
+  CHECK(fed(inside, 5, 3).failed());
+}
