@@ -31,8 +31,12 @@ template <class R>
 bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
   out = WideBvh<R>{};
   if (bvh.node_count == 0) return true;
-  auto* nodes = arena.alloc_zeroed<WideNode>(bvh.node_count);
-  if (nodes == nullptr) return false;
+  // The arena's base is only as aligned as the host's allocator makes it:
+  // one node's room more, and the nodes start at the first cache line in it.
+  auto* raw = arena.alloc_zeroed<uint8_t>(sizeof(WideNode) * static_cast<size_t>(bvh.node_count) + kCacheLine);
+  if (raw == nullptr) return false;
+  const size_t skip = (kCacheLine - reinterpret_cast<uintptr_t>(raw) % kCacheLine) % kCacheLine;
+  auto* nodes = reinterpret_cast<WideNode*>(raw + skip);
   struct Work {
     uint32_t wide, binary;
   };

@@ -8,6 +8,7 @@
 
 #include "render/general/bvh.hpp"
 #include "render/general/ray.hpp"
+#include "render/general/simd_dispatch.hpp"
 #include "render/general/wide_node.hpp"
 
 namespace minrt::general {
@@ -29,43 +30,60 @@ template <class T, int kBytes>
 inline constexpr int kLanes = kBytes / static_cast<int>(sizeof(T));
 static_assert(kWideArity % kLanes<WideBox, 16> == 0 && kWideArity % kLanes<WideBox, 32> == 0, "whole groups per node");
 
-// Bit k set where lane k of a float comparison is true: movmsk on each
-// 16-byte half on x86-64 (SSE, so the same code serves the SSE2 walk and,
-// inlined, the AVX2 one), a loop elsewhere.
-template <int kBytes>
-[[gnu::always_inline]] inline uint32_t lane_bits(const Lanes<int32_t, kBytes>& met) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  uint32_t bits = 0;
-  for (int h = 0; h < kBytes / 16; ++h) {
-    Lanes<float, 16> f;
-    __builtin_memcpy(&f, reinterpret_cast<const char*>(&met) + 16 * h, sizeof f);
-    bits |= static_cast<uint32_t>(__builtin_ia32_movmskps(f)) << (4 * h);
+#if MINRT_AVX2_DISPATCH
+// movmsk on a whole 32-byte vector, for the AVX2 copy only. Not
+// always_inline: GCC refuses that across the target change, and inlines it
+// anyway once its caller sits in an AVX2 function.
+MINRT_TARGET_AVX2 inline uint32_t sign_bits_avx(const Lanes<float, 32>& v) {
+  return static_cast<uint32_t>(__builtin_ia32_movmskps256(v));
+}
+MINRT_TARGET_AVX2 inline uint32_t sign_bits_avx(const Lanes<double, 32>& v) {
+  return static_cast<uint32_t>(__builtin_ia32_movmskpd256(v));
+}
+#endif
+
+// Bit k set where lane k of a comparison result `met` (lanes the size of
+// T: all ones or zero) is true: one movmsk on x86-64, a loop elsewhere.
+template <class T, int kBytes, class Mask>
+[[gnu::always_inline]] inline uint32_t true_lanes(const Mask& met) {
+  static_assert(sizeof(Mask) == kBytes, "one vector");
+#if MINRT_AVX2_DISPATCH
+  Lanes<T, kBytes> v;
+  __builtin_memcpy(&v, &met, sizeof v);
+  if constexpr (kBytes == 32) {
+    return sign_bits_avx(v);
+  } else if constexpr (sizeof(T) == 8) {
+    return static_cast<uint32_t>(__builtin_ia32_movmskpd(v));
+  } else {
+    return static_cast<uint32_t>(__builtin_ia32_movmskps(v));
   }
-  return bits;
 #else
   uint32_t bits = 0;
-  for (int k = 0; k < kLanes<int32_t, kBytes>; ++k) bits |= static_cast<uint32_t>(met[k] & 1) << k;
+  for (int k = 0; k < kLanes<T, kBytes>; ++k) bits |= static_cast<uint32_t>(met[k] != 0) << k;
   return bits;
 #endif
 }
 
-// The box test's margins: the float distances below carry at most about
-// four roundings of 2^-24 each (the origin's is taken care of apart), so
-// entries scaled down and exits scaled up by 2^-20 are never later (or
-// earlier) than the exact ones.
+// The box test's margins: the float distances below carry at most four
+// roundings of 2^-24 each (1/d to float, its product with the margin, the
+// subtraction, the multiplication; the origin's is taken care of apart), so
+// entries taken with 1/d scaled down and exits with 1/d scaled up by 2^-20
+// are never later (or earlier) than the exact ones.
 inline constexpr WideBox kEntryShrink = 1.0f - 1.0f / 1048576.0f;
 inline constexpr WideBox kExitGrow = 1.0f + 1.0f / 1048576.0f;
 
 // A ray as the box test wants it, in floats: for each axis, which bound it
-// meets first (by the sign of the direction), 1/d in every lane, and the
-// origin rounded toward the near bound for entries and away from it for
-// exits, so that the rounding of the origin only widens the boxes.
+// meets first (by the sign of the direction), 1/d in every lane scaled by
+// the entry and exit margins, and the origin rounded toward the near bound
+// for entries and away from it for exits, so that the rounding of the
+// origin only widens the boxes.
 template <int kBytes>
 struct WideRay {
   using V = Lanes<WideBox, kBytes>;
   V near_origin[3];
   V far_origin[3];
-  V inv[3];
+  V near_inv[3];
+  V far_inv[3];
   // Byte offsets in a node of each axis's near and far bounds (lo or hi,
   // by the sign of the direction): loads without a branch.
   uint32_t near_at[3];
@@ -85,7 +103,9 @@ struct WideRay {
       const WideBox near = negative ? f - step : f + step, far = negative ? f + step : f - step;
       near_origin[a] = V{} + near;
       far_origin[a] = V{} + far;
-      inv[a] = V{} + static_cast<WideBox>(i[a]);
+      const WideBox inv = static_cast<WideBox>(i[a]);
+      near_inv[a] = V{} + inv * kEntryShrink;
+      far_inv[a] = V{} + inv * kExitGrow;
       const uint32_t lo = static_cast<uint32_t>(offsetof(WideNode, lo) + sizeof(WideBox) * kWideArity * a);
       const uint32_t hi = static_cast<uint32_t>(offsetof(WideNode, hi) + sizeof(WideBox) * kWideArity * a);
       near_at[a] = negative ? hi : lo;
@@ -114,15 +134,13 @@ template <int kBytes>
       V near, far;
       __builtin_memcpy(&near, base + r.near_at[a] + sizeof(WideBox) * g, sizeof near);
       __builtin_memcpy(&far, base + r.far_at[a] + sizeof(WideBox) * g, sizeof far);
-      const V lo = (near - r.near_origin[a]) * r.inv[a];
-      const V hi = (far - r.far_origin[a]) * r.inv[a];
+      const V lo = (near - r.near_origin[a]) * r.near_inv[a];
+      const V hi = (far - r.far_origin[a]) * r.far_inv[a];
       tmin = lo > tmin ? lo : tmin;
       tmax = hi < tmax ? hi : tmax;
     }
-    tmin = tmin * kEntryShrink;
-    tmax = tmax * kExitGrow;
     __builtin_memcpy(entry + g, &tmin, sizeof tmin);
-    mask |= lane_bits<kBytes>(tmax >= tmin) << g;
+    mask |= true_lanes<WideBox, kBytes>(tmax >= tmin) << g;
   }
   return mask & n.used_mask;
 }
