@@ -153,18 +153,24 @@ template <int kBytes>
 template <int kBytes, class R, class Limit, class Leaf>
 [[gnu::always_inline]] inline void wide_nearest(const WideBvh<R>& tree, const Ray<R>& ray, Limit limit, Leaf leaf) {
   const WideRay<kBytes> r(ray);
+  // A waiting child: its parent's node and lane (node * kWideArity + lane;
+  // its child and count are read from the node when it comes off) and its
+  // entry distance. Eight bytes: the insertion moves one word.
   struct Entry {
-    uint32_t child;
-    uint32_t count;
+    uint32_t slot;
     WideBox t;
   };
   Entry stack[kWideStack];
   int top = 0;
   uint32_t current = 0;
+  // limit() rounded to the nearest float, read again only after a leaf. An
+  // entry distance (a float) beyond it is beyond limit() too: no float lies
+  // between a value and its nearest float.
+  WideBox bound = static_cast<WideBox>(limit());
   for (;;) {
     const WideNode& node = tree.nodes[current];
     WideBox entry[kWideArity];
-    uint32_t mask = wide_entry(node, r, static_cast<WideBox>(limit()), entry);
+    uint32_t mask = wide_entry(node, r, bound, entry);
     if (mask != 0 && (mask & (mask - 1)) == 0) {
       const int k = __builtin_ctz(mask);
       if (node.count[k] == 0) {
@@ -172,13 +178,15 @@ template <int kBytes, class R, class Limit, class Leaf>
         continue;
       }
       leaf(node.child[k], node.count[k]);
+      bound = static_cast<WideBox>(limit());
     } else {
       // Insert the met children in order of decreasing entry distance.
       const int base = top;
+      const uint32_t slot0 = current * static_cast<uint32_t>(kWideArity);
       while (mask != 0) {
         const int k = __builtin_ctz(mask);
         mask &= mask - 1;
-        const Entry e{node.child[k], node.count[k], entry[k]};
+        const Entry e{slot0 + static_cast<uint32_t>(k), entry[k]};
         int i = top++;
         while (i > base && stack[i - 1].t < e.t) {
           stack[i] = stack[i - 1];
@@ -190,13 +198,16 @@ template <int kBytes, class R, class Limit, class Leaf>
     bool descend = false;
     while (top > 0) {
       const Entry e = stack[--top];
-      if (static_cast<R>(e.t) > limit()) continue;
-      if (e.count == 0) {
-        current = e.child;
+      if (e.t > bound) continue;
+      const WideNode& parent = tree.nodes[e.slot / static_cast<uint32_t>(kWideArity)];
+      const uint32_t k = e.slot % static_cast<uint32_t>(kWideArity);
+      if (parent.count[k] == 0) {
+        current = parent.child[k];
         descend = true;
         break;
       }
-      leaf(e.child, e.count);
+      leaf(parent.child[k], parent.count[k]);
+      bound = static_cast<WideBox>(limit());
     }
     if (!descend) return;
   }
