@@ -86,6 +86,7 @@ bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
       if (c.count != 0) {
         node.child[k] = c.index;
         node.count[k] = c.count;
+        node.leaf_mask |= 1u << k;
         continue;
       }
       if (top + 1 > kWideStack || used >= bvh.node_count) return false;

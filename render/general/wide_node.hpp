@@ -35,7 +35,8 @@ struct WideNode {
   uint32_t child[kWideArity];  // an inner child's node, or a leaf's first reference
   uint16_t count[kWideArity];  // a leaf's references; 0 for an inner child
   uint32_t used_mask;          // bit k set: child k is set
-  uint32_t pad[3];             // to kWideNodeBytes
+  uint32_t leaf_mask;          // bit k set: child k is a leaf
+  uint32_t pad[2];             // to kWideNodeBytes
 };
 // Four 64-byte cache lines: the nodes start on a line (wide_bvh.hpp), so
 // a node's boxes are three whole lines.

@@ -226,15 +226,12 @@ template <int kBytes, class R, class Leaf>
   while (top > 0) {
     const WideNode& node = tree.nodes[stack[--top]];
     WideBox entry[kWideArity];
-    uint32_t mask = wide_entry(node, r, wide_limit, entry);
-    while (mask != 0) {
-      const int k = __builtin_ctz(mask);
-      mask &= mask - 1;
-      if (node.count[k] == 0) {
-        stack[top++] = node.child[k];
-      } else if (leaf(node.child[k], node.count[k])) {
-        return true;
-      }
+    const uint32_t mask = wide_entry(node, r, wide_limit, entry);
+    for (uint32_t inner = mask & ~node.leaf_mask; inner != 0; inner &= inner - 1)
+      stack[top++] = node.child[__builtin_ctz(inner)];
+    for (uint32_t leaves = mask & node.leaf_mask; leaves != 0; leaves &= leaves - 1) {
+      const int k = __builtin_ctz(leaves);
+      if (leaf(node.child[k], node.count[k])) return true;
     }
   }
   return false;
