@@ -48,18 +48,35 @@ bool build_sphere_lanes(const model::Scene<R>& scene, Arena& arena, Bvh<R>& tree
   return true;
 }
 
+// A ray's origin and direction in every lane: made once a ray, not once a
+// leaf.
+template <class R, int kBytes>
+struct SphereRay {
+  using V = Lanes<R, kBytes>;
+  V ox, oy, oz, dx, dy, dz;
+  [[gnu::always_inline]] explicit SphereRay(const Ray<R>& ray) {
+    const V zero{};
+    ox = zero + ray.origin.x;
+    oy = zero + ray.origin.y;
+    oz = zero + ray.origin.z;
+    dx = zero + ray.dir.x;
+    dy = zero + ray.dir.y;
+    dz = zero + ray.dir.z;
+  }
+};
+
 // Calls `found(position, t)` for each sphere among positions first ..
-// first+count-1 that the ray meets beyond eps, with hit_sphere's distance.
+// first+count-1 that the ray meets beyond eps, with hit_sphere's distance,
+// in order of position.
 template <class M, int kBytes, class Found>
 [[gnu::always_inline]] inline void spheres_in_leaf(const SphereLanes<typename M::real>& s, uint32_t first,
-                                                   uint32_t count, const Ray<typename M::real>& ray,
+                                                   uint32_t count, const SphereRay<typename M::real, kBytes>& ray,
                                                    typename M::real eps, Found found) {
   using R = typename M::real;
   using V = Lanes<R, kBytes>;
   constexpr int kL = kLanes<R, kBytes>;
   const V zero{};
-  const V ox = zero + ray.origin.x, oy = zero + ray.origin.y, oz = zero + ray.origin.z;
-  const V dx = zero + ray.dir.x, dy = zero + ray.dir.y, dz = zero + ray.dir.z;
+  const V ox = ray.ox, oy = ray.oy, oz = ray.oz, dx = ray.dx, dy = ray.dy, dz = ray.dz;
   const uint32_t end = first + count;
   for (uint32_t p = first; p < end; p += kL) {
     V cx, cy, cz, r2;
@@ -73,8 +90,13 @@ template <class M, int kBytes, class Found>
     const V clx = ox + dx * tc - cx, cly = oy + dy * tc - cy, clz = oz + dz * tc - cz;
     const V d2 = clx * clx + cly * cly + clz * clz;
     const auto met = inside | (~(tc < zero) & ~(r2 < d2));
-    for (int k = 0; k < kL; ++k) {
-      if (met[k] == 0 || p + static_cast<uint32_t>(k) >= end) continue;
+    // The lanes met, less those past the leaf's end.
+    const uint32_t left = end - p;
+    uint32_t bits = true_lanes<R, kBytes>(met);
+    if (left < static_cast<uint32_t>(kL)) bits &= (1u << left) - 1u;
+    while (bits != 0) {
+      const int k = __builtin_ctz(bits);
+      bits &= bits - 1;
       const R under = r2[k] - d2[k];
       const R toff = M::sqrt(under > R(0) ? under : R(0));
       R t = inside[k] != 0 ? tc[k] + toff : tc[k] - toff;

@@ -166,11 +166,12 @@ class TracerCore {
   template <int kBoxBytes, int kBytes>
   [[gnu::always_inline]] inline void nearest_wide(const Ray<R>& ray, R eps, Hit<R>& h) const {
     const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    const SphereRay<R, kBytes> sray(ray);
     wide_nearest<kBoxBytes>(
         bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
           if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
-          spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+          spheres_in_leaf<M, kBytes>(lanes, first, count, sray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
             const uint32_t i = bvh_.refs[pos];
             h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
           });
@@ -182,10 +183,11 @@ class TracerCore {
   template <int kBoxBytes, int kBytes>
   [[gnu::always_inline]] inline bool occluded_wide(const Ray<R>& ray, R eps, R limit, uint32_t* cached) const {
     const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    const SphereRay<R, kBytes> sray(ray);
     return wide_any<kBoxBytes>(bvh_.wide, ray, limit, [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
       if (lanes.r2 != nullptr) {
         uint32_t blocker = kNoBlocker;
-        spheres_in_leaf<M, kBytes>(lanes, first, count, ray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+        spheres_in_leaf<M, kBytes>(lanes, first, count, sray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
           if (t < limit) blocker = pos;
         });
         if (blocker != kNoBlocker) {

@@ -31,8 +31,14 @@ template <class R>
 bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
   out = WideBvh<R>{};
   if (bvh.node_count == 0) return true;
-  auto* nodes = arena.alloc_zeroed<WideNode>(bvh.node_count);
-  if (nodes == nullptr) return false;
+  // The nearest walk's stack names a child as node * kWideArity + lane.
+  if (bvh.node_count > 0xffffffffu / static_cast<uint32_t>(kWideArity)) return false;
+  // The arena's base is only as aligned as the host's allocator makes it:
+  // one node's room more, and the nodes start at the first cache line in it.
+  auto* raw = arena.alloc_zeroed<uint8_t>(sizeof(WideNode) * static_cast<size_t>(bvh.node_count) + kCacheLine);
+  if (raw == nullptr) return false;
+  const size_t skip = (kCacheLine - reinterpret_cast<uintptr_t>(raw) % kCacheLine) % kCacheLine;
+  auto* nodes = reinterpret_cast<WideNode*>(raw + skip);
   struct Work {
     uint32_t wide, binary;
   };
@@ -80,6 +86,7 @@ bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
       if (c.count != 0) {
         node.child[k] = c.index;
         node.count[k] = c.count;
+        node.leaf_mask |= 1u << k;
         continue;
       }
       if (top + 1 > kWideStack || used >= bvh.node_count) return false;

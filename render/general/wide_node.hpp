@@ -35,7 +35,14 @@ struct WideNode {
   uint32_t child[kWideArity];  // an inner child's node, or a leaf's first reference
   uint16_t count[kWideArity];  // a leaf's references; 0 for an inner child
   uint32_t used_mask;          // bit k set: child k is set
+  uint32_t leaf_mask;          // bit k set: child k is a leaf
+  uint32_t pad[2];             // to kWideNodeBytes
 };
+// Four 64-byte cache lines: the nodes start on a line (wide_bvh.hpp), so
+// a node's boxes are three whole lines.
+inline constexpr size_t kWideNodeBytes = 256;
+inline constexpr size_t kCacheLine = 64;
+static_assert(sizeof(WideNode) == kWideNodeBytes, "whole cache lines");
 
 // The spheres' centres and squared radii by position in the BVH's reference
 // array (sphere_lanes.hpp), so that a leaf's spheres load as vectors; other
@@ -75,10 +82,11 @@ using WideSlot = typename WideSlotOf<R>::type;
 inline constexpr uint32_t kSphereLanePad = 4;
 
 // Arena bytes of the wide tree over n primitives (no more nodes than the
-// binary tree has) and its sphere lanes.
+// binary tree has, and room to start them on a cache line) and its sphere
+// lanes.
 template <class R>
 constexpr size_t wide_bvh_footprint(uint32_t n) {
-  return kWideBvh ? Arena::footprint<WideNode>(2 * static_cast<size_t>(n) + 1) +
+  return kWideBvh ? Arena::footprint<WideNode>(2 * static_cast<size_t>(n) + 1) + kCacheLine +
                         4 * Arena::footprint<R>(static_cast<size_t>(n) + kSphereLanePad)
                   : 0;
 }

@@ -8,6 +8,7 @@
 
 #include "render/general/bvh.hpp"
 #include "render/general/ray.hpp"
+#include "render/general/simd_dispatch.hpp"
 #include "render/general/wide_node.hpp"
 
 namespace minrt::general {
@@ -29,43 +30,60 @@ template <class T, int kBytes>
 inline constexpr int kLanes = kBytes / static_cast<int>(sizeof(T));
 static_assert(kWideArity % kLanes<WideBox, 16> == 0 && kWideArity % kLanes<WideBox, 32> == 0, "whole groups per node");
 
-// Bit k set where lane k of a float comparison is true: movmsk on each
-// 16-byte half on x86-64 (SSE, so the same code serves the SSE2 walk and,
-// inlined, the AVX2 one), a loop elsewhere.
-template <int kBytes>
-[[gnu::always_inline]] inline uint32_t lane_bits(const Lanes<int32_t, kBytes>& met) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  uint32_t bits = 0;
-  for (int h = 0; h < kBytes / 16; ++h) {
-    Lanes<float, 16> f;
-    __builtin_memcpy(&f, reinterpret_cast<const char*>(&met) + 16 * h, sizeof f);
-    bits |= static_cast<uint32_t>(__builtin_ia32_movmskps(f)) << (4 * h);
+#if MINRT_AVX2_DISPATCH
+// movmsk on a whole 32-byte vector, for the AVX2 copy only. Not
+// always_inline: GCC refuses that across the target change, and inlines it
+// anyway once its caller sits in an AVX2 function.
+MINRT_TARGET_AVX2 inline uint32_t sign_bits_avx(const Lanes<float, 32>& v) {
+  return static_cast<uint32_t>(__builtin_ia32_movmskps256(v));
+}
+MINRT_TARGET_AVX2 inline uint32_t sign_bits_avx(const Lanes<double, 32>& v) {
+  return static_cast<uint32_t>(__builtin_ia32_movmskpd256(v));
+}
+#endif
+
+// Bit k set where lane k of a comparison result `met` (lanes the size of
+// T: all ones or zero) is true: one movmsk on x86-64, a loop elsewhere.
+template <class T, int kBytes, class Mask>
+[[gnu::always_inline]] inline uint32_t true_lanes(const Mask& met) {
+  static_assert(sizeof(Mask) == kBytes, "one vector");
+#if MINRT_AVX2_DISPATCH
+  Lanes<T, kBytes> v;
+  __builtin_memcpy(&v, &met, sizeof v);
+  if constexpr (kBytes == 32) {
+    return sign_bits_avx(v);
+  } else if constexpr (sizeof(T) == 8) {
+    return static_cast<uint32_t>(__builtin_ia32_movmskpd(v));
+  } else {
+    return static_cast<uint32_t>(__builtin_ia32_movmskps(v));
   }
-  return bits;
 #else
   uint32_t bits = 0;
-  for (int k = 0; k < kLanes<int32_t, kBytes>; ++k) bits |= static_cast<uint32_t>(met[k] & 1) << k;
+  for (int k = 0; k < kLanes<T, kBytes>; ++k) bits |= static_cast<uint32_t>(met[k] != 0) << k;
   return bits;
 #endif
 }
 
-// The box test's margins: the float distances below carry at most about
-// four roundings of 2^-24 each (the origin's is taken care of apart), so
-// entries scaled down and exits scaled up by 2^-20 are never later (or
-// earlier) than the exact ones.
+// The box test's margins: the float distances below carry at most four
+// roundings of 2^-24 each (1/d to float, its product with the margin, the
+// subtraction, the multiplication; the origin's is taken care of apart), so
+// entries taken with 1/d scaled down and exits with 1/d scaled up by 2^-20
+// are never later (or earlier) than the exact ones.
 inline constexpr WideBox kEntryShrink = 1.0f - 1.0f / 1048576.0f;
 inline constexpr WideBox kExitGrow = 1.0f + 1.0f / 1048576.0f;
 
 // A ray as the box test wants it, in floats: for each axis, which bound it
-// meets first (by the sign of the direction), 1/d in every lane, and the
-// origin rounded toward the near bound for entries and away from it for
-// exits, so that the rounding of the origin only widens the boxes.
+// meets first (by the sign of the direction), 1/d in every lane scaled by
+// the entry and exit margins, and the origin rounded toward the near bound
+// for entries and away from it for exits, so that the rounding of the
+// origin only widens the boxes.
 template <int kBytes>
 struct WideRay {
   using V = Lanes<WideBox, kBytes>;
   V near_origin[3];
   V far_origin[3];
-  V inv[3];
+  V near_inv[3];
+  V far_inv[3];
   // Byte offsets in a node of each axis's near and far bounds (lo or hi,
   // by the sign of the direction): loads without a branch.
   uint32_t near_at[3];
@@ -85,7 +103,9 @@ struct WideRay {
       const WideBox near = negative ? f - step : f + step, far = negative ? f + step : f - step;
       near_origin[a] = V{} + near;
       far_origin[a] = V{} + far;
-      inv[a] = V{} + static_cast<WideBox>(i[a]);
+      const WideBox inv = static_cast<WideBox>(i[a]);
+      near_inv[a] = V{} + inv * kEntryShrink;
+      far_inv[a] = V{} + inv * kExitGrow;
       const uint32_t lo = static_cast<uint32_t>(offsetof(WideNode, lo) + sizeof(WideBox) * kWideArity * a);
       const uint32_t hi = static_cast<uint32_t>(offsetof(WideNode, hi) + sizeof(WideBox) * kWideArity * a);
       near_at[a] = negative ? hi : lo;
@@ -114,15 +134,13 @@ template <int kBytes>
       V near, far;
       __builtin_memcpy(&near, base + r.near_at[a] + sizeof(WideBox) * g, sizeof near);
       __builtin_memcpy(&far, base + r.far_at[a] + sizeof(WideBox) * g, sizeof far);
-      const V lo = (near - r.near_origin[a]) * r.inv[a];
-      const V hi = (far - r.far_origin[a]) * r.inv[a];
+      const V lo = (near - r.near_origin[a]) * r.near_inv[a];
+      const V hi = (far - r.far_origin[a]) * r.far_inv[a];
       tmin = lo > tmin ? lo : tmin;
       tmax = hi < tmax ? hi : tmax;
     }
-    tmin = tmin * kEntryShrink;
-    tmax = tmax * kExitGrow;
     __builtin_memcpy(entry + g, &tmin, sizeof tmin);
-    mask |= lane_bits<kBytes>(tmax >= tmin) << g;
+    mask |= true_lanes<WideBox, kBytes>(tmax >= tmin) << g;
   }
   return mask & n.used_mask;
 }
@@ -135,18 +153,24 @@ template <int kBytes>
 template <int kBytes, class R, class Limit, class Leaf>
 [[gnu::always_inline]] inline void wide_nearest(const WideBvh<R>& tree, const Ray<R>& ray, Limit limit, Leaf leaf) {
   const WideRay<kBytes> r(ray);
+  // A waiting child: its parent's node and lane (node * kWideArity + lane;
+  // its child and count are read from the node when it comes off) and its
+  // entry distance. Eight bytes: the insertion moves one word.
   struct Entry {
-    uint32_t child;
-    uint32_t count;
+    uint32_t slot;
     WideBox t;
   };
   Entry stack[kWideStack];
   int top = 0;
   uint32_t current = 0;
+  // limit() rounded to the nearest float, read again only after a leaf. An
+  // entry distance (a float) beyond it is beyond limit() too: no float lies
+  // between a value and its nearest float.
+  WideBox bound = static_cast<WideBox>(limit());
   for (;;) {
     const WideNode& node = tree.nodes[current];
     WideBox entry[kWideArity];
-    uint32_t mask = wide_entry(node, r, static_cast<WideBox>(limit()), entry);
+    uint32_t mask = wide_entry(node, r, bound, entry);
     if (mask != 0 && (mask & (mask - 1)) == 0) {
       const int k = __builtin_ctz(mask);
       if (node.count[k] == 0) {
@@ -154,13 +178,15 @@ template <int kBytes, class R, class Limit, class Leaf>
         continue;
       }
       leaf(node.child[k], node.count[k]);
+      bound = static_cast<WideBox>(limit());
     } else {
       // Insert the met children in order of decreasing entry distance.
       const int base = top;
+      const uint32_t slot0 = current * static_cast<uint32_t>(kWideArity);
       while (mask != 0) {
         const int k = __builtin_ctz(mask);
         mask &= mask - 1;
-        const Entry e{node.child[k], node.count[k], entry[k]};
+        const Entry e{slot0 + static_cast<uint32_t>(k), entry[k]};
         int i = top++;
         while (i > base && stack[i - 1].t < e.t) {
           stack[i] = stack[i - 1];
@@ -172,13 +198,16 @@ template <int kBytes, class R, class Limit, class Leaf>
     bool descend = false;
     while (top > 0) {
       const Entry e = stack[--top];
-      if (static_cast<R>(e.t) > limit()) continue;
-      if (e.count == 0) {
-        current = e.child;
+      if (e.t > bound) continue;
+      const WideNode& parent = tree.nodes[e.slot / static_cast<uint32_t>(kWideArity)];
+      const uint32_t k = e.slot % static_cast<uint32_t>(kWideArity);
+      if (parent.count[k] == 0) {
+        current = parent.child[k];
         descend = true;
         break;
       }
-      leaf(e.child, e.count);
+      leaf(parent.child[k], parent.count[k]);
+      bound = static_cast<WideBox>(limit());
     }
     if (!descend) return;
   }
@@ -197,15 +226,12 @@ template <int kBytes, class R, class Leaf>
   while (top > 0) {
     const WideNode& node = tree.nodes[stack[--top]];
     WideBox entry[kWideArity];
-    uint32_t mask = wide_entry(node, r, wide_limit, entry);
-    while (mask != 0) {
-      const int k = __builtin_ctz(mask);
-      mask &= mask - 1;
-      if (node.count[k] == 0) {
-        stack[top++] = node.child[k];
-      } else if (leaf(node.child[k], node.count[k])) {
-        return true;
-      }
+    const uint32_t mask = wide_entry(node, r, wide_limit, entry);
+    for (uint32_t inner = mask & ~node.leaf_mask; inner != 0; inner &= inner - 1)
+      stack[top++] = node.child[__builtin_ctz(inner)];
+    for (uint32_t leaves = mask & node.leaf_mask; leaves != 0; leaves &= leaves - 1) {
+      const int k = __builtin_ctz(leaves);
+      if (leaf(node.child[k], node.count[k])) return true;
     }
   }
   return false;
