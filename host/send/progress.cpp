@@ -40,6 +40,17 @@ std::string Progress::format_wait(int timeout_s, double waited_s) {
          clock_text(waited_s) + " so far)";
 }
 
+std::string Progress::format_handshake(const std::string& what, int timeout_s, double waited_s) {
+  return "waiting for the board's " + what + ", " + std::to_string(timeout_s) + " s max (" + clock_text(waited_s) +
+         " so far)";
+}
+
+std::string Progress::format_program(std::uint64_t sent, std::uint64_t total) {
+  const double fraction = total > 0 ? static_cast<double>(sent) / static_cast<double>(total) : 1.0;
+  return "sending the program " + progress_bar(fraction) + " " + percent(sent, total) + "  " + std::to_string(sent) +
+         "/" + std::to_string(total) + " B";
+}
+
 std::string Progress::format_reply(std::uint64_t bytes, std::uint64_t expected, int rows, int total_rows, double rate,
                                    std::uint32_t baud, double seconds_left) {
   const std::uint64_t done = total_rows > 0 ? static_cast<std::uint64_t>(rows) : bytes;
@@ -100,6 +111,14 @@ void Progress::update(std::uint64_t bytes, int rows) {
   const double total = by_rows ? total_rows_ : static_cast<double>(expected_);
   line_.draw(format_reply(bytes, expected_, rows, total_rows_, bytes_rate_.rate(), baud_,
                           work_rate_.seconds_left(total > work ? total - work : 0)));
+}
+
+void Progress::handshake(const std::string& what, int timeout_s, double waited_s) {
+  if (line_.enabled() && line_.due()) line_.draw(format_handshake(what, timeout_s, waited_s));
+}
+
+void Progress::sending_program(std::uint64_t sent, std::uint64_t total) {
+  if (line_.enabled() && line_.due()) line_.draw(format_program(sent, total));
 }
 
 void Progress::finish() { line_.clear(); }

@@ -24,12 +24,18 @@ class Progress {
   // starts; once all is sent this shows the wait for the first byte.
   void sending(std::uint64_t sent, std::uint64_t total);
   void update(std::uint64_t bytes, int rows);  // the reply so far
+  // The course protocol's start: the wait for the board's request byte
+  // `what` (at most `timeout_s`), and the program going out.
+  void handshake(const std::string& what, int timeout_s, double waited_s);
+  void sending_program(std::uint64_t sent, std::uint64_t total);
   void finish();                               // clears the line
 
   // The lines' texts (for tests), independent of `enabled`. Rates in bytes
   // per second; seconds_left < 0: not known yet.
   static std::string format_upload(std::uint64_t sent, std::uint64_t total, double rate, double seconds_left);
   static std::string format_wait(int timeout_s, double waited_s);
+  static std::string format_handshake(const std::string& what, int timeout_s, double waited_s);
+  static std::string format_program(std::uint64_t sent, std::uint64_t total);
   static std::string format_reply(std::uint64_t bytes, std::uint64_t expected, int rows, int total_rows, double rate,
                                   std::uint32_t baud, double seconds_left);
 

@@ -3,6 +3,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -24,8 +25,18 @@ namespace {
 // handed to `rx` so its message comes through).
 template <class Receiver>
 bool wait_for(Exchange& ex, uint8_t want, int timeout_ms, Receiver& rx, TransferResult& r, const char* what) {
+  // In slices, so that the progress line shows the wait (a board may take
+  // seconds to boot).
+  constexpr int kSliceMs = 200;
   uint8_t c = 0;
-  const long n = ex.port.read_some(&c, 1, timeout_ms);
+  long n = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int waited = 0; n == 0 && waited < timeout_ms; waited += kSliceMs) {
+    if (ex.progress)
+      ex.progress->handshake(what, timeout_ms / 1000,
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    n = ex.port.read_some(&c, 1, std::min(kSliceMs, timeout_ms - waited));
+  }
   if (n == 1 && c == want) return true;
   if (n == 1) {
     rx.feed(&c, 1);
@@ -66,6 +77,7 @@ bool send_program(Exchange& ex, const std::string& out, TransferResult& r) {
       if (n > 0) {
         sent += static_cast<std::size_t>(n);
         last_tx = Clock::now();
+        if (ex.progress) ex.progress->sending_program(sent, out.size());
       } else if (n < 0 && errno != EAGAIN && errno != EINTR) {
         r.message = "cannot send the program: " + std::string(std::strerror(errno));
         return false;

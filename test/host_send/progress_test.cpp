@@ -12,6 +12,10 @@ TEST_CASE("host-send's lines: upload, the wait with its timeout, the reply", "[p
   CHECK(Progress::format_upload(2500, 10000, 1000, 7.5) ==
         "sending the scene [#####...............]  25%  2500/10000 B  1.0 kB/s  ETA 0:08");
   CHECK(Progress::format_wait(120, 7.2) == "scene sent; waiting for the board's first byte, 120 s max (0:07 so far)");
+  // The course protocol's start: the request bytes, then the program.
+  CHECK(Progress::format_handshake("0x99 (program request)", 30, 3.4) ==
+        "waiting for the board's 0x99 (program request), 30 s max (0:03 so far)");
+  CHECK(Progress::format_program(40960, 81920) == "sending the program [##########..........]  50%  40960/81920 B");
   CHECK(Progress::format_reply(11520, 23040, 5, 10, 11520, 115200, 1.0) ==
         "receiving [##########..........]  50%  5/10 rows  11.5 kB/s (100.0% of 8N1)  ETA 0:01");
   // No rows known (the fraction from the bytes), no baud rate, no estimate yet.
