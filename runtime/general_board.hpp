@@ -47,9 +47,15 @@ inline SceneResult render_general_scene(model::SceneBuilder<Math::real>& builder
         " bytes)");
     return SceneResult::kOutOfMemory;
   }
-  if (watch.entries == nullptr || !renderer.can_watch_texels()) {
+  if (watch.entries == nullptr) {
     renderer.render(rows, row);
     return SceneResult::kOk;
+  }
+  // Only the full path checks its reads; host-send chose the tiles on that
+  // path, so another one here means the two disagree: ask for every texel.
+  if (!renderer.can_watch_texels()) {
+    error.text(MINRT_UNSENT_TEXEL_ERROR).text("sparse textures need the full render path");
+    return SceneResult::kSceneError;
   }
   for (int i = 0; i < count; ++i) {
     const send::textures::Received& r = textures->items[i];
