@@ -64,6 +64,9 @@ struct Job {
   std::string note;     // the summary's third line (how many texels went)
 };
 
+// Progress lines on stderr: on a terminal, or with --progress; never with -q.
+bool progress_wanted(const Options& o) { return !o.quiet && (o.progress_forced || ::isatty(STDERR_FILENO) != 0); }
+
 // The scene, recognised as minrt recognises it (formats/registry.hpp) and
 // checked and prepared by its format's upload row (scene_upload.hpp), which
 // also gives the reply's size and the scene's own output name.
@@ -84,7 +87,8 @@ int prepare_scene(Options& o, Job& job) {
   const std::size_t slash = o.scene.rfind('/');
   const std::uint64_t ram = o.sim_ram_bytes != 0 ? o.sim_ram_bytes : MINRT_RAM_DEFAULT_SIZE;
   UploadRequest request{o.scene, slash == std::string::npos ? "" : o.scene.substr(0, slash + 1), ram - kFirmwareReserve,
-                        o.size_given ? o.spec.width : 0, o.size_given ? o.spec.height : 0, !o.full_textures};
+                        o.size_given ? o.spec.width : 0, o.size_given ? o.spec.height : 0, !o.full_textures,
+                        progress_wanted(o)};
   Upload upload;
   if (!upload_format(format.id).prepare(request, scene, upload, why))
     return fail(kExitFirmware, "scene rejected before sending: " + why);
@@ -250,7 +254,7 @@ Progress make_progress(const Options& o, const Job& job, const Link& link) {
   const std::uint64_t bytes = !job.text_format ? expected_image_bytes(o.spec)
                               : job.png_reply  ? pixels * 4 + static_cast<std::uint64_t>(rows) * 18 + 64
                                                : pixels * 4 + 138;
-  return Progress(!o.quiet && (o.progress_forced || ::isatty(STDERR_FILENO) != 0), bytes, rows,
+  return Progress(progress_wanted(o), bytes, rows,
                   link.paced ? o.port_settings.baud : 0, static_cast<int>(o.first_byte_timeout));
 }
 

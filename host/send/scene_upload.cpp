@@ -43,7 +43,7 @@ bool prepare_cs418(const UploadRequest& r, std::string scene, Upload& out, std::
   // as the board will (texel_record.hpp), unless --full-textures.
   TexelMarks marks;
   const bool recorded = r.sparse_textures && scene.find("texture") != std::string::npos &&
-                        record_cs418_texels(scene, r.base_dir, marks);
+                        record_cs418_texels(scene, r.base_dir, marks, r.progress);
   std::string preamble;
   TexelCount count;
   if (!build_texture_preamble(scene, r.path, r.base_dir, r.texture_bytes, preamble, error, recorded ? &marks : nullptr,

@@ -19,6 +19,7 @@ struct UploadRequest {
   std::uint64_t texture_bytes;  // board RAM the textures may take
   int width = 0, height = 0;    // --size (0: not given)
   bool sparse_textures = true;  // CS418: send only the texture tiles the render reads (not --full-textures)
+  bool progress = false;        // a progress line for long work here (host-send's own render)
 };
 
 struct Upload {

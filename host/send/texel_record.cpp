@@ -9,6 +9,7 @@
 #include "formats/cs418/cs418_limits.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "formats/model/scene_builder.hpp"
+#include "posix/progress_line.hpp"
 #include "render/general/render.hpp"
 #include "texture_files.hpp"
 
@@ -34,8 +35,11 @@ struct NamedFiles {
 
 enum class Pass { kDone, kFailed, kFull };
 
+// Silent for renders shorter than this, as minrt is.
+constexpr double kProgressAfterSeconds = 1.0;
+
 Pass record_in(std::vector<std::uint8_t>& memory, const std::string& scene, const std::string& base_dir,
-               TexelMarks& marks) {
+               TexelMarks& marks, bool show_progress) {
   Arena arena(memory.data(), memory.size());
   model::SceneBuilder<R> builder(arena);
   NamedFiles named{host::TextureFiles(base_dir, &host::load_png_texture, cs418::kMaxTextures, "textures"), {}};
@@ -66,7 +70,13 @@ Pass record_in(std::vector<std::uint8_t>& memory, const std::string& scene, cons
   // One row at a time, in this thread: the watch is not shared.
   general::g_texel_watch = &watch;
   std::vector<std::uint8_t> row(4 * static_cast<std::size_t>(model.width));
-  for (int y = 0; y < model.height; ++y) renderer.render_row_watched(y, row.data());
+  host::WorkProgress progress(show_progress, "host-send: finding the texels the render reads", "rows",
+                              static_cast<std::uint64_t>(model.height), kProgressAfterSeconds);
+  for (int y = 0; y < model.height; ++y) {
+    renderer.render_row_watched(y, row.data());
+    progress.add();
+  }
+  progress.finish();
   general::g_texel_watch = nullptr;
   // Test only: every read becomes a read of a texel not sent, so the tests
   // can see the board catch it and host-send send the textures whole.
@@ -80,12 +90,12 @@ Pass record_in(std::vector<std::uint8_t>& memory, const std::string& scene, cons
 
 }  // namespace
 
-bool record_cs418_texels(const std::string& scene, const std::string& base_dir, TexelMarks& marks) {
+bool record_cs418_texels(const std::string& scene, const std::string& base_dir, TexelMarks& marks, bool progress) {
   // The arena grows until the scene fits, as minrt's does.
   for (std::size_t bytes = std::size_t{16} << 20; bytes <= std::size_t{1} << 30; bytes *= 4) {
     std::vector<std::uint8_t> memory(bytes);
     marks.clear();
-    const Pass p = record_in(memory, scene, base_dir, marks);
+    const Pass p = record_in(memory, scene, base_dir, marks, progress);
     if (p != Pass::kFull) return p == Pass::kDone;
   }
   return false;

@@ -17,6 +17,9 @@ using TexelMarks = std::map<std::string, std::vector<std::uint8_t>>;
 
 // False when the scene does not render here (a scene error, which the board
 // reports itself, or no memory): then nothing is known and every texel goes.
-bool record_cs418_texels(const std::string& scene, const std::string& base_dir, TexelMarks& marks);
+// `progress`: a progress line on stderr if the render takes long (it runs
+// on one thread before the link opens).
+bool record_cs418_texels(const std::string& scene, const std::string& base_dir, TexelMarks& marks,
+                         bool progress = false);
 
 }  // namespace minrt::send
