@@ -28,6 +28,7 @@
 #include "texture_preamble.hpp"
 
 using hs_test::joined;
+using hs_test::write_texture;
 using hs_test::run;
 using hs_test::RunResult;
 using hs_test::send_sim;
@@ -36,36 +37,14 @@ using Bytes = std::vector<std::uint8_t>;
 
 namespace {
 
-void write_texture(const std::string& path, int w, int h, std::uint32_t seed) {
-  minrt::host::RgbaImage img;
-  img.width = w;
-  img.height = h;
-  img.rgba.resize(static_cast<std::size_t>(w) * h * 4);
-  std::uint32_t x = seed;
-  for (int y = 0; y < h; ++y)
-    for (int i = 0; i < w; ++i) {
-      std::uint8_t* p = img.rgba.data() + (static_cast<std::size_t>(y) * w + i) * 4;
-      x = x * 1664525u + 1013904223u;
-      p[0] = static_cast<std::uint8_t>(i * 3 + (x >> 27));  // a gradient with noise
-      p[1] = static_cast<std::uint8_t>(y * 5 + (x >> 28));
-      p[2] = static_cast<std::uint8_t>((i ^ y) + (x >> 26));
-      p[3] = 255;
-    }
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  REQUIRE(f != nullptr);
-  std::string why;
-  REQUIRE(minrt::host::write_png(f, img, why));
-  std::fclose(f);
-}
-
 struct Fixture {
   hs_test::TempDir dir;
   std::string scene = "png 8 8 out.png\ntexture a.png\nsphere 0 0 -2 1\ntexture b.png\nsphere 1 0 -2 1\nsun 1 1 1\n";
   std::vector<Bytes> texels;  // what load_png_texture gives, in order
   TexelMarks marks;
   Fixture() {
-    write_texture(dir.file("a.png"), 64, 40, 1);
-    write_texture(dir.file("b.png"), 5, 300, 2);
+    write_texture(dir.file("a.png"), 64, 40, 1, 3, 5, 27);
+    write_texture(dir.file("b.png"), 5, 300, 2, 3, 5, 27);
     std::string error;
     for (const char* name : {"a.png", "b.png"}) {
       minrt::host::RgbTexture t;

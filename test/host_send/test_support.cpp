@@ -26,6 +26,28 @@ std::string read_file(const std::string& path) {
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 
+void write_texture(const std::string& path, int w, int h, std::uint32_t seed, int gx, int gy, int noise_shift) {
+  minrt::host::RgbaImage img;
+  img.width = w;
+  img.height = h;
+  img.rgba.resize(static_cast<std::size_t>(w) * h * 4);
+  std::uint32_t x = seed;
+  for (int y = 0; y < h; ++y)
+    for (int i = 0; i < w; ++i) {
+      std::uint8_t* p = img.rgba.data() + (static_cast<std::size_t>(y) * w + i) * 4;
+      x = x * 1664525u + 1013904223u;
+      p[0] = static_cast<std::uint8_t>(i * gx + (x >> noise_shift));
+      p[1] = static_cast<std::uint8_t>(y * gy + (x >> (noise_shift + 1)));
+      p[2] = static_cast<std::uint8_t>((i ^ y) + (x >> (noise_shift - 1)));
+      p[3] = 255;
+    }
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  REQUIRE(f != nullptr);
+  std::string why;
+  REQUIRE(minrt::host::write_png(f, img, why));
+  std::fclose(f);
+}
+
 bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
 
 TempDir::TempDir() {

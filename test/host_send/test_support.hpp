@@ -3,6 +3,7 @@
 
 #include <sys/types.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct RunResult {
 RunResult run(const std::vector<std::string>& argv, int timeout_s = 300);
 
 std::string read_file(const std::string& path);
+// A PNG texture of w x h: gradients (x times gx, y times gy) with noise
+// from an LCG seeded with `seed`, shifted down by about noise_shift bits,
+// so that it neither compresses to nothing nor is incompressible.
+void write_texture(const std::string& path, int w, int h, std::uint32_t seed, int gx, int gy, int noise_shift);
 bool file_exists(const std::string& path);
 // A fresh directory under /tmp, removed by the destructor.
 struct TempDir {

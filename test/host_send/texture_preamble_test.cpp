@@ -21,31 +21,10 @@
 #include "texture_preamble.hpp"
 
 using namespace minrt::send;
+using hs_test::write_texture;
 using Bytes = std::vector<std::uint8_t>;
 
 namespace {
-
-void write_texture(const std::string& path, int w, int h, std::uint32_t seed) {
-  minrt::host::RgbaImage img;
-  img.width = w;
-  img.height = h;
-  img.rgba.resize(static_cast<std::size_t>(w) * h * 4);
-  std::uint32_t x = seed;
-  for (int y = 0; y < h; ++y)
-    for (int i = 0; i < w; ++i) {
-      std::uint8_t* p = img.rgba.data() + (static_cast<std::size_t>(y) * w + i) * 4;
-      x = x * 1664525u + 1013904223u;
-      p[0] = static_cast<std::uint8_t>(i * 5 + (x >> 29));  // a gradient with noise
-      p[1] = static_cast<std::uint8_t>(y * 7 + (x >> 30));
-      p[2] = static_cast<std::uint8_t>((i ^ y) + (x >> 28));
-      p[3] = 255;
-    }
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  REQUIRE(f != nullptr);
-  std::string why;
-  REQUIRE(minrt::host::write_png(f, img, why));
-  std::fclose(f);
-}
 
 struct Fixture {
   hs_test::TempDir dir;
@@ -53,8 +32,8 @@ struct Fixture {
   std::string preamble;
   std::vector<Bytes> texels;  // what load_png_texture gives, in order
   Fixture() {
-    write_texture(dir.file("a.png"), 61, 37, 1);
-    write_texture(dir.file("b.png"), 5, 300, 2);
+    write_texture(dir.file("a.png"), 61, 37, 1, 5, 7, 29);
+    write_texture(dir.file("b.png"), 5, 300, 2, 5, 7, 29);
     std::string error;
     REQUIRE(build_texture_preamble(scene, "s.txt", dir.path + "/", 1u << 30, preamble, error));
     for (const char* name : {"a.png", "b.png"}) {
@@ -219,8 +198,8 @@ TEST_CASE("textured scene through host-send and the firmware: compressed on ever
           "[e2e][firmware][textures]") {
   HS_NEEDS_FIRMWARE();
   hs_test::TempDir dir;
-  write_texture(dir.file("a.png"), 61, 37, 1);
-  write_texture(dir.file("b.png"), 5, 300, 2);
+  write_texture(dir.file("a.png"), 61, 37, 1, 5, 7, 29);
+  write_texture(dir.file("b.png"), 5, 300, 2, 5, 7, 29);
   const std::string scene = dir.file("tex.txt");
   {
     std::FILE* f = std::fopen(scene.c_str(), "w");
