@@ -90,13 +90,15 @@ class CheckedUpload {
   const uint8_t* data() const { return data_; }
   size_t size() const { return size_; }
 
+  // Whether the upload starts with a texture preamble.
+  bool has_textures() const { return size_ > 0 && textures::is_marker(data_[0]); }
+
   // Raw: a texture preamble at the start is read in place (`table` points
   // into the upload, or below it for compressed textures,
   // texture_blobs.hpp); text() then starts after it. False with the reason
   // for a preamble that does not parse or decode.
-  bool view_textures(Arena& arena, textures::Table& table, bool& present, Diagnostic& error) {
-    present = size_ > 0 && textures::is_marker(data_[0]);
-    if (!present) return true;
+  bool view_textures(Arena& arena, textures::Table& table, Diagnostic& error) {
+    if (!has_textures()) return true;
     size_t used = 0;
     if (!textures::unpack(data_, size_, arena, table, used, error)) return false;
     text_at_ = used;

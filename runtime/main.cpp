@@ -264,16 +264,14 @@ extern "C" int main(int argc, char** argv) {
   if (lead == MINRT_SCENE_CHECK_REQUEST) {
     minrt::fw::SerialInput binary(uart, options.idle_polls, /*binary=*/true);
     const auto r = upload.receive_raw(binary.source(), arena, error);
-    bool present = false;
     // The table only for an upload that starts with textures.
-    const bool has_textures = r == minrt::send::scene_check::Result::kOk && upload.size() > 0 &&
-                              minrt::send::textures::is_marker(upload.data()[0]);
+    const bool has_textures = r == minrt::send::scene_check::Result::kOk && upload.has_textures();
     if (has_textures) {
       textures = arena.alloc_zeroed<minrt::send::textures::Table>(1);
       if (textures == nullptr) error.text("no room for the texture table");
     }
     if (r != minrt::send::scene_check::Result::kOk ||
-        (has_textures && (textures == nullptr || !upload.view_textures(arena, *textures, present, error)))) {
+        (has_textures && (textures == nullptr || !upload.view_textures(arena, *textures, error)))) {
       send_error(uart, error);
       return r == minrt::send::scene_check::Result::kTooLarge || textures == nullptr ? MINRT_STATUS_OUT_OF_MEMORY
                                                                                   : MINRT_STATUS_SCENE_ERROR;
