@@ -39,13 +39,27 @@ inline int predict_at(const uint8_t* rgb, size_t w, size_t x, size_t y, int p) {
   return predict(a, b, c);
 }
 
+// Plane `p` of the pixel at (x, y) less its prediction, mod 256.
+inline uint8_t residual(const uint8_t* rgb, size_t w, size_t x, size_t y, int p) {
+  return static_cast<uint8_t>((plane(rgb + (y * w + x) * 3, p) - predict_at(rgb, w, x, y, p)) & 0xFF);
+}
+
+// The inverse: the pixel at (x, y) of `rgb` from its three residuals
+// (res[0], res[stride], res[2*stride]) and the finished pixels around it.
+inline void restore(uint8_t* rgb, size_t w, size_t x, size_t y, const uint8_t* res, size_t stride) {
+  int q[3];
+  for (int p = 0; p < 3; ++p) q[p] = (res[p * stride] + predict_at(rgb, w, x, y, p)) & 0xFF;
+  uint8_t* px = rgb + (y * w + x) * 3;
+  px[0] = static_cast<uint8_t>(q[1] + q[0]);
+  px[1] = static_cast<uint8_t>(q[0]);
+  px[2] = static_cast<uint8_t>(q[2] + q[0]);
+}
+
 // Host: the residuals of `rgb` (w*h*3 bytes) into `out` (as many).
 inline void filter(const uint8_t* rgb, size_t w, size_t h, uint8_t* out) {
   for (size_t y = 0; y < h; ++y)
     for (int p = 0; p < 3; ++p)
-      for (size_t x = 0; x < w; ++x)
-        out[y * 3 * w + p * w + x] =
-            static_cast<uint8_t>((plane(rgb + (y * w + x) * 3, p) - predict_at(rgb, w, x, y, p)) & 0xFF);
+      for (size_t x = 0; x < w; ++x) out[y * 3 * w + p * w + x] = residual(rgb, w, x, y, p);
 }
 
 // Board: turns the residuals in `data` back into RGB where they lie;
@@ -54,13 +68,7 @@ inline void unfilter(uint8_t* data, size_t w, size_t h, uint8_t* scratch) {
   for (size_t y = 0; y < h; ++y) {
     uint8_t* row = data + y * 3 * w;
     for (size_t i = 0; i < 3 * w; ++i) scratch[i] = row[i];
-    for (size_t x = 0; x < w; ++x) {
-      int q[3];
-      for (int p = 0; p < 3; ++p) q[p] = (scratch[p * w + x] + predict_at(data, w, x, y, p)) & 0xFF;
-      row[3 * x + 0] = static_cast<uint8_t>(q[1] + q[0]);
-      row[3 * x + 1] = static_cast<uint8_t>(q[0]);
-      row[3 * x + 2] = static_cast<uint8_t>(q[2] + q[0]);
-    }
+    for (size_t x = 0; x < w; ++x) restore(data, w, x, y, scratch + x, w);
   }
 }
 
@@ -108,8 +116,7 @@ inline size_t filter_sparse(const uint8_t* view, size_t w, size_t h, const TileM
   for (size_t y = 0; y < h; ++y)
     for (int p = 0; p < 3; ++p)
       for (size_t x = 0; x < w; ++x)
-        if (m.has(x, y))
-          out[at++] = static_cast<uint8_t>((plane(view + (y * w + x) * 3, p) - predict_at(view, w, x, y, p)) & 0xFF);
+        if (m.has(x, y)) out[at++] = residual(view, w, x, y, p);
   return at;
 }
 
@@ -127,16 +134,11 @@ inline void unfilter_sparse(uint8_t* data, size_t w, size_t h, const TileMask& m
     uint8_t* row = data + y * 3 * w;
     size_t j = 0;
     for (size_t x = 0; x < w; ++x) {
-      if (!m.has(x, y)) {
+      if (m.has(x, y)) {
+        restore(data, w, x, y, scratch + j++, n);
+      } else {
         for (int c = 0; c < 3; ++c) row[3 * x + c] = kUnsent[c];
-        continue;
       }
-      int q[3];
-      for (int p = 0; p < 3; ++p) q[p] = (scratch[p * n + j] + predict_at(data, w, x, y, p)) & 0xFF;
-      ++j;
-      row[3 * x + 0] = static_cast<uint8_t>(q[1] + q[0]);
-      row[3 * x + 1] = static_cast<uint8_t>(q[0]);
-      row[3 * x + 2] = static_cast<uint8_t>(q[2] + q[0]);
     }
   }
 }
