@@ -25,6 +25,7 @@ import zlib
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools", "images"))
 from image_files import parse_p6, write_png  # noqa: E402
+from machine import cpu_model  # noqa: E402
 from safe_output import write_atomically  # noqa: E402
 SECTION = "## The board against double"
 MINIRT_SIZE = "800x600"
@@ -176,12 +177,7 @@ def main():
                 w, h = d[0], d[1]
                 ne, gt1, gt8, mx, far = compare(d[2], f[2])
                 results[name].append((os.path.basename(scene), w * h, ne, gt1, gt8, mx, far, d[2], f[2], w, h))
-    cpu = "unknown CPU"
-    with open("/proc/cpuinfo") as info:
-        for line in info:
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
+    cpu = cpu_model()
     lines = [SECTION, "",
              "Every scene of `shared/formats` rendered by minrt in float with the portable shims (what the "
              "board computes: the `host_send` tests check the board sends exactly these pixels) against "

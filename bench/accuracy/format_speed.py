@@ -25,6 +25,7 @@ import time
 import numpy as np
 from PIL import Image
 
+from machine import cpu_model
 from safe_output import install_signal_handlers, write_atomically
 import board_vs_double
 import plots
@@ -178,13 +179,6 @@ def build_kind(minrt):
     return (f"a {found.get('CMAKE_BUILD_TYPE') or 'default'} build "
             + ("with" if found.get("MINRT_PGO", "").upper() in ("ON", "1", "TRUE") else "without")
             + " profile-guided optimisation")
-
-
-def cpu_model():
-    for line in open("/proc/cpuinfo"):
-        if line.startswith("model name"):
-            return line.split(":", 1)[1].strip()
-    return "unknown CPU"
 
 
 def replace_section(doc, section):

@@ -21,6 +21,7 @@ import time
 
 import numpy as np
 
+from machine import cpu_model
 from safe_output import install_signal_handlers, write_atomically
 
 import plots
@@ -229,17 +230,6 @@ def heat_map(scene, images, outpath):
     plots.heat_map(f"{scene} at {SIZE}x{SIZE}: largest channel error per pixel against double/libm",
                    images[REF], "double/libm",
                    [(name, images[tag]) for name, tag in VARIANTS if tag != REF], outpath)
-
-
-def cpu_model():
-    """The CPU the figures were measured on, as /proc/cpuinfo names it."""
-    try:
-        for line in open("/proc/cpuinfo"):
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return "unknown CPU"
 
 
 class Progress:
