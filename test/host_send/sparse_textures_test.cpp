@@ -144,16 +144,6 @@ TEST_CASE("sparse textures: the tiles read come back exactly from the line and i
 TEST_CASE("sparse textures: cuts and damage are refused with the texture's name", "[textures]") {
   Fixture f;
   const std::string pre = f.build(&f.marks);
-  auto unpack_error = [&](const std::string& bytes) {
-    std::vector<std::uint8_t> mem(1 << 20);
-    minrt::Arena arena(mem.data(), mem.size());
-    textures::Table table{};
-    minrt::Diagnostic error;
-    std::size_t used = 0;
-    const bool ok = textures::unpack(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), arena, table,
-                                     used, error);
-    return ok ? std::string() : error_of(error);
-  };
   // Marker, count, lead (4), then a.png's name length, name, size (4),
   // compressed size, CRC-32, form, texels sent.
   const std::size_t a_crc = 6 + 1 + 5 + 4 + 4;
@@ -161,16 +151,16 @@ TEST_CASE("sparse textures: cuts and damage are refused with the texture's name"
   const std::size_t a_sent = a_form + 1;
   std::string bad = pre;
   bad[a_crc] ^= 1;
-  CHECK(unpack_error(bad) == "texture a.png: texels damaged (CRC-32 mismatch)");
+  CHECK(hs_test::unpack_textures_error(bad) == "texture a.png: texels damaged (CRC-32 mismatch)");
   bad = pre;
   bad[a_form] = MINRT_TEXTURES_MAX_TILE_FORM + 1;
-  CHECK(unpack_error(bad) == "texture a.png: bad form");
+  CHECK(hs_test::unpack_textures_error(bad) == "texture a.png: bad form");
   bad = pre;
   bad[a_sent] = static_cast<char>(bad[a_sent] + 1);  // one texel more than the tiles hold
-  CHECK(unpack_error(bad).rfind("texture a.png: ", 0) == 0);
+  CHECK(hs_test::unpack_textures_error(bad).rfind("texture a.png: ", 0) == 0);
   for (std::size_t n = 0; n < pre.size(); ++n) {
     INFO("cut at " << n);
-    CHECK(!unpack_error(pre.substr(0, n)).empty());
+    CHECK(!hs_test::unpack_textures_error(pre.substr(0, n)).empty());
     minrt::MemorySource line{reinterpret_cast<const std::uint8_t*>(pre.data()) + 1, n == 0 ? 0 : n - 1};
     std::vector<std::uint8_t> mem(1 << 20);
     minrt::Arena arena(mem.data(), mem.size());
@@ -179,7 +169,7 @@ TEST_CASE("sparse textures: cuts and damage are refused with the texture's name"
     CHECK_FALSE(textures::receive_compressed(line.source(), arena, table, error, MINRT_TEXTURES_SPARSE_MARKER));
   }
   // The compressed form keeps its message for a header cut after the size.
-  CHECK(unpack_error(pre.substr(0, a_crc)) == "texture preamble cut off in the header of a.png");
+  CHECK(hs_test::unpack_textures_error(pre.substr(0, a_crc)) == "texture preamble cut off in the header of a.png");
 }
 
 TEST_CASE("sparse textures: textures read whole, or no record, go in the compressed preamble as before", "[textures]") {

@@ -17,7 +17,9 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/base/arena.hpp"
 #include "png_io.hpp"
+#include "protocol/texture_blobs.hpp"
 
 namespace hs_test {
 
@@ -46,6 +48,17 @@ void write_texture(const std::string& path, int w, int h, std::uint32_t seed, in
   std::string why;
   REQUIRE(minrt::host::write_png(f, img, why));
   std::fclose(f);
+}
+
+std::string unpack_textures_error(const std::string& preamble) {
+  std::vector<std::uint8_t> mem(1 << 20);
+  minrt::Arena arena(mem.data(), mem.size());
+  minrt::send::textures::Table table{};
+  minrt::Diagnostic error;
+  std::size_t used = 0;
+  const bool ok = minrt::send::textures::unpack(reinterpret_cast<const std::uint8_t*>(preamble.data()), preamble.size(),
+                                                arena, table, used, error);
+  return ok ? std::string() : std::string(error.message, error.length);
 }
 
 bool file_exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }

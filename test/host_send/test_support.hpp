@@ -21,6 +21,9 @@ struct RunResult {
 RunResult run(const std::vector<std::string>& argv, int timeout_s = 300);
 
 std::string read_file(const std::string& path);
+// The board's in-memory texture preamble reader (textures::unpack) on
+// `preamble` (from its marker) in a 1 MiB arena: its error, "" when it reads.
+std::string unpack_textures_error(const std::string& preamble);
 // A PNG texture of w x h: gradients (x times gx, y times gy) with noise
 // from an LCG seeded with `seed`, shifted down by about noise_shift bits,
 // so that it neither compresses to nothing nor is incompressible.

@@ -130,24 +130,14 @@ TEST_CASE("texture preamble: damage and cuts are refused with the texture's name
   const std::size_t a_crc = 6 + 1 + 5 + 4 + 4;
   const std::size_t a_stream = a_crc + 4;
   const std::uint32_t a_size = le32(f.data() + a_crc - 4);
-  auto unpack_error = [&](const std::string& bytes) {
-    std::vector<std::uint8_t> mem(1 << 20);
-    minrt::Arena arena(mem.data(), mem.size());
-    textures::Table table{};
-    minrt::Diagnostic error;
-    std::size_t used = 0;
-    const bool ok = textures::unpack(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), arena, table,
-                                     used, error);
-    return ok ? std::string() : std::string(error.message, error.length);
-  };
   std::string crc = f.preamble;
   crc[a_crc] ^= 1;
-  CHECK(unpack_error(crc) == "texture a.png: texels damaged (CRC-32 mismatch)");
+  CHECK(hs_test::unpack_textures_error(crc) == "texture a.png: texels damaged (CRC-32 mismatch)");
   int named = 0;
   for (std::uint32_t i = 0; i < a_size; ++i) {
     std::string bad = f.preamble;
     bad[a_stream + i] ^= 0x21;
-    const std::string e = unpack_error(bad);
+    const std::string e = hs_test::unpack_textures_error(bad);
     INFO("byte " << i << ": " << e);
     CHECK(!e.empty());
     if (e.rfind("texture a.png: ", 0) == 0) ++named;
@@ -155,7 +145,7 @@ TEST_CASE("texture preamble: damage and cuts are refused with the texture's name
   CHECK(named == static_cast<int>(a_size));
   for (std::size_t n = 0; n < f.preamble.size(); ++n) {
     INFO("cut at " << n);
-    CHECK(!unpack_error(f.preamble.substr(0, n)).empty());
+    CHECK(!hs_test::unpack_textures_error(f.preamble.substr(0, n)).empty());
     minrt::MemorySource line{f.data() + 1, n == 0 ? 0 : n - 1};
     std::vector<std::uint8_t> mem(1 << 20);
     minrt::Arena arena(mem.data(), mem.size());
