@@ -97,6 +97,9 @@ template <class M, int kBytes, class Found>
     while (bits != 0) {
       const int k = __builtin_ctz(bits);
       bits &= bits - 1;
+      // A triangle's or the padding's lane (r2 = -1) is met only by a ray
+      // with a NaN in it; its position names no sphere.
+      if (r2[k] < R(0)) continue;
       const R under = r2[k] - d2[k];
       const R toff = M::sqrt(under > R(0) ? under : R(0));
       R t = inside[k] != 0 ? tc[k] + toff : tc[k] - toff;

@@ -117,3 +117,17 @@ TEST_CASE("wide BVH: binary, 16-byte and widest walks give the same bytes", "[ge
     }
   }
 }
+
+// A sphere whose squared radius overflows float makes the lane arithmetic
+// of a leaf's triangle lanes NaN, and a NaN compare "meets" every lane; the
+// walk must still offer only spheres (it once read a sphere at a triangle's
+// index and crashed).
+TEST_CASE("wide BVH: a sphere too large for float beside triangles", "[general][bvh]") {
+  const std::string text =
+      "png 12 10 x.png\nshininess 1\nxyz 0 0 2\nxyz 1 0 2\nxyz 1 1 2\ntri 1 2 3\n"
+      "xyz -1 0 -3\nxyz 0 1 -3\nxyz 1 0 -3\ntri -3 -2 -1\nsun 0 1 1\nsphere 0 2 1 22222222222222222220\n"
+      "color 1 0 0\nsphere 0 0 -2 0.5\n";
+  check_walks<LibmDouble>(text);
+  check_walks<LibmFloat>(text);
+  check_walks<PortableFloat>(text);
+}
