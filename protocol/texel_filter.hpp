@@ -13,6 +13,8 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "core/base/tile_mask.hpp"
+
 namespace minrt::send::texel_filter {
 
 // Median edge detector: the smaller or larger of left and up when the
@@ -72,20 +74,8 @@ inline void unfilter(uint8_t* data, size_t w, size_t h, uint8_t* scratch) {
   }
 }
 
-// Sparse textures (MINRT_TEXTURES_SPARSE_MARKER): the tiles sent, one bit
-// a tile of 2^shift texels a side, rows of tiles top first.
-struct TileMask {
-  const uint8_t* bits;
-  size_t tiles_x;
-  int shift;
-  bool has(size_t x, size_t y) const {
-    const size_t t = (y >> shift) * tiles_x + (x >> shift);
-    return ((bits[t >> 3] >> (t & 7)) & 1) != 0;
-  }
-};
-
-inline size_t tiles_along(size_t n, int shift) { return (n + (size_t{1} << shift) - 1) >> shift; }
-inline size_t mask_bytes(size_t w, size_t h, int shift) { return (tiles_along(w, shift) * tiles_along(h, shift) + 7) / 8; }
+// Sparse textures (MINRT_TEXTURES_SPARSE_MARKER) send only the tiles a
+// TileMask (core/base/tile_mask.hpp) marks.
 
 // Texels of row y in marked tiles.
 inline size_t row_sent(const TileMask& m, size_t w, size_t y) {

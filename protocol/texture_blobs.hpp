@@ -246,7 +246,7 @@ inline bool decode(ByteSource stream, Received& r, uint8_t* out, const uint8_t* 
                    Diagnostic& error) {
   const size_t bytes = texel_bytes(r);
   const int shift = r.form - 1;
-  const size_t mask = r.form == 0 ? 0 : texel_filter::mask_bytes(r.width, r.height, shift);
+  const size_t mask = r.form == 0 ? 0 : tile_mask_bytes(r.width, r.height, shift);
   uint8_t* tiles = mask == 0 ? nullptr : arena.alloc_uninit<uint8_t>(mask);
   if (mask != 0 && tiles == nullptr) {
     error.text("texture ").text(r.name).text(": no room for its tile mask");
@@ -272,7 +272,7 @@ inline bool decode(ByteSource stream, Received& r, uint8_t* out, const uint8_t* 
   if (whole && r.form == 0) texel_filter::unfilter(out, static_cast<size_t>(r.width), static_cast<size_t>(r.height), scratch);
   if (whole && r.form != 0) {
     for (size_t i = 0; i < mask; ++i) tiles[i] = at[i];
-    const texel_filter::TileMask m{tiles, texel_filter::tiles_along(static_cast<size_t>(r.width), shift), shift};
+    const TileMask m{tiles, tiles_along(static_cast<size_t>(r.width), shift), shift};
     tiles_match = texel_filter::sent_texels(m, static_cast<size_t>(r.width), static_cast<size_t>(r.height)) == r.sent;
     if (tiles_match)
       texel_filter::unfilter_sparse(out, static_cast<size_t>(r.width), static_cast<size_t>(r.height), m, at + mask,

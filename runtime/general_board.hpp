@@ -61,8 +61,7 @@ inline SceneResult render_general_scene(model::SceneBuilder<Math::real>& builder
     const send::textures::Received& r = textures->items[i];
     const int32_t shift = r.form > 0 ? r.form - 1 : 0;
     watch.entries[i] = general::TexelWatch::Entry{
-        r.rgb, r.width, nullptr, r.tiles,
-        static_cast<uint32_t>(send::texel_filter::tiles_along(static_cast<size_t>(r.width), shift)), shift};
+        r.rgb, r.width, nullptr, TileMask{r.tiles, tiles_along(static_cast<size_t>(r.width), shift), shift}};
   }
   watch.count = count;
   general::g_texel_watch = &watch;

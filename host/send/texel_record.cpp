@@ -62,7 +62,7 @@ Pass record_in(std::vector<std::uint8_t>& memory, const std::string& scene, cons
   for (std::uint32_t i = 0; i < model.texture_count; ++i) {
     const model::Texture& t = model.textures[i];
     read[i].assign(static_cast<std::size_t>(t.width) * static_cast<std::size_t>(t.height), 0);
-    entries[i] = general::TexelWatch::Entry{t.rgb, t.width, read[i].data(), nullptr, 0, 0};
+    entries[i] = general::TexelWatch::Entry{t.rgb, t.width, read[i].data(), {}};
   }
   general::TexelWatch watch;
   watch.entries = entries.data();

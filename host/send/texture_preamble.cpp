@@ -76,8 +76,8 @@ bool best_sparse_form(const RgbTexture& img, const std::vector<std::uint8_t>& re
   // Tiles of 1 to 16 texels a side: small tiles send fewer texels, large
   // ones a smaller mask and better predictions.
   for (int shift = 0; shift <= 4 && shift < MINRT_TEXTURES_MAX_TILE_FORM; ++shift) {
-    const std::size_t tx = texel_filter::tiles_along(w, shift);
-    const std::size_t mask = texel_filter::mask_bytes(w, h, shift);
+    const std::size_t tx = tiles_along(w, shift);
+    const std::size_t mask = tile_mask_bytes(w, h, shift);
     std::vector<std::uint8_t> stream(mask, 0);
     for (std::size_t y = 0; y < h; ++y)
       for (std::size_t x = 0; x < w; ++x)
@@ -85,7 +85,7 @@ bool best_sparse_form(const RgbTexture& img, const std::vector<std::uint8_t>& re
           const std::size_t t = (y >> shift) * tx + (x >> shift);
           stream[t >> 3] = static_cast<std::uint8_t>(stream[t >> 3] | 1u << (t & 7));
         }
-    const texel_filter::TileMask m{stream.data(), tx, shift};
+    const TileMask m{stream.data(), tx, shift};
     const std::size_t sent = texel_filter::sent_texels(m, w, h);
     if (mask + 3 * sent > img.rgb.size()) continue;  // no room for it in the texture's own bytes
     std::vector<std::uint8_t> view = img.rgb;
@@ -94,7 +94,7 @@ bool best_sparse_form(const RgbTexture& img, const std::vector<std::uint8_t>& re
         if (!m.has(x, y))
           for (int c = 0; c < 3; ++c) view[(y * w + x) * 3 + c] = texel_filter::kUnsent[c];
     stream.resize(mask + 3 * sent);
-    texel_filter::filter_sparse(view.data(), w, h, texel_filter::TileMask{stream.data(), tx, shift}, stream.data() + mask);
+    texel_filter::filter_sparse(view.data(), w, h, TileMask{stream.data(), tx, shift}, stream.data() + mask);
     SparseForm f;
     f.form = shift + 1;
     f.sent = static_cast<std::uint32_t>(sent);

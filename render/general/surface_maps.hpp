@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "core/base/tile_mask.hpp"
 #include "formats/model/scene.hpp"
 
 namespace minrt::general {
@@ -49,10 +50,8 @@ struct TexelWatch {
   struct Entry {
     const uint8_t* rgb;
     int32_t width;
-    uint8_t* marks;        // recording: one byte a texel, set to 1 when read
-    const uint8_t* tiles;  // checking: one bit a tile of 2^shift texels a side, rows of tiles top first
-    uint32_t tiles_x;
-    int32_t shift;
+    uint8_t* marks;  // recording: one byte a texel, set to 1 when read
+    TileMask tiles;  // checking (bits set): the tiles the board got
   };
   Entry* entries = nullptr;
   int32_t count = 0;
@@ -66,9 +65,8 @@ struct TexelWatch {
       if (e.rgb != tex.rgb) continue;
       if (e.marks != nullptr) {
         e.marks[static_cast<uint32_t>(row) * static_cast<uint32_t>(e.width) + static_cast<uint32_t>(col)] = 1;
-      } else if (e.tiles != nullptr && !missed) {
-        const uint32_t t = (static_cast<uint32_t>(row) >> e.shift) * e.tiles_x + (static_cast<uint32_t>(col) >> e.shift);
-        if (((e.tiles[t >> 3] >> (t & 7)) & 1) == 0) {
+      } else if (e.tiles.bits != nullptr && !missed) {
+        if (!e.tiles.has(static_cast<uint32_t>(col), static_cast<uint32_t>(row))) {
           missed = true;
           miss_entry = i;
           miss_col = col;

@@ -70,7 +70,7 @@ void check_sparse_texture(const textures::Received& r, const Bytes& want, const 
   REQUIRE(r.form >= 1);
   REQUIRE(r.tiles != nullptr);
   const int shift = r.form - 1;
-  const texel_filter::TileMask m{r.tiles, texel_filter::tiles_along(static_cast<std::size_t>(r.width), shift), shift};
+  const minrt::TileMask m{r.tiles, minrt::tiles_along(static_cast<std::size_t>(r.width), shift), shift};
   std::size_t sent = 0;
   for (int y = 0; y < r.height; ++y)
     for (int x = 0; x < r.width; ++x) {
