@@ -25,5 +25,15 @@ for t in $targets; do
   work=$(mktemp -d "${TMPDIR:-/tmp}/minrt-fuzz-$t.XXXXXX")
   cp -r "$root/fuzz/corpus/$t/." "$work/"
   echo "fuzz: $t for $seconds s, corpus $work"
-  "$exe" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$work"
+  status=0
+  "$exe" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 "$work" || status=$?
+  if (( status != 0 )); then
+    # The input that failed, in the log too: a CI run keeps only its output.
+    for f in crash-* leak-* timeout-* oom-*; do
+      [[ -f $f && $f -nt $work ]] || continue
+      echo "fuzz: $t failed on $PWD/$f ($(stat -c %s "$f") bytes; first 1 KiB):" >&2
+      head -c 1024 "$f" | od -A d -c >&2
+    done
+    exit "$status"
+  fi
 done
