@@ -26,10 +26,11 @@ using minrt::host::TextureLoader;
 using minrt::host::TextureProbe;
 
 // `bytes` deflated as a raw stream. False with zlib's reason.
-bool deflate_bytes(const std::vector<std::uint8_t>& bytes, std::string& packed, std::string& error) {
+bool deflate_bytes(const std::vector<std::uint8_t>& bytes, std::string& packed, std::string& error,
+                   int level = Z_BEST_COMPRESSION) {
   z_stream z{};
   // Raw deflate (negative window bits): the board checks the texels' own CRC-32.
-  if (deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) {
+  if (deflateInit2(&z, level, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) {
     error = "zlib: cannot start the compressor";
     return false;
   }
@@ -49,11 +50,12 @@ bool deflate_bytes(const std::vector<std::uint8_t>& bytes, std::string& packed, 
 }
 
 // The texels of one texture filtered (protocol/texel_filter.hpp) and deflated.
-bool deflate_texels(const RgbTexture& img, std::string& packed, std::string& error) {
+bool deflate_texels(const RgbTexture& img, std::string& packed, std::string& error,
+                    int level = Z_BEST_COMPRESSION) {
   std::vector<std::uint8_t> residuals(img.rgb.size());
   texel_filter::filter(img.rgb.data(), static_cast<std::size_t>(img.width), static_cast<std::size_t>(img.height),
                        residuals.data());
-  return deflate_bytes(residuals, packed, error);
+  return deflate_bytes(residuals, packed, error, level);
 }
 
 // One texture's sparse form (include/minrt/serial_protocol.h): the tiles
@@ -73,6 +75,7 @@ bool best_sparse_form(const RgbTexture& img, const std::vector<std::uint8_t>& re
                       std::string& error) {
   const std::size_t w = static_cast<std::size_t>(img.width), h = static_cast<std::size_t>(img.height);
   bool found = false;
+  std::vector<std::uint8_t> best_stream;
   // Tiles of 1 to 16 texels a side: small tiles send fewer texels, large
   // ones a smaller mask and better predictions.
   for (int shift = 0; shift <= 4 && shift < MINRT_TEXTURES_MAX_TILE_FORM; ++shift) {
@@ -99,11 +102,15 @@ bool best_sparse_form(const RgbTexture& img, const std::vector<std::uint8_t>& re
     f.form = shift + 1;
     f.sent = static_cast<std::uint32_t>(sent);
     f.crc = crc32(view.data(), view.size());
-    if (!deflate_bytes(stream, f.packed, error)) return false;
-    if (!found || f.packed.size() < best.packed.size()) best = std::move(f);
+    // Ranked by a fast deflate; only the winner is deflated hard.
+    if (!deflate_bytes(stream, f.packed, error, Z_BEST_SPEED)) return false;
+    if (!found || f.packed.size() < best.packed.size()) {
+      best = std::move(f);
+      best_stream = std::move(stream);
+    }
     found = true;
   }
-  return found;
+  return found && deflate_bytes(best_stream, best.packed, error);
 }
 
 void put_le32(std::string& out, std::uint32_t v) {
@@ -165,12 +172,35 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
     }
   }
   std::vector<Packed> packed(names.size());
+  std::vector<RgbTexture> images(names.size());
+  // The whole form, deflated hard, and the lead its in-place decoding
+  // needs, found by running the board's own inflater over it (which also
+  // checks that the stream gives back these texels' residuals).
+  auto pack_whole = [&](std::size_t k) {
+    Packed& p = packed[k];
+    const RgbTexture& img = images[k];
+    const std::string at = k < where.size() ? where[k] : std::string();
+    if (!deflate_texels(img, p.whole, error)) {
+      error = at + "texture " + p.name + ": " + error;
+      return false;
+    }
+    std::vector<std::uint8_t> check(img.rgb.size());
+    MemorySource src{reinterpret_cast<const std::uint8_t*>(p.whole.data()), p.whole.size()};
+    Inflater inflater;
+    if (inflater.run(src.source(), check.data(), check.size()) != InflateStatus::kDone ||
+        inflater.produced() != check.size()) {
+      error = at + "texture " + p.name + ": the compressed texels do not decode";
+      return false;
+    }
+    p.lead = inflater.lead();
+    return true;
+  };
   bool any_sparse = false;
   for (std::size_t k = 0; k < names.size(); ++k) {
     Packed& p = packed[k];
     p.name = names[k];
     const std::string at = k < where.size() ? where[k] : std::string();
-    RgbTexture img;
+    RgbTexture& img = images[k];
     if (!load(base_dir, p.name, img, error)) {
       error = at + error;
       return false;
@@ -182,21 +212,6 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
     p.width = img.width;
     p.height = img.height;
     p.crc = crc32(img.rgb.data(), img.rgb.size());
-    if (!deflate_texels(img, p.whole, error)) {
-      error = at + "texture " + p.name + ": " + error;
-      return false;
-    }
-    // The board's own inflater over the stream: the lead, and a check that
-    // the stream gives back these texels' residuals.
-    std::vector<std::uint8_t> check(img.rgb.size());
-    MemorySource src{reinterpret_cast<const std::uint8_t*>(p.whole.data()), p.whole.size()};
-    Inflater inflater;
-    if (inflater.run(src.source(), check.data(), check.size()) != InflateStatus::kDone ||
-        inflater.produced() != check.size()) {
-      error = at + "texture " + p.name + ": the compressed texels do not decode";
-      return false;
-    }
-    p.lead = inflater.lead();
     const auto read = marks != nullptr ? marks->find(p.name) : TexelMarks::const_iterator{};
     if (marks != nullptr && read != marks->end() && read->second.size() == img.rgb.size() / 3) {
       std::string why;
@@ -205,17 +220,30 @@ bool assemble(const std::vector<std::string>& names, const std::vector<std::stri
           error = at + "texture " + p.name + ": " + why;
           return false;
         }
-      } else if (p.part.packed.size() < p.whole.size()) {
-        p.sparse = true;
-        any_sparse = true;
+      } else {
+        // Against the whole form deflated fast (about a tenth of the
+        // time of the hard one, a few percent larger): the hard one is
+        // made only when it may be sent.
+        std::string quick;
+        if (!deflate_texels(img, quick, error, Z_BEST_SPEED)) {
+          error = at + "texture " + p.name + ": " + error;
+          return false;
+        }
+        p.sparse = p.part.packed.size() < quick.size();
+        any_sparse = any_sparse || p.sparse;
       }
     }
+    if (!p.sparse && !pack_whole(k)) return false;
   }
   // Sparse textures are decoded into the arena beside the held upload, not
   // in place: when both do not fit, every texel goes.
   std::uint64_t sparse_upload = 0;
   for (const Packed& p : packed) sparse_upload += 32 + p.name.size() + (p.sparse ? p.part.packed.size() : p.whole.size());
-  if (any_sparse && texel_bytes + sparse_upload > board_bytes) any_sparse = false;
+  if (any_sparse && texel_bytes + sparse_upload > board_bytes) {
+    any_sparse = false;
+    for (std::size_t k = 0; k < packed.size(); ++k)
+      if (packed[k].sparse && !pack_whole(k)) return false;
+  }
   const int marker = any_sparse ? MINRT_TEXTURES_SPARSE_MARKER : MINRT_TEXTURES_DEFLATE_MARKER;
   // Each texture's header, then its stream; `lead` is the most the texels
   // (counted from the first) run ahead of the bytes read (counted from the
