@@ -225,6 +225,7 @@ int run(int argc, char** argv) {
     m.set_trace(trace, true);
   }
   m.set_fpu_model(fpu_model.get());
+  m.set_jit(opt.jit);
 
   const double cpu0 = cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
