@@ -483,6 +483,7 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
   }
   used_ = static_cast<size_t>(a.here() - code_);
   used_ = (used_ + 15) & ~size_t{15};
+  ++blocks_made_;
   return reinterpret_cast<uintptr_t>(block);
 }
 

@@ -60,6 +60,8 @@ class BlockJit {
   // DecodeCache::epoch() the blocks were made from.
   uint64_t epoch() const { return epoch_; }
   void set_epoch(uint64_t e) { epoch_ = e; }
+  // Blocks translated so far (flushes included): for tests and statistics.
+  uint64_t blocks_made() const { return blocks_made_; }
 
  private:
   using EnterFn = uint32_t (*)(State*, uintptr_t);
@@ -75,6 +77,7 @@ class BlockJit {
   EnterFn enter_ = nullptr;
   uint32_t touched_lo_ = UINT32_MAX, touched_hi_ = 0;
   uint64_t epoch_ = 0;
+  uint64_t blocks_made_ = 0;
 };
 
 }  // namespace fwsim

@@ -55,6 +55,7 @@ class Machine {
   // disabled; counts, output and stops are the same either way.
   void set_jit(bool on) { jit_enabled_ = on; }
   bool jit_enabled() const { return jit_enabled_; }
+  uint64_t jit_blocks() const { return jit_ ? jit_->blocks_made() : 0; }
 
   // Debugger support (gdb_stub.hpp). A breakpoint stops a run with
   // StopCause::Breakpoint before the instruction at `pc` executes; false when
