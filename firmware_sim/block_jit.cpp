@@ -133,6 +133,8 @@ struct SideExit {
 
 BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size)
     : count_(entry_count), code_base_(code_base), ram_size_(ram_size) {
+  // Table offsets are 32-bit displacements (entry * 8).
+  if (entry_count >= (1u << 28)) return;
   void* mem = mmap(nullptr, kCodeBytes, PROT_READ | PROT_WRITE | PROT_EXEC, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (mem == MAP_FAILED) return;  // no blocks: the interpreter runs everything
   table_ = static_cast<uintptr_t*>(std::calloc(size_t{entry_count} + 1, sizeof(uintptr_t)));
