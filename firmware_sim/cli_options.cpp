@@ -56,6 +56,8 @@ a long run shows its progress on stderr; Ctrl-C stops it with a summary (status 
            "run a memory image of 32-bit words ($readmemh .hex/.mem,\nor .coe) loaded at the reset/ROM address, "
            "instead of an ELF"},
           {"max-instructions", 0, "N", "stop with an error after N instructions"},
+          {"no-jit", 0, nullptr,
+           "interpret every instruction (no generated host code for\nhot loops; same results, slower)"},
           {nullptr, 0, nullptr, "Memory map (default: the board's, include/minrt/memory_map.h):"},
           {"ram", 0, "BASE:SIZE",
            "RAM at BASE, SIZE bytes (K/M suffix ok; default\n0x80000000:4M); e.g. --ram 0:1M for a program linked at 0"},
@@ -134,6 +136,7 @@ bool parse_cli(int argc, char** argv, const char* version, CliOptions& o, int& s
           else if (name == "board") o.board_file = v;
           else if (name == "gdb") o.gdb_port = static_cast<int>(parse_port(a, v));
           else if (name == "stats") o.stats = true;
+          else if (name == "no-jit") o.jit = false;
           else if (name == "trace") o.trace = true;
           else if (name == "commit-log") o.commit_log = v;
           else if (name == "load-hex") {

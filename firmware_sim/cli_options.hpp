@@ -21,6 +21,7 @@ struct CliOptions {
   bool fpu_check = false;         // measure the FPU model's error instead of running an ELF
   std::string profile_out, folded_out;
   uint64_t max_instructions = 0;  // 0 = unlimited
+  bool jit = true;                // --no-jit: no generated code (block_jit.hpp)
   uint32_t ram_size = 0;          // --ram-size; 0 = from the map
   // Memory map (memory_map.hpp): the machine file first, then --ram,
   // --ram-size, --uart and --finisher on top of it; empty = unchanged.

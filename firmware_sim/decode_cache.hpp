@@ -52,6 +52,9 @@ class DecodeCache {
     self_jump_halts_ = self_jump_halts;
   }
   const IsaSpec& isa() const { return isa_; }
+  // Changes whenever decoded entries are dropped or replaced (not when an
+  // undecoded one is filled): code translated from entries is stale then.
+  uint64_t epoch() const { return epoch_; }
   bool self_jump_halts() const { return self_jump_halts_; }
   // Load and store immediates are stored minus `ram_base` (interpreter.cpp).
   void set_ram_base(uint32_t ram_base) { ram_base_ = ram_base; }
@@ -60,10 +63,12 @@ class DecodeCache {
   // Debugger support: a breakpoint replaces the entry (the instruction in RAM
   // stays as it is); invalidating makes the word decode again on its next run.
   void set_breakpoint(uint32_t index) {
+    ++epoch_;
     entries_[index] = Entry{static_cast<uint8_t>(Op::BREAKPOINT), 0, 0, 0, 0};
     unfuse_before(index);
   }
   void invalidate(uint32_t index) {
+    ++epoch_;
     entries_[index] = Entry{};
     unfuse_before(index);
   }
@@ -71,6 +76,7 @@ class DecodeCache {
   // stay. Only the span filled since the last call is visited, so untouched
   // pages stay unallocated.
   void invalidate_all() {
+    ++epoch_;
     for (uint32_t i = filled_lo_; i <= filled_hi_ && i < count_; ++i)
       if (entries_[i].op != static_cast<uint8_t>(Op::BREAKPOINT)) entries_[i] = Entry{};
     filled_lo_ = UINT32_MAX;
@@ -91,7 +97,8 @@ class DecodeCache {
   bool check_isa_ = false;  // without a board: today's rv32imf, nothing filtered
   bool self_jump_halts_ = false;
   uint32_t ram_base_ = 0;
-  uint32_t filled_lo_ = UINT32_MAX, filled_hi_ = 0;  // span of entries filled since the last invalidate_all
+  uint32_t filled_lo_ = UINT32_MAX, filled_hi_ = 0;
+  uint64_t epoch_ = 0;  // span of entries filled since the last invalidate_all
 };
 
 }  // namespace fwsim

@@ -119,7 +119,13 @@ StopInfo Machine::run(uint64_t max_instructions) {
   fpu::clear_host_flags();
   // Plain; timed with pre-computed costs; timed with per-instruction hooks
   // (trace, caches), which the pre-computed costs cannot express.
-  if (!model_ && !profiler_ && !trace_ && watches_.empty()) s = run_loop<0>(max_instructions);
+  if (!model_ && !profiler_ && !trace_ && watches_.empty()) {
+    // Generated code covers the IEEE arithmetic only.
+    if (jit_enabled_ && !fpu_model_ && !jit_)
+      jit_ = std::make_unique<BlockJit>(code_.count(), bus_.code_base(), bus_.ram_size());
+    if (jit_enabled_ && !fpu_model_ && jit_->available()) s = run_loop<3>(max_instructions);
+    else s = run_loop<0>(max_instructions);
+  }
   else if (model_ && !trace_ && watches_.empty() && !model_->per_access_state()) s = run_loop<1>(max_instructions);
   else s = run_loop<2>(max_instructions);
   hart_.fflags |= fpu::take_host_flags();
@@ -139,7 +145,7 @@ StopInfo Machine::run(uint64_t max_instructions) {
 
 template <int Mode>
 StopInfo Machine::run_loop(uint64_t max_instructions) {
-  constexpr bool Timed = Mode != 0;
+  constexpr bool Timed = Mode == 1 || Mode == 2;
   constexpr bool Hooks = Mode == 2;  // per-instruction model calls
   // Fused ops run as their first instruction except in the RNE table of the
   // plain and block-costed loops (kLabelsFused), where one handler runs the
@@ -303,6 +309,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     if (start_discounted) CYC -= SLOT(ip).stall;
   }
   const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
+  uintptr_t* const jit_table = Mode == 3 ? jit_->table() : nullptr;
+  (void)jit_table;
   StopInfo stop;
   Bus::Result bus_result = Bus::Result::Ok;
   bool retire_stopper = false;
@@ -362,6 +370,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     K_SET((done) - reinterpret_cast<uint64_t>(target));       \
     ip = (target);                                            \
     if ((done) > limit8) goto limit_reached;                  \
+    if constexpr (Mode == 3) goto jit_enter;                  \
   } while (0)
 #define DONE() (K_VALUE() + reinterpret_cast<uint64_t>(ip + 1))
 #define JUMP(target)                          \
@@ -828,6 +837,34 @@ device_stop:
     stop.cause = StopCause::HostIo;
   }
   goto out;
+jit_enter:
+  __attribute__((unused));  // reached only from the loop with generated code
+  // A run entered by a taken jump (or left by generated code at a target it
+  // has no block for): counted until hot, then translated and run.
+  if constexpr (Mode == 3) {
+    uintptr_t* const slot = jit_table + (ip - base);
+    uintptr_t v = *slot;
+    if (v < BlockJit::kHot) {
+      *slot = v + 1;
+      DISPATCH();
+    }
+    if (jit_->epoch() != code_.epoch()) {
+      // Decoded entries changed (fence.i, debugger): every block is stale.
+      jit_->flush();
+      jit_->set_epoch(code_.epoch());
+      DISPATCH();
+    }
+    if (v == BlockJit::kHot) v = *slot = jit_->compile(base, static_cast<uint32_t>(ip - base));
+    // Blocks assume frm = RNE for dynamic-rounding FP ops.
+    if (v == BlockJit::kNoBlock || hart_.frm != fpu::RNE) DISPATCH();
+    BlockJit::State st{XR, ram, jit_table, RETIRED(), limit, 0};
+    ip = base + jit_->run(st, v);
+    K_SET(st.count * sizeof(Entry) - reinterpret_cast<uint64_t>(ip));
+    if (st.exit == static_cast<uint32_t>(BlockJit::Exit::Target)) goto jit_enter;
+    if (st.exit == static_cast<uint32_t>(BlockJit::Exit::Limit)) goto limit_reached;
+    DISPATCH();
+  }
+  DISPATCH();
 watch_stop:
   __attribute__((unused));  // reached only from the hooked loop
   // The accessing instruction has run: report the stop after it.
@@ -911,5 +948,6 @@ out:
 template StopInfo Machine::run_loop<0>(uint64_t);
 template StopInfo Machine::run_loop<1>(uint64_t);
 template StopInfo Machine::run_loop<2>(uint64_t);
+template StopInfo Machine::run_loop<3>(uint64_t);
 
 }  // namespace fwsim

@@ -4,12 +4,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "bus.hpp"
 #include "csr.hpp"
 #include "cycle_model.hpp"
 #include "block_costs.hpp"
+#include "block_jit.hpp"
 #include "decode_cache.hpp"
 #include "hart_state.hpp"
 #include "profiler.hpp"
@@ -49,6 +51,11 @@ class Machine {
   // Null (the default) = exact IEEE arithmetic; otherwise the model's
   // arithmetic for the ops it replaces (fpu_approx.hpp).
   void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
+  // Plain runs translate hot code to host code (block_jit.hpp) unless
+  // disabled; counts, output and stops are the same either way.
+  void set_jit(bool on) { jit_enabled_ = on; }
+  bool jit_enabled() const { return jit_enabled_; }
+  uint64_t jit_blocks() const { return jit_ ? jit_->blocks_made() : 0; }
 
   // Debugger support (gdb_stub.hpp). A breakpoint stops a run with
   // StopCause::Breakpoint before the instruction at `pc` executes; false when
@@ -85,7 +92,9 @@ class Machine {
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
 
  private:
-  template <int Mode>  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks
+  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks,
+  // 3 plain with generated code for hot runs
+  template <int Mode>
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
   // The kind of the first watchpoint an access hits, or 0.
@@ -112,6 +121,8 @@ class Machine {
   std::FILE* trace_ = nullptr;
   bool spike_trace_ = false;
   const FpuApprox* fpu_model_ = nullptr;
+  bool jit_enabled_ = true;
+  std::unique_ptr<BlockJit> jit_;  // made on the first run that uses it
 };
 
 }  // namespace fwsim

@@ -225,6 +225,7 @@ int run(int argc, char** argv) {
     m.set_trace(trace, true);
   }
   m.set_fpu_model(fpu_model.get());
+  m.set_jit(opt.jit);
 
   const double cpu0 = cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
@@ -288,7 +289,8 @@ int run(int argc, char** argv) {
                  std::chrono::duration<double, std::micro>(t1 - t0).count(), (cpu1 - cpu0) * 1e6,
                  model.get(), model_cfg,
                  opt.cycle_model.empty() ? (timed ? "default" : "none") : opt.cycle_model,
-                 uart.bytes_out(), uart.bytes_in(), opt.baud, profiler.get(), describe(fpu_cfg)};
+                 uart.bytes_out(), uart.bytes_in(), opt.baud, profiler.get(), describe(fpu_cfg),
+                 opt.jit, m.jit_blocks()};
     print_stats(s, stderr);
   }
   return killed ? kExitKilled : exit_status(stop);

@@ -39,6 +39,9 @@ void print_stats(const RunSummary& s, std::FILE* out) {
   std::fprintf(out, "cycle model: %s%s\n", s.model_name.c_str(),
                s.model ? "" : " (1 cycle per instruction; use --cycle-model for timing)");
   std::fprintf(out, "fpu model: %s\n", s.fpu_model.c_str());
+  // Only plain runs with the IEEE FPU use generated code.
+  if (!s.jit) std::fprintf(out, "jit: off (--no-jit)\n");
+  else std::fprintf(out, "jit: %llu blocks translated\n", static_cast<unsigned long long>(s.jit_blocks));
   const double hz = static_cast<double>(s.model_cfg.clock_hz);
   std::fprintf(out, "CPI: %.3f\n", s.instructions ? static_cast<double>(s.cycles) / s.instructions : 0.0);
   const double cpu_s = s.cycles / hz;

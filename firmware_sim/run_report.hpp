@@ -25,6 +25,8 @@ struct RunSummary {
   uint64_t uart_out, uart_in, baud;
   const Profiler* profiler;
   std::string fpu_model;  // describe(FpuModelConfig)
+  bool jit;               // generated code was allowed (Machine::set_jit)
+  uint64_t jit_blocks;    // blocks it translated
 };
 
 // First three lines are the contract: instructions, cycles, host MIPS.

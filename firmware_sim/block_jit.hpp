@@ -1,0 +1,83 @@
+// Generated x86-64 code for hot straight-line runs of the plain (untimed)
+// interpreter. A run entered by a taken jump often enough is translated from
+// its decoded entries (never from memory, so stores to code and fence.i
+// behave exactly as in the interpreter); its code reads and writes the guest
+// register file directly, keeps the instruction count in a host register and
+// jumps from block to block through the per-entry table without returning.
+// Anything it does not translate (devices, misaligned or out-of-RAM
+// accesses, CSRs, rounding modes other than RNE, ...) leaves to the
+// interpreter before that instruction. Other hosts get no blocks (available()
+// is false) and the interpreter runs everything.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "decode_cache.hpp"
+
+namespace fwsim {
+
+class BlockJit {
+ public:
+  // Per-entry table values below kCompiled are hotness counts; kNoBlock
+  // marks a run that cannot be translated; larger values are code addresses.
+  static constexpr uintptr_t kHot = 16;
+  static constexpr uintptr_t kNoBlock = kHot + 1;
+  static constexpr uintptr_t kCompiled = kNoBlock + 1;
+
+  // How generated code handed control back.
+  enum class Exit : uint32_t {
+    Target = 0,  // at a jump target or fall-through not translated yet
+    Here = 1,    // before an instruction the interpreter must run
+    Limit = 2,   // a taken jump went past the instruction limit
+  };
+  // Shared with the generated code (fixed offsets, see block_jit.cpp).
+  struct State {
+    uint32_t* x;        // x[0..32] then f[0..31] (HartState layout)
+    uint8_t* ram;
+    uintptr_t* table;
+    uint64_t count;     // instructions retired since the run started
+    uint64_t limit;     // a taken jump with count > limit stops
+    uint32_t exit;      // Exit
+  };
+
+  BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size);
+  ~BlockJit();
+  BlockJit(const BlockJit&) = delete;
+  BlockJit& operator=(const BlockJit&) = delete;
+
+  // False on hosts without a code generator or when executable memory
+  // could not be mapped.
+  bool available() const { return code_ != nullptr; }
+  uintptr_t* table() { return table_; }
+  // Translates the run starting at entry `index`; returns the table value
+  // stored for it (a code address, or kNoBlock).
+  uintptr_t compile(const Entry* entries, uint32_t index);
+  // Runs generated code at `code` (a table value >= kCompiled) until it
+  // exits; returns the entry index to continue at, st.exit says how.
+  uint32_t run(State& st, uintptr_t code) { return enter_(&st, code); }
+  // Drops every block (decoded entries changed); counts restart.
+  void flush();
+  // DecodeCache::epoch() the blocks were made from.
+  uint64_t epoch() const { return epoch_; }
+  void set_epoch(uint64_t e) { epoch_ = e; }
+  // Blocks translated so far (flushes included): for tests and statistics.
+  uint64_t blocks_made() const { return blocks_made_; }
+
+ private:
+  using EnterFn = uint32_t (*)(State*, uintptr_t);
+  uint32_t count_;
+  uint32_t code_base_;
+  uint32_t ram_size_;
+  uintptr_t* table_ = nullptr;
+  uint8_t* code_ = nullptr;
+  size_t code_size_ = 0;
+  size_t used_ = 0;
+  size_t prologue_end_ = 0;  // start of the first block (after the entry/exit code)
+  size_t exit_offsets_[3] = {};  // code setting State::exit to each Exit, then leaving
+  EnterFn enter_ = nullptr;
+  uint32_t touched_lo_ = UINT32_MAX, touched_hi_ = 0;
+  uint64_t epoch_ = 0;
+  uint64_t blocks_made_ = 0;
+};
+
+}  // namespace fwsim
