@@ -1,12 +1,14 @@
 #include "row_pool.hpp"
 
+#include <pthread.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <memory>
 #include <mutex>
-#include <thread>
+#include <system_error>
 
 #include "image_window.hpp"
 #include "row_file_writer.hpp"
@@ -63,8 +65,21 @@ class Helpers {
   // Makes sure that `count` helpers are waiting for the next render.
   void start(int count) {
     std::lock_guard<std::mutex> lock(start_mutex_);
-    for (; waiting_ < count; ++waiting_)
-      std::thread(&Helpers::loop, this, generation_.load(std::memory_order_relaxed)).detach();
+    for (; waiting_ < count; ++waiting_) {
+      // A bare thread: std::thread's state is freed by the thread at its
+      // end, and that first free set up a heap of the helper's own (four
+      // memory-map calls after its last row, the unmaps interrupting the
+      // core that commits the file).
+      const unsigned seen = generation_.load(std::memory_order_relaxed);
+      pthread_attr_t attr;
+      pthread_attr_init(&attr);
+      pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
+      pthread_t id;
+      void* arg = reinterpret_cast<void*>(static_cast<uintptr_t>(seen));
+      const int err = pthread_create(&id, &attr, &Helpers::entry, arg);
+      pthread_attr_destroy(&attr);
+      if (err != 0) throw std::system_error(err, std::generic_category(), "cannot start a row thread");
+    }
   }
 
   // Runs job(context) on the calling thread and on `count` helpers at the
@@ -90,6 +105,7 @@ class Helpers {
   }
 
  private:
+  static void* entry(void* seen);
   void loop(unsigned seen) {
     for (;;) {
       seen = wait_for_change(generation_, seen);
@@ -124,6 +140,11 @@ Helpers& helpers() {
   // come holds on to it.
   static Helpers* pool = new Helpers;
   return *pool;
+}
+
+void* Helpers::entry(void* seen) {
+  helpers().loop(static_cast<unsigned>(reinterpret_cast<uintptr_t>(seen)));
+  return nullptr;
 }
 
 // Rows handed out at a time at most: a run of rows goes to the file with
