@@ -11,9 +11,11 @@
 # process, to the microsecond), the ratios to the original and what every
 # core gives over one thread. --minrt: the minrt to measure (default
 # build/release/host/minrt). The load average is printed before and after
-# the runs: the cores' gain is a wall-time figure and means something only
-# on an idle machine (load well under 1); on a loaded one a short run's
-# wall time is mostly waiting for a core. --fifo runs minrt (not the
+# the runs, and the CPU time that other processes took while minrt ran, as
+# a share of one core: the cores' gain is a wall-time figure and means
+# something only when that share is near 0 (an idle machine); a process
+# that keeps a core half busy takes a quarter of the two-thread run's
+# cores and little of the one-thread run's. --fifo runs minrt (not the
 # original) at real-time priority (SCHED_FIFO 10, which needs root or
 # CAP_SYS_NICE), ahead of every ordinary process: the figures of an idle
 # machine on a busy one, as far as the other processes' use of the caches
@@ -58,7 +60,7 @@ echo "same BMP: sha256 $(sha256sum "$work/minrt.bmp" | cut -c1-16)... ($(stat -c
 # The runs, interleaved: each program's wall time from its start to its
 # end as the parent sees it, its CPU time from its own rusage.
 python3 - "$runs" "$fifo" "$minrt" "$work" "$original" "${original_opts[@]}" <<'PY'
-import os, statistics, subprocess, sys, time
+import os, resource, statistics, subprocess, sys, time
 
 runs, fifo, minrt, work, original = int(sys.argv[1]), sys.argv[2] == "1", sys.argv[3], sys.argv[4], sys.argv[5]
 original_opts = sys.argv[6:]
@@ -72,7 +74,20 @@ programs = {
 def ordinary():
     os.sched_setscheduler(0, os.SCHED_OTHER, os.sched_param(0))
 
+TICK = os.sysconf("SC_CLK_TCK")
+
+def busy_seconds():
+    # Every core's time in user, nice, system, irq and softirq (not idle,
+    # iowait or steal), in seconds, from /proc/stat's first line.
+    user, nice, system, _idle, _iowait, irq, softirq = map(int, open("/proc/stat").readline().split()[1:8])
+    return (user + nice + system + irq + softirq) / TICK
+
+def own_cpu():
+    u = resource.getrusage(resource.RUSAGE_SELF)
+    return u.ru_utime + u.ru_stime
+
 def measure(args, rt):
+    busy, runner = busy_seconds(), own_cpu()
     start = time.perf_counter()
     child = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                              preexec_fn=None if rt or not fifo else ordinary)
@@ -80,7 +95,12 @@ def measure(args, rt):
     wall = time.perf_counter() - start
     if status != 0:
         sys.exit(f"{args[0]} failed (status {status})")
-    return wall, usage.ru_utime + usage.ru_stime
+    cpu = usage.ru_utime + usage.ru_stime
+    # What the other processes used meanwhile: every core's busy time less
+    # the program's and this runner's (to the clock tick: the sum over the
+    # runs is the figure).
+    others = busy_seconds() - busy - cpu - (own_cpu() - runner)
+    return wall, cpu, others
 
 if fifo:
     # This runner too, so that it sees minrt's end at once; the original
@@ -92,11 +112,13 @@ if fifo:
 load_before = open("/proc/loadavg").read().split()[:3]
 wall = {k: [] for k in programs}
 cpu = {k: [] for k in programs}
+others = {k: 0.0 for k in programs}
 for _ in range(runs):
     for name, (_, args, rt) in programs.items():
-        w, c = measure(args, rt)
+        w, c, o = measure(args, rt)
         wall[name].append(w)
         cpu[name].append(c)
+        others[name] += o
 load_after = open("/proc/loadavg").read().split()[:3]
 model = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
 print(f"cpu: {model}, {os.cpu_count()} cores; load average {' '.join(load_before)} before the runs, "
@@ -111,4 +133,7 @@ for name, (label, _, _) in programs.items():
 print(f"  ratio, wall: original / minrt 1 thread {tw / ow:.1f}x, / minrt all cores {tw / aw:.1f}x")
 print(f"  ratio, cpu:  original / minrt 1 thread {tc / oc:.1f}x")
 print(f"  all cores / 1 thread, wall: {ow / aw:.2f}x (all cores use {ac / oc:.2f}x the cpu)")
+share = {k: max(0.0, others[k]) / sum(wall[k]) for k in ("one", "all")}
+print(f"  other processes' cpu while minrt ran: {share['one']:.2f} of a core (1 thread), "
+      f"{share['all']:.2f} ({os.cpu_count()} threads)")
 PY
