@@ -1,8 +1,13 @@
 // host/row_pool.cpp and host/row_file_writer.cpp: every row rendered once
 // and in its place, in memory and in a BMP or PPM file written as the rows
 // are done, for any thread count (more threads than rows, too), rows wider
-// than a hand-out and renders that follow one another in one process.
+// than a hand-out and renders that follow one another in one process; a
+// helper started on another core than its creator's is free of that limit
+// by the time it renders.
 #include <catch2/catch.hpp>
+
+#include <pthread.h>
+#include <sched.h>
 
 #include <atomic>
 #include <cstdio>
@@ -103,5 +108,54 @@ TEST_CASE("row pool: every row once and in its place, kept or written, on any th
         CHECK(bytes.compare(bytes.size() - pixels.size(), pixels.size(), pixels) == 0);
       }
     }
+  }
+}
+
+namespace {
+
+// Rows that note the cores their thread may run on.
+class AffinityProbe final : public minrt::host::PreparedScene {
+ public:
+  explicit AffinityProbe(int h) : cores(static_cast<std::size_t>(h)) {
+    width = 1;
+    height = h;
+  }
+  void render_row(int y, uint8_t* rgba) const override {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    cores[static_cast<std::size_t>(y)] =
+        pthread_getaffinity_np(pthread_self(), sizeof set, &set) == 0 ? CPU_COUNT(&set) : -1;
+    for (int c = 0; c < 4; ++c) rgba[c] = 255;
+  }
+  mutable std::vector<int> cores;
+};
+
+}  // namespace
+
+TEST_CASE("row pool: a helper started on another core may run on every core for its rows", "[host][rows]") {
+  cpu_set_t allowed;
+  REQUIRE(sched_getaffinity(0, sizeof allowed, &allowed) == 0);
+  const int count = CPU_COUNT(&allowed);
+  // Helpers started now and in render_rows itself, on as many threads as
+  // the process may use cores and more.
+  minrt::host::start_row_threads(2);
+  for (int threads : {2, 3, count + 1}) {
+    CAPTURE(threads, count);
+    AffinityProbe scene(400);
+    minrt::host::RgbaImage image;
+    minrt::host::render_rows(scene, threads, image, nullptr);
+    for (int cores : scene.cores) CHECK(cores == count);
+  }
+  // A process held to one core: its helpers start there and render all the same.
+  if (count >= 2) {
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(sched_getcpu(), &one);
+    REQUIRE(sched_setaffinity(0, sizeof one, &one) == 0);
+    AffinityProbe scene(50);
+    minrt::host::RgbaImage image;
+    minrt::host::render_rows(scene, 4, image, nullptr);
+    REQUIRE(sched_setaffinity(0, sizeof allowed, &allowed) == 0);
+    for (int cores : scene.cores) CHECK(cores == 1);
   }
 }
