@@ -3,7 +3,7 @@
 # built by hand outside this repository: pass its binary) on the issue's scene:
 # 640x480, 20 spheres, a mirror floor, 2 lights, ray depth 4
 # (bench/host/make_jaworski_scene.py).
-#   bench/host/jaworski_speed.sh [--runs N] [--minrt BINARY] [--fifo] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]
+#   bench/host/jaworski_speed.sh [--runs N] [--minrt BINARY] [--fifo|--nice] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]
 # e.g. bench/host/jaworski_speed.sh /work/ext/jaworski/ray-tracer +RTS -N -RTS
 # Checks first that both write the same BMP, byte for byte; then runs minrt on
 # one thread, minrt on every core and the original in turn, N times each,
@@ -19,18 +19,23 @@
 # original) at real-time priority (SCHED_FIFO 10, which needs root or
 # CAP_SYS_NICE), ahead of every ordinary process: the figures of an idle
 # machine on a busy one, as far as the other processes' use of the caches
-# and of the host allows.
+# and of the host allows. --nice keeps minrt at the ordinary policy
+# (SCHED_OTHER, with the kernel's ordinary placement of its threads) in a
+# session of its own whose scheduling group (/proc/self/autogroup) is at
+# nice -20 (root or CAP_SYS_NICE), ahead of the other sessions' processes;
+# the original runs in another session at nice 0.
 . "$(dirname "$0")/../../scripts/help.sh"
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 runs=7
 minrt=$root/build/release/host/minrt
-fifo=0
-usage() { echo "usage: $0 [--runs N] [--minrt BINARY] [--fifo] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2; exit 2; }
+mode=ordinary
+usage() { echo "usage: $0 [--runs N] [--minrt BINARY] [--fifo|--nice] ORIGINAL_BINARY [ORIGINAL OPTIONS...]" >&2; exit 2; }
 while (($#)); do
   case $1 in
     --runs) [[ $# -ge 2 ]] || usage; runs=$2; shift 2 ;;
-    --fifo) fifo=1; shift ;;
+    --fifo) mode=fifo; shift ;;
+    --nice) mode=nice; shift ;;
     --minrt) [[ $# -ge 2 ]] || usage; minrt=$2; shift 2 ;;
     *) break ;;
   esac
@@ -59,20 +64,24 @@ echo "same BMP: sha256 $(sha256sum "$work/minrt.bmp" | cut -c1-16)... ($(stat -c
 
 # The runs, interleaved: each program's wall time from its start to its
 # end as the parent sees it, its CPU time from its own rusage.
-python3 - "$runs" "$fifo" "$minrt" "$work" "$original" "${original_opts[@]}" <<'PY'
+python3 - "$runs" "$mode" "$minrt" "$work" "$original" "${original_opts[@]}" <<'PY'
 import os, resource, statistics, subprocess, sys, time
 
-runs, fifo, minrt, work, original = int(sys.argv[1]), sys.argv[2] == "1", sys.argv[3], sys.argv[4], sys.argv[5]
+runs, mode, minrt, work, original = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5]
 original_opts = sys.argv[6:]
 scene = os.path.join(work, "scene.txt")
 programs = {
-    "one": ("minrt, 1 thread", [minrt, "-q", "--threads", "1", "-o", os.path.join(work, "a.bmp"), scene], fifo),
-    "all": (f"minrt, {os.cpu_count()} threads", [minrt, "-q", "-o", os.path.join(work, "b.bmp"), scene], fifo),
+    "one": ("minrt, 1 thread", [minrt, "-q", "--threads", "1", "-o", os.path.join(work, "a.bmp"), scene], True),
+    "all": (f"minrt, {os.cpu_count()} threads", [minrt, "-q", "-o", os.path.join(work, "b.bmp"), scene], True),
     "theirs": ("original " + " ".join(original_opts), [original] + original_opts + ["-o", os.path.join(work, "c.bmp"), scene], False),
 }
 
 def ordinary():
     os.sched_setscheduler(0, os.SCHED_OTHER, os.sched_param(0))
+
+# How the original starts when minrt is given a head start: back at the
+# ordinary policy (--fifo) or in a session, and so a group, of its own.
+unboosted = {"ordinary": None, "fifo": ordinary, "nice": os.setsid}[mode]
 
 TICK = os.sysconf("SC_CLK_TCK")
 
@@ -86,11 +95,11 @@ def own_cpu():
     u = resource.getrusage(resource.RUSAGE_SELF)
     return u.ru_utime + u.ru_stime
 
-def measure(args, rt):
+def measure(args, boosted):
     busy, runner = busy_seconds(), own_cpu()
     start = time.perf_counter()
     child = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                             preexec_fn=None if rt or not fifo else ordinary)
+                             preexec_fn=None if boosted else unboosted)
     _, status, usage = os.wait4(child.pid, 0)
     wall = time.perf_counter() - start
     if status != 0:
@@ -102,27 +111,37 @@ def measure(args, rt):
     others = busy_seconds() - busy - cpu - (own_cpu() - runner)
     return wall, cpu, others
 
-if fifo:
+if mode == "fifo":
     # This runner too, so that it sees minrt's end at once; the original
     # runs at the ordinary priority.
     try:
         os.sched_setscheduler(0, os.SCHED_FIFO, os.sched_param(10))
     except PermissionError as e:
         sys.exit(f"--fifo: cannot run at real-time priority ({e})")
+elif mode == "nice":
+    # A new session gets a scheduling group of its own: only this runner
+    # and the minrt runs are in it, not the caller's session.
+    try:
+        os.setsid()
+        with open("/proc/self/autogroup", "w") as group:
+            group.write("-20")
+    except OSError as e:
+        sys.exit(f"--nice: cannot give this run's session nice -20 ({e})")
 load_before = open("/proc/loadavg").read().split()[:3]
 wall = {k: [] for k in programs}
 cpu = {k: [] for k in programs}
 others = {k: 0.0 for k in programs}
 for _ in range(runs):
-    for name, (_, args, rt) in programs.items():
-        w, c, o = measure(args, rt)
+    for name, (_, args, boosted) in programs.items():
+        w, c, o = measure(args, boosted)
         wall[name].append(w)
         cpu[name].append(c)
         others[name] += o
 load_after = open("/proc/loadavg").read().split()[:3]
 model = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
 print(f"cpu: {model}, {os.cpu_count()} cores; load average {' '.join(load_before)} before the runs, "
-      f"{' '.join(load_after)} after{'; minrt at SCHED_FIFO' if fifo else ''}")
+      f"{' '.join(load_after)} after"
+      f"{ {'ordinary': '', 'fifo': '; minrt at SCHED_FIFO', 'nice': '; minrt in a session at nice -20'}[mode]}")
 print(f"640x480, 20 spheres, 2 lights, ray depth 4; medians of {runs} interleaved runs (seconds)")
 print(f"  {'program':26s} {'wall':>8s} {'cpu':>8s}   wall times (ms)")
 med = {k: (statistics.median(wall[k]), statistics.median(cpu[k])) for k in programs}
