@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Speed of minrt against Michał Jaworski's original program (JaworWr/Ray-tracer,
-# built by hand outside this repository: pass its binary) on the scene:
+# built by hand outside this repository: pass its binary) on its speed scene:
 # 640x480, 20 spheres, a mirror floor, 2 lights, ray depth 4
 # (bench/host/make_jaworski_scene.py).
 #   bench/host/jaworski_speed.sh [--runs N] [--minrt BINARY] [--fifo|--nice] ORIGINAL_BINARY [ORIGINAL RTS OPTIONS...]

@@ -3,7 +3,7 @@
 # threads (--threads 2), median of N interleaved runs of minrt's --stats
 # (parse + BVH + render, the image kept in memory and written to /dev/null's
 # neighbour), plus the CPU seconds of one single-thread run, which machine
-# load does not inflate. The target: the largest file
+# load does not inflate. The target: the largest file
 # (room_test3.rt) under 0.5 s.
 # --minrt PATH times another build of minrt (default build/release/host/minrt).
 # Usage: bench/host/minirt_speed.sh [--runs N] [--size WxH] [--shared DIR] [--minrt PATH]
