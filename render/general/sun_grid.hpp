@@ -23,7 +23,7 @@ namespace minrt::general {
 // the first sphere whose far side is behind its origin.
 template <class R>
 struct SunGridItem {
-  R far;
+  float far;  // rounded up: a float keeps an item in eight bytes
   uint32_t sphere;
 };
 
@@ -56,7 +56,7 @@ constexpr size_t sun_grid_footprint(uint32_t n) {
   return Arena::footprint<SunGrid<R>>(kSunGridLights) +
          kSunGridLights * (Arena::footprint<uint32_t>(cells + 1) +
                            Arena::footprint<SunGridItem<R>>(static_cast<size_t>(kSunGridItems) * n)) +
-         Arena::footprint<uint32_t>(cells) + Arena::footprint<SunGridItem<R>>(n);  // the fill's, released after
+         Arena::footprint<uint32_t>(cells) + Arena::footprint<SunGridItem<R>>(n);  // the fill's scratch
 }
 
 namespace sun_grid_detail {
@@ -76,6 +76,15 @@ void cell_range(R a, R b, R origin, R per_unit, uint32_t n, uint32_t& lo, uint32
   hi = fb > R(0) ? static_cast<uint32_t>(fb) : 0u;
   if (lo > n - 1) lo = n - 1;
   if (hi > n - 1) hi = n - 1;
+}
+
+// The float at or above v (finite, within float range).
+template <class R>
+float float_up(R v) {
+  const float f = static_cast<float>(v);
+  if (!(static_cast<R>(f) < v)) return f;
+  // |f| / 2^23 is at least one step of f, and f is within half a step of v.
+  return f + (f < 0.0f ? -f : f) * (1.0f / 8388608.0f) + 1e-30f;
 }
 
 // Heap sort, largest `far` first: no recursion, no room beyond the array.
@@ -125,7 +134,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
                 (magnitude(sp.center.x) > magnitude(sp.center.y)
                      ? (magnitude(sp.center.x) > magnitude(sp.center.z) ? magnitude(sp.center.x) : magnitude(sp.center.z))
                      : (magnitude(sp.center.y) > magnitude(sp.center.z) ? magnitude(sp.center.y) : magnitude(sp.center.z)));
-    if (!(e <= R(1e30f))) return false;  // too large or not a number
+    if (!(e <= R(1e30f))) return false;  // too large (for a float far side) or not a number
     if (e > extent) extent = e;
   }
   if (!(magnitude(dir.x) <= R(1) && magnitude(dir.y) <= R(1) && magnitude(dir.z) <= R(1))) return false;
@@ -179,12 +188,12 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
     cell = cell * R(1.5f);
   }
   const size_t cells = static_cast<size_t>(g.nu) * g.nv;
+  // The fill's cursors and order are scratch at the arena's top end.
   const size_t mark = arena.top_mark();
+  uint32_t* cursor = arena.alloc_top<uint32_t>(cells);
+  auto* order = arena.alloc_top<SunGridItem<R>>(n);
   uint32_t* start = arena.alloc_zeroed<uint32_t>(cells + 1);
-  auto* list = arena.alloc_zeroed<SunGridItem<R>>(items > 0 ? static_cast<size_t>(items) : 1);
-  const size_t kept = arena.top_mark();
-  uint32_t* cursor = arena.alloc_zeroed<uint32_t>(cells);
-  auto* order = arena.alloc_zeroed<SunGridItem<R>>(n);
+  auto* list = arena.alloc_uninit<SunGridItem<R>>(items > 0 ? static_cast<size_t>(items) : 1);
   if (start == nullptr || list == nullptr || cursor == nullptr || order == nullptr) {
     arena.release_top(mark);
     g = SunGrid<R>{};
@@ -193,7 +202,8 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   // The spheres from the farthest far side, so that each cell's list,
   // filled in this order, runs from the farthest too.
   for (uint32_t i = 0; i < n; ++i)
-    order[i] = SunGridItem<R>{dot(s.spheres[i].center, g.dir) + magnitude(s.spheres[i].radius) + margin, i};
+    order[i] = SunGridItem<R>{
+        sun_grid_detail::float_up(dot(s.spheres[i].center, g.dir) + magnitude(s.spheres[i].radius) + margin), i};
   sun_grid_detail::sort_farthest_first(order, n);
   // Count, then place each sphere in its cells.
   for (int pass = 0; pass < 2; ++pass) {
@@ -218,7 +228,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
       }
     }
   }
-  arena.release_top(kept);
+  arena.release_top(mark);
   g.margin = margin;
   g.start = start;
   g.items = list;
