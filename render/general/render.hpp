@@ -159,11 +159,15 @@ class Renderer {
     EastrayView<M, kPathEastray>(*scene_->eastray, tracer).render_row(y, out);
   }
 
-  // A grid for each of the first suns (sun_grid.hpp); a light without one,
-  // or a grid that does not fit, leaves its shadow rays to the walk.
+  // A grid for each of the first suns (sun_grid.hpp) when the image has
+  // enough samples to repay it; a light without one, or a grid that does
+  // not fit, leaves its shadow rays to the walk.
   void build_sun_grids(const model::Scene<R>& scene, Arena& arena) {
     const uint32_t count = scene.light_count < kSunGridLights ? scene.light_count : kSunGridLights;
     if (count == 0 || scene.sphere_count == 0) return;
+    const uint64_t samples = static_cast<uint64_t>(scene.width) * static_cast<uint64_t>(scene.height) *
+                             static_cast<uint64_t>(scene.samples > 0 ? scene.samples : 1);
+    if (samples < static_cast<uint64_t>(kSunGridSamples) * scene.sphere_count) return;
     auto* grids = arena.alloc_zeroed<SunGrid<R>>(count);
     if (grids == nullptr) return;
     for (uint32_t i = 0; i < count; ++i) {

@@ -114,11 +114,12 @@ void check_walks(const std::string& text) {
 
 }  // namespace
 
-// The cloud without its triangles: a scene of spheres alone, whose suns
-// get grids (sun_grid.hpp).
+// The cloud without its triangles, at 64x48: a scene of spheres alone
+// with enough samples a sphere for its suns to get grids (sun_grid.hpp).
 std::string sphere_cloud(int spheres, double radius) {
   std::string text = cloud_scene(spheres, radius);
-  return text.substr(0, text.find("shininess 0.2\ntransparency 0\nroughness 0\ncolor 0.8 0.2 0.2\n"));
+  text = text.substr(0, text.find("shininess 0.2\ntransparency 0\nroughness 0\ncolor 0.8 0.2 0.2\n"));
+  return "png 64 48 x.png" + text.substr(text.find('\n'));
 }
 
 TEST_CASE("wide BVH: binary, 16-byte and widest walks give the same bytes", "[general][bvh]") {
@@ -150,7 +151,7 @@ TEST_CASE("wide BVH: a sphere too large for float beside triangles", "[general][
 // same bytes with and without the grids, on clouds of small and of large
 // overlapping spheres, in double and in float.
 TEST_CASE("sun grids: the same bytes as the shadow walk", "[general][bvh]") {
-  for (const auto& [spheres, radius] : {std::pair{3000, 0.02}, std::pair{400, 0.4}, std::pair{5, 3.0}}) {
+  for (const auto& [spheres, radius] : {std::pair{1100, 0.03}, std::pair{400, 0.4}, std::pair{5, 3.0}}) {
     DYNAMIC_SECTION(spheres << " spheres of radius about " << radius) {
       const std::string text = sphere_cloud(spheres, radius);
       if (general::kWideBvh) CHECK(render<LibmDouble>(text, Walk::kWidest).sun_grids);
