@@ -46,7 +46,7 @@ struct SunGrid {
 inline constexpr uint32_t kSunGridLights = 4;
 inline constexpr uint32_t kSunGridCells = 4;
 inline constexpr uint32_t kSunGridItems = 32;
-// A grid takes about 600 instructions a sphere to build and saves about
+// A grid takes about 900 instructions a sphere to build and saves about
 // 700 a shadow ray: it is built when the image has at least this many
 // samples a sphere (each sample sends about one shadow ray to each sun).
 inline constexpr uint32_t kSunGridSamples = 8;
