@@ -256,8 +256,8 @@ class TracerCore {
     if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
     if constexpr (kWideBvh) {
       if (light < bvh_.wide.sun_grid_count && sun_grid_covers(bvh_.wide.sun_grids[light], ray)) {
-        return sun_grid_any(bvh_.wide.sun_grids[light], ray.origin, [&](uint32_t i) __attribute__((always_inline, flatten)) {
-          const R t = hit_sphere<M>(s_.spheres[i], ray, eps);
+        return sun_grid_any(bvh_.wide.sun_grids[light], ray.origin, [&](uint32_t i) __attribute__((always_inline)) {
+          const R t = hit_sphere_inline<M>(s_.spheres[i], ray, eps);
           if (!(t > eps && t < limit)) return false;
           if (cached != nullptr) *cached = i;
           return true;
