@@ -75,6 +75,9 @@ class Renderer {
     for (uint32_t i = 0; i < scene.light_count; ++i)
       if (scene.lights[i].kind == model::LightKind::kSun) dirs[i] = normalize<M>(scene.lights[i].vector);
     light_dirs_ = dirs;
+    if constexpr (kWideBvh) {
+      if (bvh_.wide.node_count != 0 && scene.triangle_count + scene.solid_count == 0) build_sun_grids(scene, arena);
+    }
     if ((features_ & kQuadrics) != 0) build_object_bvh<M>(scene, arena, objects_);
     // Each format's paths, the smallest that has the scene's features;
     // --all-features (force_full): the format's path with every one.
@@ -105,6 +108,17 @@ class Renderer {
   // The binary tree's walk, or the wide one's with 16-byte vectors only,
   // instead of the widest this CPU has: the same image (tests).
   void drop_wide_bvh() { bvh_.wide = WideSlot<R>{}; }
+  // Every shadow ray by the walk, without the sun grids: the same image (tests).
+  void drop_sun_grids() {
+    if constexpr (kWideBvh) bvh_.wide.sun_grid_count = 0;
+  }
+  bool sun_grids() const {
+    if constexpr (kWideBvh) {
+      for (uint32_t i = 0; i < bvh_.wide.sun_grid_count; ++i)
+        if (bvh_.wide.sun_grids[i].nu != 0) return true;
+    }
+    return false;
+  }
   void use_16_byte_vectors() {
     if constexpr (kWideBvh) bvh_.wide.avx2 = false;
   }
@@ -143,6 +157,25 @@ class Renderer {
   void eastray_row(int y, uint8_t* out) const {
     const Tracer<M, kPathEastray> tracer(*scene_, bvh_, light_dirs_, min_weight_, &objects_);
     EastrayView<M, kPathEastray>(*scene_->eastray, tracer).render_row(y, out);
+  }
+
+  // A grid for each of the first suns (sun_grid.hpp) when the image has
+  // enough samples to repay it; a light without one, or a grid that does
+  // not fit, leaves its shadow rays to the walk.
+  void build_sun_grids(const model::Scene<R>& scene, Arena& arena) {
+    const uint32_t count = scene.light_count < kSunGridLights ? scene.light_count : kSunGridLights;
+    if (count == 0 || scene.sphere_count == 0) return;
+    const uint64_t samples = static_cast<uint64_t>(scene.width) * static_cast<uint64_t>(scene.height) *
+                             static_cast<uint64_t>(scene.samples > 0 ? scene.samples : 1);
+    if (samples < static_cast<uint64_t>(kSunGridSamples) * scene.sphere_count) return;
+    auto* grids = arena.alloc_zeroed<SunGrid<R>>(count);
+    if (grids == nullptr) return;
+    for (uint32_t i = 0; i < count; ++i) {
+      grids[i] = SunGrid<R>{};
+      if (scene.lights[i].kind == model::LightKind::kSun) build_sun_grid<M>(scene, light_dirs_[i], arena, grids[i]);
+    }
+    bvh_.wide.sun_grids = grids;
+    bvh_.wide.sun_grid_count = count;
   }
 
   template <uint32_t F>

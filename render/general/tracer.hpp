@@ -255,6 +255,14 @@ class TracerCore {
     uint32_t* cached = light < kShadowCache ? &shadow_cache_[light] : nullptr;
     if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
     if constexpr (kWideBvh) {
+      if (light < bvh_.wide.sun_grid_count && sun_grid_covers(bvh_.wide.sun_grids[light], ray)) {
+        return sun_grid_any(bvh_.wide.sun_grids[light], ray.origin, [&](uint32_t i) __attribute__((always_inline)) {
+          const R t = hit_sphere_inline<M>(s_.spheres[i], ray, eps);
+          if (!(t > eps && t < limit)) return false;
+          if (cached != nullptr) *cached = i;
+          return true;
+        });
+      }
       if (bvh_.wide.node_count != 0) {
 #if MINRT_AVX2_DISPATCH
         if (bvh_.wide.avx2) return occluded_wide_avx2(ray, eps, limit, cached);

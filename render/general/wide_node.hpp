@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
+#include "render/general/sun_grid.hpp"
 
 namespace minrt::general {
 
@@ -61,6 +62,8 @@ struct WideBvh {
   const WideNode* nodes = nullptr;
   uint32_t node_count = 0;  // 0: walk the binary tree
   SphereLanes<R> spheres{};
+  const SunGrid<R>* sun_grids = nullptr;  // by light, for the first sun_grid_count lights
+  uint32_t sun_grid_count = 0;
   bool avx2 = false;  // walk with the AVX2 copy (simd_dispatch.hpp)
 };
 
@@ -83,11 +86,11 @@ inline constexpr uint32_t kSphereLanePad = 4;
 
 // Arena bytes of the wide tree over n primitives (no more nodes than the
 // binary tree has, and room to start them on a cache line) and its sphere
-// lanes.
+// lanes, and the sun grids (sun_grid.hpp).
 template <class R>
 constexpr size_t wide_bvh_footprint(uint32_t n) {
   return kWideBvh ? Arena::footprint<WideNode>(2 * static_cast<size_t>(n) + 1) + kCacheLine +
-                        4 * Arena::footprint<R>(static_cast<size_t>(n) + kSphereLanePad)
+                        4 * Arena::footprint<R>(static_cast<size_t>(n) + kSphereLanePad) + sun_grid_footprint<R>(n)
                   : 0;
 }
 

@@ -60,9 +60,10 @@ struct Rendered {
   std::vector<uint8_t> rgba;
   bool wide = false;
   bool avx2 = false;
+  bool sun_grids = false;
 };
 
-enum class Walk { kBinary, kWide16, kWidest };
+enum class Walk { kBinary, kWide16, kWidest, kWidestNoSunGrids };
 
 template <class M>
 Rendered<M> render(const std::string& text, Walk walk) {
@@ -82,9 +83,11 @@ Rendered<M> render(const std::string& text, Walk walk) {
   REQUIRE(renderer.setup(scene, arena, 7));
   if (walk == Walk::kBinary) renderer.drop_wide_bvh();
   if (walk == Walk::kWide16) renderer.use_16_byte_vectors();
+  if (walk == Walk::kWidestNoSunGrids) renderer.drop_sun_grids();
   Rendered<M> out;
   out.wide = renderer.wide_walk();
   out.avx2 = renderer.avx2_walk();
+  out.sun_grids = renderer.sun_grids();
   out.rgba.resize(static_cast<size_t>(scene.width) * scene.height * 4);
   for (int y = 0; y < scene.height; ++y) renderer.render_row(y, out.rgba.data() + static_cast<size_t>(y) * scene.width * 4);
   return out;
@@ -95,7 +98,11 @@ void check_walks(const std::string& text) {
   const auto binary = render<M>(text, Walk::kBinary);
   const auto wide16 = render<M>(text, Walk::kWide16);
   const auto widest = render<M>(text, Walk::kWidest);
+  const auto no_grids = render<M>(text, Walk::kWidestNoSunGrids);
   CHECK_FALSE(binary.wide);
+  CHECK_FALSE(binary.sun_grids);
+  CHECK_FALSE(no_grids.sun_grids);
+  CHECK(no_grids.rgba == binary.rgba);
   if (general::kWideBvh) {
     CHECK(wide16.wide);
     CHECK_FALSE(wide16.avx2);
@@ -106,6 +113,14 @@ void check_walks(const std::string& text) {
 }
 
 }  // namespace
+
+// The cloud without its triangles, at 64x48: a scene of spheres alone
+// with enough samples a sphere for its suns to get grids (sun_grid.hpp).
+std::string sphere_cloud(int spheres, double radius) {
+  std::string text = cloud_scene(spheres, radius);
+  text = text.substr(0, text.find("shininess 0.2\ntransparency 0\nroughness 0\ncolor 0.8 0.2 0.2\n"));
+  return "png 64 48 x.png" + text.substr(text.find('\n'));
+}
 
 TEST_CASE("wide BVH: binary, 16-byte and widest walks give the same bytes", "[general][bvh]") {
   for (const auto& [spheres, radius] : {std::pair{600, 0.05}, std::pair{3000, 0.02}, std::pair{40, 0.6}}) {
@@ -130,4 +145,70 @@ TEST_CASE("wide BVH: a sphere too large for float beside triangles", "[general][
   check_walks<LibmDouble>(text);
   check_walks<LibmFloat>(text);
   check_walks<PortableFloat>(text);
+}
+
+// Shadow rays toward a sun through its grid answer as the walk does: the
+// same bytes with and without the grids, on clouds of small and of large
+// overlapping spheres, in double and in float.
+TEST_CASE("sun grids: the same bytes as the shadow walk", "[general][bvh]") {
+  for (const auto& [spheres, radius] : {std::pair{1100, 0.03}, std::pair{400, 0.4}, std::pair{5, 3.0}}) {
+    DYNAMIC_SECTION(spheres << " spheres of radius about " << radius) {
+      const std::string text = sphere_cloud(spheres, radius);
+      if (general::kWideBvh) CHECK(render<LibmDouble>(text, Walk::kWidest).sun_grids);
+      check_walks<LibmDouble>(text);
+      check_walks<LibmFloat>(text);
+      check_walks<PortableFloat>(text);
+    }
+  }
+}
+
+// Each origin's cell lists every sphere that blocks a ray from it toward the
+// sun (found here by testing them all), from points on and between spheres.
+TEST_CASE("sun grids: a cell lists every sphere that blocks its rays", "[general][bvh]") {
+  using R = double;
+  const std::string text = sphere_cloud(800, 0.08);
+  const size_t bytes = size_t{64} << 20;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  model::SceneBuilder<R> builder(arena);
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  cs418::Reader<LibmDouble> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
+  cs418::Header header;
+  model::Scene<R> scene;
+  Diagnostic d;
+  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
+  REQUIRE(builder.finish(scene));
+  const Vec3<R> dir = normalize<LibmDouble>(Vec3<R>{1, 2, 1});
+  general::SunGrid<R> grid;
+  REQUIRE(general::build_sun_grid<LibmDouble>(scene, dir, arena, grid));
+  uint32_t state = 99u;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  const R eps = 1e-4;
+  int blocked = 0;
+  for (int k = 0; k < 20000; ++k) {
+    // Half the origins on a sphere's surface, as shading makes them.
+    Vec3<R> o{next() * 4.0 - 2.0, next() * 3.0 - 2.0, next() * 3.0 - 4.5};
+    if (k % 2 == 0) {
+      const auto& sp = scene.spheres[static_cast<uint32_t>(next() * scene.sphere_count) % scene.sphere_count];
+      const Vec3<R> n = normalize<LibmDouble>(Vec3<R>{next() - 0.5, next() - 0.5, next() - 0.5});
+      o = sp.center + n * sp.radius;
+    }
+    const general::Ray<R> ray{o, dir};
+    bool any = false;
+    for (uint32_t i = 0; i < scene.sphere_count && !any; ++i) {
+      const R t = general::hit_sphere<LibmDouble>(scene.spheres[i], ray, eps);
+      any = t > eps;
+    }
+    REQUIRE(general::sun_grid_covers(grid, ray));
+    const bool by_grid = general::sun_grid_any(grid, o, [&](uint32_t i) {
+      return general::hit_sphere<LibmDouble>(scene.spheres[i], ray, eps) > eps;
+    });
+    CHECK(by_grid == any);
+    blocked += any ? 1 : 0;
+  }
+  CHECK(blocked > 1000);  // the rays are not all free
+  CHECK(blocked < 19000);
 }
