@@ -2,8 +2,15 @@
 // caused, in double and in the board's float.
 #include <catch2/catch.hpp>
 
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/base/arena.hpp"
+#include "core/base/diagnostic.hpp"
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "formats/eastray/eastray_reader.hpp"
 #include "render/general/quadric_shape.hpp"
 
 namespace {
@@ -46,7 +53,63 @@ void check_thin_ellipsoid(typename M::real thin) {
   CHECK(out[1].t == Approx(2 + thin * 0.97468).epsilon(1e-3));
 }
 
+// The world-to-local map of the only object of an EASTRAY scene's main obj,
+// or false with the reader's message.
+template <class M>
+bool eastray_object(const std::string& object, model::Affine<typename M::real>& to_local, std::string& error) {
+  using R = typename M::real;
+  const std::string text = "display 8 8  0 0 7 7  1 1  1 ;\ncamera 0 0 9  0 0 0  0 9 0  25 0 ;\n"
+                           "color [ grey 0.6 0.6 0.6  0 0 0  0 0 0  1 1  0  0 0 1 ; ]\nobj [ " + object + " ]\n";
+  const auto caps = eastray::Scene<R>::Capacities::for_text(text.size());
+  const size_t bytes = eastray::Scene<R>::bytes_for(caps) + eastray::Reader<M>::scratch_bytes() + 4096;
+  std::vector<unsigned char> storage(bytes);
+  Arena arena(storage.data(), bytes);
+  eastray::Scene<R> scene;
+  REQUIRE(scene.allocate(arena, caps));
+  auto reader = std::make_unique<eastray::Reader<M>>(text.data(), text.size(), scene, arena);
+  Diagnostic d;
+  if (!reader->read(d)) {
+    error = d.message;
+    return false;
+  }
+  REQUIRE(scene.primitive_count == 1);
+  to_local = scene.primitives[0].to_local;
+  return true;
+}
+
+// An axis given by a vector whose squared length under- or overflows the
+// real type still names its direction: the local z axis is that direction.
+template <class M>
+void check_axis(const char* axis, double x, double y, double z) {
+  using R = typename M::real;
+  model::Affine<R> to_local;
+  std::string error;
+  INFO(axis << ": " << error);
+  REQUIRE(eastray_object<M>(std::string("5 grey 1  0 0 0  ") + axis + "  0.5 ;", to_local, error));
+  const Vec3<R> w = to_local.transposed(Vec3<R>{R(0), R(0), R(1)});  // local z in the world
+  CHECK(static_cast<double>(w.x) == Approx(x).margin(1e-6));
+  CHECK(static_cast<double>(w.y) == Approx(y).margin(1e-6));
+  CHECK(static_cast<double>(w.z) == Approx(z).margin(1e-6));
+}
+
 }  // namespace
+
+TEST_CASE("an EASTRAY axis too short or too long to square still gives its direction", "[hard][eastray]") {
+  for (int v = 0; v < 2; ++v) {
+    auto check = [&](const char* axis, double x, double y, double z) {
+      if (v == 0) check_axis<LibmDouble>(axis, x, y, z);
+      else check_axis<PortableFloat>(axis, x, y, z);
+    };
+    check("1e-30 0 0", 1, 0, 0);
+    check("0 3e-25 4e-25", 0, 0.6, 0.8);
+    check("3e38 3e38 0", 0.70710678, 0.70710678, 0);
+    check("0 1 0", 0, 1, 0);
+  }
+  model::Affine<double> to_local;
+  std::string error;
+  CHECK_FALSE(eastray_object<LibmDouble>("5 grey 1  0 0 0  0 0 0  0.5 ;", to_local, error));
+  CHECK(error == "the object's axis vector is zero");
+}
 
 TEST_CASE("a thin quadric: no crossing where a ray passes its rim", "[hard][eastray]") {
   check_thin_ellipsoid<LibmDouble>(1e-8);
