@@ -2,6 +2,7 @@
 // caused, in double and in the board's float.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "formats/eastray/eastray_reader.hpp"
+#include "formats/model/scene_builder.hpp"
 #include "render/general/quadric_shape.hpp"
 
 namespace {
@@ -92,7 +94,45 @@ void check_axis(const char* axis, double x, double y, double z) {
   CHECK(static_cast<double>(w.z) == Approx(z).margin(1e-6));
 }
 
+// The plane Ax + By + Cz + D = 0 as the builder stores it: a point on it
+// and a normal along (A, B, C).
+template <class R>
+model::Plane<R> built_plane(Vec3<R> abc, R d) {
+  std::vector<unsigned char> storage(1 << 16);
+  Arena arena(storage.data(), storage.size());
+  model::SceneBuilder<R> builder(arena);
+  REQUIRE(builder.add_plane(abc, d));
+  model::Scene<R> scene;
+  REQUIRE(builder.finish(scene));
+  REQUIRE(scene.plane_count == 1);
+  return scene.planes[0];
+}
+
+template <class R>
+void check_plane(Vec3<R> abc, R d, Vec3<R> point, Vec3<R> unit_normal) {
+  const model::Plane<R> p = built_plane(abc, d);
+  INFO(abc.x << " " << abc.y << " " << abc.z << " " << d);
+  CHECK(p.point.x == Approx(point.x).margin(1e-6));
+  CHECK(p.point.y == Approx(point.y).margin(1e-6));
+  CHECK(p.point.z == Approx(point.z).margin(1e-6));
+  const R len = std::sqrt(dot(p.normal, p.normal));
+  REQUIRE(len > R(0));
+  CHECK(p.normal.x / len == Approx(unit_normal.x).margin(1e-6));
+  CHECK(p.normal.y / len == Approx(unit_normal.y).margin(1e-6));
+  CHECK(p.normal.z / len == Approx(unit_normal.z).margin(1e-6));
+}
+
 }  // namespace
+
+TEST_CASE("a plane whose (A, B, C) is too short or long to square lies where its equation says",
+          "[hard][cs418][minirt]") {
+  check_plane<float>({1e-30f, 0, 0}, 1e-30f, {-1, 0, 0}, {1, 0, 0});
+  check_plane<float>({0, 3e38f, 0}, 3e38f, {0, -1, 0}, {0, 1, 0});
+  check_plane<float>({0, 0, -2e-25f}, 4e-25f, {0, 0, 2}, {0, 0, -1});
+  check_plane<float>({0, 2, 0}, 2, {0, -1, 0}, {0, 1, 0});
+  check_plane<double>({1e-30, 0, 0}, 1e-30, {-1, 0, 0}, {1, 0, 0});
+  check_plane<double>({0, 3e200, 0}, 3e200, {0, -1, 0}, {0, 1, 0});
+}
 
 TEST_CASE("an EASTRAY axis too short or too long to square still gives its direction", "[hard][eastray]") {
   for (int v = 0; v < 2; ++v) {
