@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,9 @@
 #include "core/base/diagnostic.hpp"
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
+#include "core/base/byte_io.hpp"
 #include "formats/eastray/eastray_reader.hpp"
+#include "formats/jaworski/jaworski_reader.hpp"
 #include "formats/model/scene_builder.hpp"
 #include "render/general/quadric_shape.hpp"
 
@@ -122,7 +125,38 @@ void check_plane(Vec3<R> abc, R d, Vec3<R> point, Vec3<R> unit_normal) {
   CHECK(p.normal.z / len == Approx(unit_normal.z).margin(1e-6));
 }
 
+// The unit normal Jaworski's float reader keeps for `plane 0 0 5 NORMAL`.
+template <class M>
+Vec3<typename M::real> jaworski_plane_normal(const std::string& normal) {
+  using R = typename M::real;
+  const std::string text = "imWidth 4 imHeight 4 canvWidth 4 canvHeight 4 depth 4\nlights\nobjects\nplane 0 0 5 " +
+                           normal + " diffusive 1 1 1\n";
+  std::vector<unsigned char> storage(1 << 16);
+  Arena arena(storage.data(), storage.size());
+  jaworski::Scene<R> scene;
+  REQUIRE(scene.allocate(arena, 4));
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  jaworski::Reader<M> reader(mem.source(), scene);
+  Diagnostic d;
+  INFO(d.message);
+  REQUIRE(reader.read(d));
+  REQUIRE(scene.object_count == 1);
+  return scene.objects[0].normal;
+}
+
 }  // namespace
+
+TEST_CASE("Jaworski in float: a plane normal too short or long to square keeps its direction",
+          "[hard][jaworski]") {
+  for (const auto& [text, x, y, z] : {std::tuple{"1e-30 1e-30 0", 0.70710678, 0.70710678, 0.0},
+                                      std::tuple{"0 0 -3e38", 0.0, 0.0, -1.0}, std::tuple{"0 2 0", 0.0, 1.0, 0.0}}) {
+    INFO(text);
+    const Vec3<float> n = jaworski_plane_normal<PortableFloat>(text);
+    CHECK(n.x == Approx(x).margin(1e-6));
+    CHECK(n.y == Approx(y).margin(1e-6));
+    CHECK(n.z == Approx(z).margin(1e-6));
+  }
+}
 
 TEST_CASE("a plane whose (A, B, C) is too short or long to square lies where its equation says",
           "[hard][cs418][minirt]") {
