@@ -1106,18 +1106,11 @@ class Reader {
     const V c{p[0], p[1], p[2]};
     const V axis{p[3], p[4], p[5]};
     auto need_axis = [&]() {
-      const R ax = axis.x < R(0) ? -axis.x : axis.x, ay = axis.y < R(0) ? -axis.y : axis.y,
-              az = axis.z < R(0) ? -axis.z : axis.z;
-      const R big = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-      if (big == R(0)) {
+      if (largest_component(axis) == R(0)) {
         fail_at(at, "the object's axis vector is zero");
         return false;
       }
-      // A length whose square under- or overflows (1e-20 or 1e20 in float)
-      // is scaled by its largest component first: the same direction.
-      const R len2 = dot(axis, axis);
-      const bool squares = len2 > R(1e-30) && len2 < R(1e30);
-      placement = frame(c, squares ? axis : V{axis.x / big, axis.y / big, axis.z / big});
+      placement = frame(c, squarable_direction(axis));
       return true;
     };
     auto positive = [&](R v, const char* what) {

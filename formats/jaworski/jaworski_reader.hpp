@@ -361,15 +361,9 @@ class Reader {
     } else {
       Vec3<R> n;
       if (!vector(o.point) || !vector(n)) return false;
-      // In float a normal whose squared length under- or overflows (1e-20,
-      // 1e20) is scaled by its largest component first, as double holds it;
-      // double keeps the original's operations.
-      if constexpr (sizeof(R) < sizeof(double)) {
-        const R n2 = dot(n, n);
-        const R ax = n.x < R(0) ? -n.x : n.x, ay = n.y < R(0) ? -n.y : n.y, az = n.z < R(0) ? -n.z : n.z;
-        const R big = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-        if (!(n2 > R(1e-30) && n2 < R(1e30)) && big > R(0)) n = Vec3<R>{n.x / big, n.y / big, n.z / big};
-      }
+      // In float a normal whose squared length under- or overflows keeps
+      // its direction; double keeps the original's operations.
+      if constexpr (sizeof(R) < sizeof(double)) n = squarable_direction(n);
       o.normal = n * (R(1) / M::sqrt(dot(n, n)));
     }
     if (!surface(o.surface, 0)) return false;

@@ -39,17 +39,11 @@ class SceneBuilder {
   bool add_plane(const Vec3<R>& abc, R d) {
     Record* r = push(Kind::kPlane);
     if (r == nullptr) return false;
-    Vec3<R> n = abc;
-    R dn = d;
-    // (A, B, C, D) scaled by its largest normal component when A^2 + B^2 +
-    // C^2 under- or overflows (1e-20 or 1e20 in float): the same plane,
-    // where the square would give a NaN or zero point.
-    const R n2 = dot(n, n);
-    if (!(n2 > R(1e-30) && n2 < R(1e30))) {
-      const R ax = n.x < R(0) ? -n.x : n.x, ay = n.y < R(0) ? -n.y : n.y, az = n.z < R(0) ? -n.z : n.z;
-      const R big = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-      if (big > R(0)) n = Vec3<R>{n.x / big, n.y / big, n.z / big}, dn = d / big;
-    }
+    // (A, B, C, D) scaled as (A, B, C) is when A^2 + B^2 + C^2 under- or
+    // overflows: the same plane, where the square would give a NaN or
+    // zero point.
+    const Vec3<R> n = squarable_direction(abc);
+    const R dn = squarable(abc) ? d : d / largest_component(abc);
     const R scale = -dn / dot(n, n);
     r->plane = Plane<R>{n, n * scale, current_material(), objects_++};
     ++planes_;
