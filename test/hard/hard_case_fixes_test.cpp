@@ -13,6 +13,7 @@
 #include "core/math/math_libm.hpp"
 #include "core/math/math_portable.hpp"
 #include "core/base/byte_io.hpp"
+#include "formats/cs418/cs418_reader.hpp"
 #include "formats/eastray/eastray_reader.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "formats/model/scene_builder.hpp"
@@ -144,7 +145,49 @@ Vec3<typename M::real> jaworski_plane_normal(const std::string& normal) {
   return scene.objects[0].normal;
 }
 
+// The camera a CS418 scene's text sets up, in M's precision.
+template <class M>
+model::Camera<typename M::real> cs418_camera(const std::string& text) {
+  using R = typename M::real;
+  std::vector<unsigned char> storage(1 << 16);
+  Arena arena(storage.data(), storage.size());
+  model::SceneBuilder<R> builder(arena);
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
+  cs418::Header header;
+  model::Scene<R> scene;
+  Diagnostic d;
+  INFO(d.message);
+  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
+  return scene.camera;
+}
+
+template <class R>
+void check_unit(const Vec3<R>& v, double x, double y, double z) {
+  CHECK(static_cast<double>(v.x) == Approx(x).margin(1e-6));
+  CHECK(static_cast<double>(v.y) == Approx(y).margin(1e-6));
+  CHECK(static_cast<double>(v.z) == Approx(z).margin(1e-6));
+}
+
 }  // namespace
+
+TEST_CASE("CS418: a forward or up too short or long to square still gives a camera", "[hard][cs418]") {
+  auto check = [](auto policy) {
+    using M = decltype(policy);
+    // forward 1e-30 long (a very wide view), then up along it (kept right).
+    auto c = cs418_camera<M>("png 8 8 x.png\nforward 0 0 -1e-30\nup 0 0 -1\n");
+    check_unit(c.right, 1, 0, 0);
+    check_unit(c.up, 0, 1, 0);
+    c = cs418_camera<M>("png 8 8 x.png\nup 0 1e-30 1e-30\n");
+    check_unit(c.right, 1, 0, 0);
+    check_unit(c.up, 0, 1, 0);
+    c = cs418_camera<M>("png 8 8 x.png\nforward 3e38 0 0\n");
+    check_unit(c.right, 0, 0, 1);
+    check_unit(c.up, 0, 1, 0);
+  };
+  check(LibmDouble{});
+  check(PortableFloat{});
+}
 
 TEST_CASE("Jaworski in float: a plane normal too short or long to square keeps its direction",
           "[hard][jaworski]") {
