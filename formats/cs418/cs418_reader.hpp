@@ -293,6 +293,9 @@ class Reader {
         warn_at(1).text("sun direction is zero: the sun is left out (it would light nothing)");
         return ReadStatus::kOk;
       }
+      // Only its direction counts: one whose square under- or overflows
+      // keeps it (normalised at set-up, it would be NaN or zero).
+      if (light.kind == model::LightKind::kSun) light.vector = squarable_direction(light.vector);
       if (light.color.x == z.x && light.color.y == z.y && light.color.z == z.z) {
         warn_at(0).text("light colour is zero: the light is left out (it would add nothing)");
         return ReadStatus::kOk;

@@ -145,7 +145,24 @@ Vec3<typename M::real> jaworski_plane_normal(const std::string& normal) {
   return scene.objects[0].normal;
 }
 
-// The camera a CS418 scene's text sets up, in M's precision.
+// The scene a CS418 text sets up, in M's precision.
+template <class M>
+model::Scene<typename M::real> cs418_scene(const std::string& text, std::vector<unsigned char>& storage) {
+  using R = typename M::real;
+  storage.assign(1 << 16, 0);
+  Arena arena(storage.data(), storage.size());
+  model::SceneBuilder<R> builder(arena);
+  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
+  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
+  cs418::Header header;
+  model::Scene<R> scene;
+  Diagnostic d;
+  INFO(d.message);
+  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
+  REQUIRE(builder.finish(scene));
+  return scene;
+}
+
 template <class M>
 model::Camera<typename M::real> cs418_camera(const std::string& text) {
   using R = typename M::real;
@@ -184,6 +201,21 @@ TEST_CASE("CS418: a forward or up too short or long to square still gives a came
     c = cs418_camera<M>("png 8 8 x.png\nforward 3e38 0 0\n");
     check_unit(c.right, 0, 0, 1);
     check_unit(c.up, 0, 1, 0);
+  };
+  check(LibmDouble{});
+  check(PortableFloat{});
+}
+
+TEST_CASE("CS418: a sun direction too short or long to square still lights", "[hard][cs418]") {
+  auto check = [](auto policy) {
+    using M = decltype(policy);
+    using R = typename M::real;
+    std::vector<unsigned char> storage;
+    const auto s = cs418_scene<M>("png 8 8 x.png\nsun 1e-30 1e-30 0\nsun 0 0 3e38\nsphere 0 0 -3 1\n", storage);
+    REQUIRE(s.light_count == 2);
+    const Vec3<R> a = normalize<M>(s.lights[0].vector), b = normalize<M>(s.lights[1].vector);
+    check_unit(a, 0.70710678, 0.70710678, 0);
+    check_unit(b, 0, 0, 1);
   };
   check(LibmDouble{});
   check(PortableFloat{});
