@@ -17,6 +17,7 @@
 #include "formats/eastray/eastray_reader.hpp"
 #include "formats/jaworski/jaworski_reader.hpp"
 #include "formats/model/scene_builder.hpp"
+#include "format_sides/host_formats.hpp"
 #include "render/general/quadric_shape.hpp"
 
 namespace {
@@ -219,6 +220,40 @@ TEST_CASE("CS418: a sun direction too short or long to square still lights", "[h
   };
   check(LibmDouble{});
   check(PortableFloat{});
+}
+
+// Pixels of a CS418 text rendered by minrt's CS418 side in `v` that are
+// lit (any channel above 8).
+long cs418_lit_pixels(const std::string& text, host::Variant v) {
+  const host::SceneInput in{"scene.txt", "scene.txt", "", text};
+  host::DriverOptions o;
+  o.variant = v;
+  o.threads = 1;
+  std::string error;
+  auto s = host::host_format(formats::FormatId::kCs418).prepare(in, o, WarningSink{}, error);
+  INFO(error);
+  REQUIRE(s != nullptr);
+  std::vector<uint8_t> row(static_cast<size_t>(s->width) * 4);
+  long lit = 0;
+  for (int y = 0; y < s->height; ++y) {
+    s->render_row(y, row.data());
+    for (int x = 0; x < s->width; ++x)
+      lit += row[4 * x] > 8 || row[4 * x + 1] > 8 || row[4 * x + 2] > 8;
+  }
+  return lit;
+}
+
+TEST_CASE("CS418: a roughness too large to square perturbs the normal, in float too", "[hard][cs418]") {
+  // A rough floor filling the picture under a sun: the perturbed normals
+  // point every way, so about half the pixels are lit, in double and in
+  // float alike (float's square of the perturbed normal once overflowed to
+  // a zero normal and a black floor).
+  const std::string text = "png 32 32 x.png\ncolor 1 1 1\nsun 0 1 0\nroughness 1e30\nplane 0 1 0 0.3\n";
+  const long pixels = 32 * 16;  // the floor's half of the picture
+  const long in_double = cs418_lit_pixels(text, {host::Precision::kDouble, host::ShimSet::kLibm});
+  const long in_float = cs418_lit_pixels(text, {host::Precision::kFloat, host::ShimSet::kPortable});
+  CHECK(in_double > pixels / 4);
+  CHECK(in_float > pixels / 4);
 }
 
 TEST_CASE("Jaworski in float: a plane normal too short or long to square keeps its direction",
