@@ -221,12 +221,11 @@ def main():
                  "or a board image unlike minrt's float/portable.")
     lines.append("- Where a scene has bad pixels, single precision cannot hold the scene: coordinates of 1e7 (float's "
                  "spacing there is 1), a scene at 1e6 (spacing 0.06, above the secondary rays' offsets), a squared "
-                 "radius or length beyond float's 3.4e38 (a sphere around the camera is lost; a perturbed normal "
-                 "overflows), a field of view whose pixels differ by less than float's spacing. "
+                 "radius beyond float's 3.4e38 (a sphere around the camera is lost), a field of view whose pixels differ by less than float's spacing. "
                  "[test/hard/scenes/README.md](../test/hard/scenes/README.md) says which, per scene; the test holds "
                  "every float variant to those counts.")
     lines.append("- Vectors a reader takes only as a direction (an EASTRAY axis, a plane's (A, B, C), Jaworski's plane "
-                 "normal in float, CS418's forward, up and sun) keep it when their squared length under- or overflows "
+                 "normal in float, CS418's forward, up, sun and rough normal) keep it when their squared length under- or overflows "
                  "float (`squarable_direction`, core/math/vec3.hpp); a thin EASTRAY quadric (semi-axes 1 and 1e-4) "
                  "takes its discriminant without cancellation, so its object hierarchy and the plain walk agree.")
     lines.append("")
