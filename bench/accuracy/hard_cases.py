@@ -60,10 +60,8 @@ def bad_pixels(img, ref, cs418):
     """Pixels off by more than BAD_ERROR from ref outside ref's dilated edge mask."""
     pa = premultiplied(img) if cs418 else img[:, :, :3].astype(np.int32)
     pr = premultiplied(ref) if cs418 else ref[:, :, :3].astype(np.int32)
-    if cs418:
-        pa, pr = pa.copy(), pr.copy()
     d = np.abs(pa - pr).max(axis=2)
-    h, w, c = pr.shape
+    h, w, _ = pr.shape
     p = np.pad(pr, ((1, 1), (1, 1), (0, 0)), mode="edge")
     var = np.zeros((h, w), np.int32)
     for dy in range(3):
