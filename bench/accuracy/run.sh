@@ -22,7 +22,8 @@
 # replacing its section of the output folder's accuracy.md.
 # --hard-cases (bench/accuracy/hard_cases.py) does only the hard cases of the
 # text formats: every scene of test/hard/scenes in every variant and on the
-# rv32imf firmware, replacing the section "Hard cases, per format" (a minute).
+# rv32imf firmware, replacing the section "Hard cases, per format" (seconds
+# after the build).
 # Needs Debian's python3-numpy, python3-matplotlib and python3-pil (run with /usr/bin/python3).
 # Prints one progress line per step on stderr (step n of N, elapsed seconds).
 #   [ENV=VALUE ...] bench/accuracy/run.sh [--formats | --hard-cases] [--out DIR | --write-docs]   (several minutes)
