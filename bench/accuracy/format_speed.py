@@ -181,12 +181,12 @@ def build_kind(minrt):
             + " profile-guided optimisation")
 
 
-def replace_section(doc, section):
-    """doc with the section replaced, or inserted before "## The board against double"
-    (else "## Regenerating", else at the end)."""
-    if SECTION + "\n" in doc:
-        a = doc.index(SECTION + "\n")
-        b = doc.find("\n## ", a + len(SECTION))
+def replace_section(doc, section, title=SECTION):
+    """doc with the section headed `title` replaced, or inserted before "## The board
+    against double" (else "## Regenerating", else at the end)."""
+    if title + "\n" in doc:
+        a = doc.index(title + "\n")
+        b = doc.find("\n## ", a + len(title))
         return doc[:a] + section + (doc[b + 1:] if b >= 0 else "")
     for anchor in ("## The board against double\n", "## Regenerating\n"):
         if anchor in doc:

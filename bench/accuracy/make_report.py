@@ -49,6 +49,16 @@ FPU_ISA = "rv32imf"
 CHECK_OPS = ["fadd", "fsub", "fmul", "fdiv", "fsqrt"]
 
 
+# The text formats' hard cases (bench/accuracy/hard_cases.py's section).
+HARD_CASES_TESTS = (
+    "`test/hard/format_hard_cases_test.cpp` (ctest `hard: ...`) renders every scene of "
+    "`test/hard/scenes/<format>` in every variant through minrt's format sides and checks: every "
+    "render succeeds at the scene's size, the binary, 16-byte and widest BVH walks (EASTRAY: its "
+    "object hierarchy and the plain CSG walk) give the same bytes, each float variant's bad pixels "
+    "stay within [test/hard/scenes/README.md](../test/hard/scenes/README.md)'s bounds, and every "
+    "`bad/` file is refused with one located line; `hard_case_fixes_test.cpp` pins what they "
+    "found at its cause.\n")
+
 def read_model(path):
     """(unit name, {key: value}) of a firmware-sim FPU model file."""
     name, keys = None, {}
@@ -731,6 +741,7 @@ def main():
       "[sld/hard/README.md](../sld/hard/README.md), the output is deterministic, and "
       "float/portable+fma really differs from float/portable (i.e. the compiler did fuse; "
       "`objdump -d` of `fma_variant.cpp.o` shows `vfmadd`/`vfnmadd` instructions).\n")
+    w(HARD_CASES_TESTS)
     w("`test/sim/` (ctest `sim: ...` and `sim cli: ...`) checks the FPU models: table entries "
       "and Newton steps on operands worked out by hand from the definition, IEEE results for "
       "zeros, infinities and NaNs, subnormals kept and flushed, `--fpu-check` meeting 2^-20 "
@@ -752,7 +763,7 @@ def main():
 
     # These sections are bench/accuracy/format_speed.py's (rewritten after this
     # script by run.sh) and board_vs_double.py's: kept as they were.
-    for heading in ("## Speed against error, per format", "## The board against double"):
+    for heading in ("## Speed against error, per format", "## Hard cases, per format", "## The board against double"):
         kept = kept_section(os.path.join(args.root, "docs", "accuracy.md"), heading)
         if kept:
             w(kept)
@@ -762,7 +773,8 @@ def main():
       "`build/reports/accuracy` (or `--out DIR`) and leaves docs/ alone. It prints one "
       "progress line per step on stderr. With `--formats` it redoes only "
       "[Speed against error, per format](#speed-against-error-per-format) (a few minutes; "
-      "that section ends with the command and time of its run).\n")
+      "that section ends with the command and time of its run); with `--hard-cases` only "
+      "[Hard cases, per format](#hard-cases-per-format) (seconds).\n")
     reused = [isa for isa, (res, _) in firmware.items() if res and res["cached"]]
     w(f"This run took {elapsed:.0f} s of wall time on the development machine ({cpu_model()}, "
       f"{os.cpu_count()} cores) after the "

@@ -20,9 +20,13 @@
 # every variant, three scenes per format under callgrind and on the rv32imf
 # firmware (host-send --sim); --formats does only this part (a few minutes),
 # replacing its section of the output folder's accuracy.md.
+# --hard-cases (bench/accuracy/hard_cases.py) does only the hard cases of the
+# text formats: every scene of test/hard/scenes in every variant and on the
+# rv32imf firmware, replacing the section "Hard cases, per format" (seconds
+# after the build).
 # Needs Debian's python3-numpy, python3-matplotlib and python3-pil (run with /usr/bin/python3).
 # Prints one progress line per step on stderr (step n of N, elapsed seconds).
-#   [ENV=VALUE ...] bench/accuracy/run.sh [--formats] [--out DIR | --write-docs]   (several minutes)
+#   [ENV=VALUE ...] bench/accuracy/run.sh [--formats | --hard-cases] [--out DIR | --write-docs]   (several minutes)
 . "$(dirname "$0")/../../scripts/help.sh"
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -36,6 +40,7 @@ while [ $# -gt 0 ]; do
     --out) out=${2:?$1 needs a folder}; shift 2 ;;
     --write-docs) out=$root/docs; write_docs=1; shift ;;
     --formats) formats_only=1; shift ;;
+    --hard-cases) hard_only=1; shift ;;
     *) echo "run.sh: error: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -54,6 +59,7 @@ for var in BUILD MINRT_SHARED_DIR FW_BUILD JOBS FIRMWARE_ISAS NO_CACHE; do
   [ -n "$val" ] && command="$var=$val $command"
 done
 [ -n "${formats_only:-}" ] && command="$command --formats"
+[ -n "${hard_only:-}" ] && command="$command --hard-cases"
 [ -n "${write_docs:-}" ] && command="$command --write-docs"
 
 # The text formats' part: minrt and host-send from $build, the simulator and
@@ -67,8 +73,23 @@ formats() {
     --elf "$fw_build/firmware/minrt-rv32imf.elf" --shared "$shared" --work "$build/accuracy-work/formats" \
     --doc "$out/accuracy.md" --jobs "$jobs" --command "$command"
 }
+# The hard cases of the text formats: minrt and host-send from $build, the
+# simulator and the rv32imf firmware from $fw_build.
+hard_cases() {
+  echo "accuracy: building minrt and host-send in $build, firmware-sim and the firmware in $fw_build" >&2
+  cmake --build "$build" --target minrt host-send -j "$jobs"
+  cmake --build "$fw_build" --target firmware-sim firmware-rv32imf -j "$jobs"
+  /usr/bin/python3 "$root/bench/accuracy/hard_cases.py" --minrt "$build/host/minrt" \
+    --host-send "$build/host/send/host-send" --sim "$fw_build/firmware_sim/firmware-sim" \
+    --elf "$fw_build/firmware/minrt-rv32imf.elf" --work "$build/accuracy-work/hard-cases" \
+    --doc "$out/accuracy.md" --jobs "$jobs" --command "$command"
+}
 if [ -n "${formats_only:-}" ]; then
   formats
+  exit
+fi
+if [ -n "${hard_only:-}" ]; then
+  hard_cases
   exit
 fi
 
@@ -86,4 +107,5 @@ fi
 status=0
 /usr/bin/python3 "$root/bench/accuracy/make_report.py" "$@" || status=$?
 formats || status=$?
+hard_cases || status=$?
 exit $status

@@ -45,4 +45,30 @@ Vec3<typename M::real> normalize(const Vec3<typename M::real>& v) {
   return v / M::sqrt(dot(v, v));
 }
 
+// The largest |component| of v.
+template <class R>
+R largest_component(const Vec3<R>& v) {
+  const R x = v.x < R(0) ? -v.x : v.x, y = v.y < R(0) ? -v.y : v.y, z = v.z < R(0) ? -v.z : v.z;
+  return x > y ? (x > z ? x : z) : (y > z ? y : z);
+}
+
+// Whether dot(v, v) is safely inside float's range: a squared length
+// outside (1e-30, 1e30) is near float's underflow (1e-38) or overflow (3e38).
+template <class R>
+bool squarable(const Vec3<R>& v) {
+  const R v2 = dot(v, v);
+  return v2 > R(1e-30) && v2 < R(1e30);
+}
+
+// v, or, when its squared length is not squarable, v divided by its largest
+// component: the same direction with a length in [1, 1.8]. Readers use it
+// on the vectors a scene gives before squaring them (every other vector
+// keeps its bits); a zero vector stays zero.
+template <class R>
+Vec3<R> squarable_direction(const Vec3<R>& v) {
+  if (squarable(v)) return v;
+  const R big = largest_component(v);
+  return big > R(0) ? Vec3<R>{v.x / big, v.y / big, v.z / big} : v;
+}
+
 }  // namespace minrt

@@ -293,6 +293,9 @@ class Reader {
         warn_at(1).text("sun direction is zero: the sun is left out (it would light nothing)");
         return ReadStatus::kOk;
       }
+      // Only its direction counts: one whose square under- or overflows
+      // keeps it (normalised at set-up, it would be NaN or zero).
+      if (light.kind == model::LightKind::kSun) light.vector = squarable_direction(light.vector);
       if (light.color.x == z.x && light.color.y == z.y && light.color.z == z.z) {
         warn_at(0).text("light colour is zero: the light is left out (it would add nothing)");
         return ReadStatus::kOk;
@@ -420,12 +423,14 @@ class Reader {
         // NaN): keep the previous right, made perpendicular to forward.
         warn_at(1).text(fwd ? "forward is parallel to up: the camera keeps its right vector"
                             : "up is parallel to forward: the camera keeps its right vector");
-        const Vec3<R> f = cam.forward;
+        // (squarable_direction: a forward, right or up whose square under-
+        // or overflows keeps its direction, not NaN.)
+        const Vec3<R> f = squarable_direction(cam.forward);
         cam.right = normalize<M>(cam.right - f * (dot(f, cam.right) / dot(f, f)));
       } else {
-        cam.right = normalize<M>(right);
+        cam.right = normalize<M>(squarable_direction(right));
       }
-      cam.up = normalize<M>(cross(cam.right, cam.forward));
+      cam.up = normalize<M>(squarable_direction(cross(cam.right, cam.forward)));
       return ReadStatus::kOk;
     }
     if (word_is(0, "expose")) {

@@ -1106,11 +1106,11 @@ class Reader {
     const V c{p[0], p[1], p[2]};
     const V axis{p[3], p[4], p[5]};
     auto need_axis = [&]() {
-      if (dot(axis, axis) == R(0)) {
+      if (largest_component(axis) == R(0)) {
         fail_at(at, "the object's axis vector is zero");
         return false;
       }
-      placement = frame(c, axis);
+      placement = frame(c, squarable_direction(axis));
       return true;
     };
     auto positive = [&](R v, const char* what) {

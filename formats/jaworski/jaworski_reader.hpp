@@ -361,6 +361,9 @@ class Reader {
     } else {
       Vec3<R> n;
       if (!vector(o.point) || !vector(n)) return false;
+      // In float a normal whose squared length under- or overflows keeps
+      // its direction; double keeps the original's operations.
+      if constexpr (sizeof(R) < sizeof(double)) n = squarable_direction(n);
       o.normal = n * (R(1) / M::sqrt(dot(n, n)));
     }
     if (!surface(o.surface, 0)) return false;

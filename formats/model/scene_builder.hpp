@@ -39,8 +39,13 @@ class SceneBuilder {
   bool add_plane(const Vec3<R>& abc, R d) {
     Record* r = push(Kind::kPlane);
     if (r == nullptr) return false;
-    const R scale = -d / dot(abc, abc);
-    r->plane = Plane<R>{abc, abc * scale, current_material(), objects_++};
+    // (A, B, C, D) scaled as (A, B, C) is when A^2 + B^2 + C^2 under- or
+    // overflows: the same plane, where the square would give a NaN or
+    // zero point.
+    const Vec3<R> n = squarable_direction(abc);
+    const R dn = squarable(abc) ? d : d / largest_component(abc);
+    const R scale = -dn / dot(n, n);
+    r->plane = Plane<R>{n, n * scale, current_material(), objects_++};
     ++planes_;
     return true;
   }

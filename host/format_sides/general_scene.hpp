@@ -45,6 +45,9 @@ class GeneralScene : public PreparedScene {
     return true;
   }
 
+  // The renderer set up, for the tests that compare its walks.
+  general::Renderer<M>& renderer() { return renderer_; }
+
  private:
   general::Renderer<M> renderer_;
 };

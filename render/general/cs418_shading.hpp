@@ -98,7 +98,9 @@ class Cs418Shader : public TracerCore<M, F> {
     // angles a perturbed normal that faces away from the viewer is turned
     // round, away from the light above the surface, as in the reference.
     if constexpr ((F & kRoughness) != 0) {
-      if (mat.roughness > R(0)) n = normalize<M>(n + gaussian3<M>(rng) * mat.roughness);
+      // (squarable_direction: a roughness of 1e15 and more would square to
+      // infinity in float and leave a zero normal.)
+      if (mat.roughness > R(0)) n = normalize<M>(squarable_direction(n + gaussian3<M>(rng) * mat.roughness));
     }
     const bool entering = dot(ray.dir, n) < R(0);
     if (!entering) n = -n;

@@ -113,7 +113,20 @@ int crossings(const model::Quadric<typename M::real>& s, const Vec3<typename M::
   if (a == R(0)) {
     if (b != R(0)) on_surface(-c / b);
   } else {
-    const R disc = b * b - R(4) * a * c;
+    // A quadric with only squared terms (every centred primitive in its
+    // frame) has b^2 - 4ac = -4 (sum over i<j of qi qj (oi dj - oj di)^2
+    // + q9 a): b^2 and 4ac cancel their largest terms, which for a thin
+    // solid (qi ratios of 1e8 in float, 1e16 in double) leaves only rounding
+    // and reports crossings far outside it.
+    const bool squares_only =
+        q[3] == R(0) && q[4] == R(0) && q[5] == R(0) && q[6] == R(0) && q[7] == R(0) && q[8] == R(0);
+    R disc;
+    if (squares_only) {
+      const R xy = o.x * d.y - o.y * d.x, yz = o.y * d.z - o.z * d.y, zx = o.z * d.x - o.x * d.z;
+      disc = R(-4) * (q[0] * q[1] * xy * xy + q[1] * q[2] * yz * yz + q[2] * q[0] * zx * zx + q[9] * a);
+    } else {
+      disc = b * b - R(4) * a * c;
+    }
     if (disc >= R(0)) {
       const R root = M::sqrt(disc);
       const R h = b < R(0) ? R(-0.5) * (b - root) : R(-0.5) * (b + root);
