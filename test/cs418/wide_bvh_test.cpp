@@ -65,20 +65,26 @@ struct Rendered {
 
 enum class Walk { kBinary, kWide16, kWidest, kWidestNoSunGrids };
 
+// The scene a CS418 text sets up, laid out in `arena`.
 template <class M>
-Rendered<M> render(const std::string& text, Walk walk) {
-  using R = typename M::real;
-  const size_t bytes = size_t{64} << 20;
-  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
-  Arena arena(storage.get(), bytes);
-  model::SceneBuilder<R> builder(arena);
+model::Scene<typename M::real> read_scene(const std::string& text, Arena& arena) {
+  model::SceneBuilder<typename M::real> builder(arena);
   MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
   cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
   cs418::Header header;
-  model::Scene<R> scene;
+  model::Scene<typename M::real> scene;
   Diagnostic d;
   REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
   REQUIRE(builder.finish(scene));
+  return scene;
+}
+
+template <class M>
+Rendered<M> render(const std::string& text, Walk walk) {
+  const size_t bytes = size_t{64} << 20;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  const auto scene = read_scene<M>(text, arena);
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 7));
   if (walk == Walk::kBinary) renderer.drop_wide_bvh();
@@ -170,14 +176,7 @@ TEST_CASE("sun grids: a cell lists every sphere that blocks its rays", "[general
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  model::SceneBuilder<R> builder(arena);
-  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
-  cs418::Reader<LibmDouble> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
-  cs418::Header header;
-  model::Scene<R> scene;
-  Diagnostic d;
-  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
-  REQUIRE(builder.finish(scene));
+  const model::Scene<R> scene = read_scene<LibmDouble>(text, arena);
   const Vec3<R> dir = normalize<LibmDouble>(Vec3<R>{1, 2, 1});
   general::SunGrid<R> grid;
   REQUIRE(general::build_sun_grid<LibmDouble>(scene, dir, arena, grid));

@@ -166,18 +166,8 @@ model::Scene<typename M::real> cs418_scene(const std::string& text, std::vector<
 
 template <class M>
 model::Camera<typename M::real> cs418_camera(const std::string& text) {
-  using R = typename M::real;
-  std::vector<unsigned char> storage(1 << 16);
-  Arena arena(storage.data(), storage.size());
-  model::SceneBuilder<R> builder(arena);
-  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
-  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
-  cs418::Header header;
-  model::Scene<R> scene;
-  Diagnostic d;
-  INFO(d.message);
-  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
-  return scene.camera;
+  std::vector<unsigned char> storage;
+  return cs418_scene<M>(text, storage).camera;
 }
 
 template <class R>
