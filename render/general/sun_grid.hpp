@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
+#include "core/math/vec3.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/intersect.hpp"
 
@@ -134,10 +135,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   R extent = R(0);
   for (uint32_t i = 0; i < n; ++i) {
     const model::Sphere<R>& sp = s.spheres[i];
-    const R e = magnitude(sp.radius) +
-                (magnitude(sp.center.x) > magnitude(sp.center.y)
-                     ? (magnitude(sp.center.x) > magnitude(sp.center.z) ? magnitude(sp.center.x) : magnitude(sp.center.z))
-                     : (magnitude(sp.center.y) > magnitude(sp.center.z) ? magnitude(sp.center.y) : magnitude(sp.center.z)));
+    const R e = magnitude(sp.radius) + largest_component(sp.center);
     if (!(e <= R(1e30f))) return false;  // too large (for a float far side) or not a number
     if (e > extent) extent = e;
   }
@@ -166,6 +164,13 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   const R width = uhi - ulo, height = vhi - vlo;
   R cell = M::sqrt(width * height / M::from_int(static_cast<int32_t>(kSunGridCells * n)));
   if (!(cell > R(0))) cell = (width > height ? width : height) + margin;
+  // The cells sphere i's disc reaches, on the grid as it stands.
+  auto disc_cells = [&](uint32_t i, uint32_t& ua, uint32_t& ub, uint32_t& va, uint32_t& vb) {
+    const model::Sphere<R>& sp = s.spheres[i];
+    const R u = dot(sp.center, g.e1), v = dot(sp.center, g.e2), r = magnitude(sp.radius) + margin;
+    sun_grid_detail::cell_range(u - r, u + r, g.u0, g.per_unit, g.nu, ua, ub);
+    sun_grid_detail::cell_range(v - r, v + r, g.v0, g.per_unit, g.nv, va, vb);
+  };
   const uint64_t max_cells = static_cast<uint64_t>(kSunGridCells) * n + 1;
   const uint64_t max_items = static_cast<uint64_t>(kSunGridItems) * n;
   uint64_t items = 0;
@@ -179,11 +184,8 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
       if (static_cast<uint64_t>(g.nu) * g.nv <= max_cells) {
         items = 0;
         for (uint32_t i = 0; i < n && items <= max_items; ++i) {
-          const model::Sphere<R>& sp = s.spheres[i];
-          const R u = dot(sp.center, g.e1), v = dot(sp.center, g.e2), r = magnitude(sp.radius) + margin;
           uint32_t ua, ub, va, vb;
-          sun_grid_detail::cell_range(u - r, u + r, g.u0, g.per_unit, g.nu, ua, ub);
-          sun_grid_detail::cell_range(v - r, v + r, g.v0, g.per_unit, g.nv, va, vb);
+          disc_cells(i, ua, ub, va, vb);
           items += static_cast<uint64_t>(ub - ua + 1) * (vb - va + 1);
         }
         if (items <= max_items) break;
@@ -212,12 +214,8 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   // Count, then place each sphere in its cells.
   for (int pass = 0; pass < 2; ++pass) {
     for (uint32_t o = 0; o < n; ++o) {
-      const uint32_t i = order[o].sphere;
-      const model::Sphere<R>& sp = s.spheres[i];
-      const R u = dot(sp.center, g.e1), v = dot(sp.center, g.e2), r = magnitude(sp.radius) + margin;
       uint32_t ua, ub, va, vb;
-      sun_grid_detail::cell_range(u - r, u + r, g.u0, g.per_unit, g.nu, ua, ub);
-      sun_grid_detail::cell_range(v - r, v + r, g.v0, g.per_unit, g.nv, va, vb);
+      disc_cells(order[o].sphere, ua, ub, va, vb);
       for (uint32_t cv = va; cv <= vb; ++cv)
         for (uint32_t cu = ua; cu <= ub; ++cu) {
           const size_t c = static_cast<size_t>(cv) * g.nu + cu;
