@@ -62,23 +62,24 @@ done
 [ -n "${hard_only:-}" ] && command="$command --hard-cases"
 [ -n "${write_docs:-}" ] && command="$command --write-docs"
 
-# The text formats' part: minrt and host-send from $build, the simulator and
-# the rv32imf firmware from $fw_build.
-formats() {
+# What the text formats' parts run: minrt and host-send from $build, the
+# simulator and the rv32imf firmware from $fw_build.
+build_text_format_tools() {
   echo "accuracy: building minrt and host-send in $build, firmware-sim and the firmware in $fw_build" >&2
   cmake --build "$build" --target minrt host-send -j "$jobs"
   cmake --build "$fw_build" --target firmware-sim firmware-rv32imf -j "$jobs"
+}
+# The text formats' speed against error.
+formats() {
+  build_text_format_tools
   /usr/bin/python3 "$root/bench/accuracy/format_speed.py" --minrt "$build/host/minrt" \
     --host-send "$build/host/send/host-send" --sim "$fw_build/firmware_sim/firmware-sim" \
     --elf "$fw_build/firmware/minrt-rv32imf.elf" --shared "$shared" --work "$build/accuracy-work/formats" \
     --doc "$out/accuracy.md" --jobs "$jobs" --command "$command"
 }
-# The hard cases of the text formats: minrt and host-send from $build, the
-# simulator and the rv32imf firmware from $fw_build.
+# The hard cases of the text formats.
 hard_cases() {
-  echo "accuracy: building minrt and host-send in $build, firmware-sim and the firmware in $fw_build" >&2
-  cmake --build "$build" --target minrt host-send -j "$jobs"
-  cmake --build "$fw_build" --target firmware-sim firmware-rv32imf -j "$jobs"
+  build_text_format_tools
   /usr/bin/python3 "$root/bench/accuracy/hard_cases.py" --minrt "$build/host/minrt" \
     --host-send "$build/host/send/host-send" --sim "$fw_build/firmware_sim/firmware-sim" \
     --elf "$fw_build/firmware/minrt-rv32imf.elf" --work "$build/accuracy-work/hard-cases" \
