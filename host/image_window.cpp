@@ -242,17 +242,19 @@ void LiveWindow::run(std::string title, std::shared_ptr<std::promise<std::string
   const auto period = std::chrono::milliseconds(1000 / kRefreshHz);
   auto last = Clock::now() - period;
   bool redraw = true;
-  for (;;) {
+  for (bool first = true;; first = false) {
+    // Events are polled, never waited for: SDL's wait on X11 wakes itself
+    // with an event sent over a second connection to the server, which may
+    // handle it after this thread's connection has destroyed the window;
+    // the BadWindow then goes to Xlib's default handler, which ends the
+    // process with status 1.
+    if (!first) std::this_thread::sleep_for(std::chrono::milliseconds(kPollMs));
     SDL_Event e;
     bool quit = false;
-    // Complete: nothing changes but what the user does.
-    const bool idle = shown_rows == h && complete_titled;
-    if ((idle ? sdl.WaitEvent(&e) : sdl.WaitEventTimeout(&e, static_cast<int>(period.count()))) != 0) {
-      do {
-        if (e.type == SDL_QUIT) quit = true;
-        else if (e.type == SDL_KEYDOWN && (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q)) quit = true;
-        else if (e.type == SDL_WINDOWEVENT) redraw = true;  // exposed, resized, restored: the image again
-      } while (sdl.PollEvent(&e) != 0);
+    while (sdl.PollEvent(&e) != 0) {
+      if (e.type == SDL_QUIT) quit = true;
+      else if (e.type == SDL_KEYDOWN && (e.key.keysym.sym == SDLK_ESCAPE || e.key.keysym.sym == SDLK_q)) quit = true;
+      else if (e.type == SDL_WINDOWEVENT) redraw = true;  // exposed, resized, restored: the image again
     }
     if (quit) {
       // The renderer stops at its next row when the window was its only

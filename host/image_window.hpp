@@ -8,8 +8,8 @@
 // tens of milliseconds). Without a display,
 // open() says why in one line and the caller goes on without a window.
 //
-// Threads: SDL lives on a thread of its own, which redraws at most
-// kRefreshHz times a second. Producers hand rows over through a shared
+// Threads: SDL lives on a thread of its own, which looks for events every
+// kPollMs and redraws at most kRefreshHz times a second. Producers hand rows over through a shared
 // buffer with a per-row ready flag (each row is written once, then
 // published with a release store), so a render never waits on the window.
 //
@@ -39,6 +39,9 @@ namespace minrt::host {
 class LiveWindow {
  public:
   static constexpr int kRefreshHz = 30;
+  // How often the window's thread looks for the user's events: ESC or the
+  // close button is seen within this many milliseconds.
+  static constexpr int kPollMs = 10;
 
   LiveWindow() = default;
   LiveWindow(const LiveWindow&) = delete;

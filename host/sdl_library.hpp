@@ -14,8 +14,7 @@ struct SdlLibrary {
 #define MINRT_SDL_FUNCTIONS(X)                                                                              \
   X(SetHint) X(Init) X(GetError) X(GetCurrentVideoDriver) X(Quit) X(CreateWindow) X(DestroyWindow)         \
   X(GetWindowSurface) X(UpdateWindowSurface) X(CreateRGBSurfaceWithFormat) X(FreeSurface) X(UpperBlitScaled) \
-  X(FillRect) X(LockSurface) X(UnlockSurface) X(ConvertPixels) X(WaitEventTimeout) X(WaitEvent) X(PollEvent)  \
-  X(SetWindowTitle)
+  X(FillRect) X(LockSurface) X(UnlockSurface) X(ConvertPixels) X(PollEvent) X(SetWindowTitle)
 #define MINRT_SDL_POINTER(name) decltype(&::SDL_##name) name = nullptr;
   MINRT_SDL_FUNCTIONS(MINRT_SDL_POINTER)
 #undef MINRT_SDL_POINTER

@@ -18,9 +18,9 @@ for action in key close; do
   mkdir -p "$dir"
   (cd "$dir" && MINRT_SHOW_ROW_DELAY_MS=500 exec "$minrt" --size 160x120 --threads 1 "$scene") &
   pid=$!
-  python3 "$helper" wait "minrt: " 30 >/dev/null
+  python3 "$helper" --pid "$pid" wait "minrt: " 30 >/dev/null
   start=$SECONDS
-  python3 "$helper" "$action" "minrt: " >/dev/null
+  python3 "$helper" --pid "$pid" "$action" "minrt: " >/dev/null
   status=0
   wait "$pid" || status=$?
   # 120 rows at 500 ms: the render alone would last a minute.

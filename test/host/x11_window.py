@@ -2,7 +2,8 @@
 """Finds a top-level X11 window by a part of its title and acts on it like a
 user, through libX11 and libXtst (ctypes: no Python X library needed).
 
-Usage: x11_window.py wait TITLE [TIMEOUT [SINCE]]  prints the seconds until the window is
+Usage: x11_window.py [--pid PID] ACTION TITLE ...
+       x11_window.py wait TITLE [TIMEOUT [SINCE]]  prints the seconds until the window is
                                                     viewable, counted from SINCE (seconds
                                                     since the epoch; default: now)
        x11_window.py key TITLE [TIMEOUT]            presses and releases ESC in it (XTest)
@@ -12,6 +13,10 @@ Usage: x11_window.py wait TITLE [TIMEOUT [SINCE]]  prints the seconds until the 
                                                     to end; prints the seconds to viewable, the
                                                     seconds from ESC to the end, and its status
 key and close print the time of the event, in seconds since the epoch.
+--pid: only a window of that process (_NET_WM_PID) counts. A window of a
+process that has just ended can stay viewable for a moment, until the X server
+has handled the closed connection; without --pid it could be taken for the
+next process's window. measure always matches its own child.
 Exits 1 when no such window appears within TIMEOUT (default 5 s).
 """
 import ctypes
@@ -39,8 +44,36 @@ x11.XKeysymToKeycode.argtypes = [ctypes.c_void_p, ctypes.c_ulong]
 x11.XSetInputFocus.argtypes = [ctypes.c_void_p, Window, ctypes.c_int, ctypes.c_ulong]
 x11.XFlush.argtypes = [ctypes.c_void_p]
 x11.XSync.argtypes = [ctypes.c_void_p, ctypes.c_int]
+x11.XGetWindowProperty.argtypes = [ctypes.c_void_p, Window, ctypes.c_ulong, ctypes.c_long, ctypes.c_long,
+                                   ctypes.c_int, ctypes.c_ulong, ctypes.POINTER(ctypes.c_ulong),
+                                   ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_ulong),
+                                   ctypes.POINTER(ctypes.c_ulong), ctypes.POINTER(ctypes.c_void_p)]
 x11.XSendEvent.argtypes = [ctypes.c_void_p, Window, ctypes.c_int, ctypes.c_long, ctypes.c_void_p]
 xtst.XTestFakeKeyEvent.argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_int, ctypes.c_ulong]
+
+
+# Windows come and go while the tree is walked; Xlib's default handler would
+# end this script on the first BadWindow. Errors are counted instead, and an
+# action whose own request failed says so.
+class XErrorEvent(ctypes.Structure):
+    _fields_ = [("type", ctypes.c_int), ("display", ctypes.c_void_p), ("resourceid", ctypes.c_ulong),
+                ("serial", ctypes.c_ulong), ("error_code", ctypes.c_ubyte), ("request_code", ctypes.c_ubyte),
+                ("minor_code", ctypes.c_ubyte)]
+
+
+x_errors = []
+ErrorHandler = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.POINTER(XErrorEvent))
+
+
+@ErrorHandler
+def note_x_error(display, event):
+    e = event.contents
+    x_errors.append((e.error_code, e.request_code, e.resourceid))
+    return 0
+
+
+x11.XSetErrorHandler.argtypes = [ErrorHandler]
+x11.XSetErrorHandler.restype = ctypes.c_void_p
 
 
 class XWindowAttributes(ctypes.Structure):
@@ -65,8 +98,29 @@ class ClientMessage(ctypes.Structure):
                 ("format", ctypes.c_int), ("data", ctypes.c_long * 5), ("pad", ctypes.c_long * 12)]
 
 
-def find(display, title):
-    """The first viewable window (depth first) whose name contains title, or 0."""
+def window_pid(display, w):
+    """The _NET_WM_PID of window w, or None."""
+    atom = x11.XInternAtom(display, b"_NET_WM_PID", 1)
+    if not atom:
+        return None
+    kind, fmt = ctypes.c_ulong(), ctypes.c_int()
+    count, after = ctypes.c_ulong(), ctypes.c_ulong()
+    data = ctypes.c_void_p()
+    XA_CARDINAL = 6
+    if x11.XGetWindowProperty(display, w, atom, 0, 1, 0, XA_CARDINAL, ctypes.byref(kind), ctypes.byref(fmt),
+                              ctypes.byref(count), ctypes.byref(after), ctypes.byref(data)) != 0:
+        return None
+    pid = None
+    if data.value:
+        if fmt.value == 32 and count.value == 1:
+            pid = ctypes.cast(data, ctypes.POINTER(ctypes.c_ulong))[0]
+        x11.XFree(data)
+    return pid
+
+
+def find(display, title, pid=None):
+    """The first viewable window (depth first) whose name contains title, and
+    which belongs to process pid when one is given, or 0."""
     stack = [x11.XDefaultRootWindow(display)]
     while stack:
         w = stack.pop()
@@ -76,7 +130,7 @@ def find(display, title):
             x11.XFree(name)
             attrs = XWindowAttributes()
             if found and x11.XGetWindowAttributes(display, w, ctypes.byref(attrs)) and \
-                    attrs.map_state == IS_VIEWABLE:
+                    attrs.map_state == IS_VIEWABLE and (pid is None or window_pid(display, w) == pid):
                 return w
         root, parent = Window(), Window()
         children = ctypes.POINTER(Window)()
@@ -89,10 +143,10 @@ def find(display, title):
     return 0
 
 
-def wait_for(display, title, timeout, since):
+def wait_for(display, title, timeout, since, pid=None):
     start = time.monotonic()
     while time.monotonic() - start < timeout:
-        w = find(display, title)
+        w = find(display, title, pid)
         if w:
             return w, time.time() - since
         time.sleep(0.005)
@@ -109,18 +163,23 @@ def press_escape(display, w):
 
 
 def main():
+    pid = None
+    if len(sys.argv) > 2 and sys.argv[1] == "--pid":
+        pid = int(sys.argv[2])
+        del sys.argv[1:3]
     if len(sys.argv) < 3 or sys.argv[1] not in ("wait", "key", "close", "measure"):
         sys.exit(__doc__)
     display = x11.XOpenDisplay(None)
     if not display:
         sys.exit("cannot open the display")
+    x11.XSetErrorHandler(note_x_error)
     action, title = sys.argv[1], sys.argv[2]
     if action == "measure":
         if len(sys.argv) < 5 or sys.argv[3] != "--":
             sys.exit(__doc__)
         start = time.time()
         child = subprocess.Popen(sys.argv[4:])
-        w, opened = wait_for(display, title, 30.0, start)
+        w, opened = wait_for(display, title, 30.0, start, child.pid)
         press_escape(display, w)
         pressed = time.time()
         status = child.wait(timeout=60)
@@ -128,7 +187,7 @@ def main():
         return
     timeout = float(sys.argv[3]) if len(sys.argv) > 3 else 5.0
     since = float(sys.argv[4]) if len(sys.argv) > 4 else time.time()
-    w, seconds = wait_for(display, title, timeout, since)
+    w, seconds = wait_for(display, title, timeout, since, pid)
     if action == "wait":
         print(f"{seconds:.3f}")
     elif action == "key":
@@ -141,8 +200,11 @@ def main():
         msg.message_type = x11.XInternAtom(display, b"WM_PROTOCOLS", 0)
         msg.format = 32
         msg.data[0] = x11.XInternAtom(display, b"WM_DELETE_WINDOW", 0)
+        x_errors.clear()
         x11.XSendEvent(display, w, 0, 0, ctypes.byref(msg))
-        x11.XFlush(display)
+        x11.XSync(display, 0)
+        if x_errors:
+            sys.exit(f"the close event for window {w:#x} failed: X error {x_errors[0]}")
         print(f"{time.time():.6f}")
 
 
