@@ -5,6 +5,7 @@
 #include <new>
 #include <vector>
 
+#include "cycle_model.hpp"
 #include "fpu.hpp"
 #include "hart_state.hpp"
 #include "isa_table.hpp"
@@ -163,6 +164,11 @@ uint64_t profile_ret(BlockJit::State* st, uint32_t target, uint32_t, uint64_t co
   st->profiler->ret(target, Cost{st->ir_base + count, cycles});
   return cycles;
 }
+// A conditional branch's cycles and counts from a dynamic predictor.
+uint64_t predict_branch(CycleModel* model, uint32_t pc, uint32_t taken, uint32_t backward, uint64_t cycles) noexcept {
+  model->branch(pc, taken != 0, backward != 0, cycles);
+  return cycles;
+}
 
 }  // namespace
 
@@ -291,15 +297,20 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
     }
     a.op_rr(0, true, {0x29}, RAX, R8);  // sub r8, rax
   };
+  // Calls a helper (its address) taking the cycle count as its fifth
+  // argument (r8) and returning it; the other arguments are set.
+  auto call_helper = [&](uint64_t fn) {
+    a.mov_imm64(RAX, fn);
+    a.b(0xff), a.b(0xd0);                // call rax
+    a.op_rr(0, true, {0x89}, RAX, R8);  // mov r8, rax
+    timing_regs(a, timing_);
+  };
   // Calls the profiler's call or return hook; esi = the target's address.
   auto profile_hook = [&](bool call, uint32_t link) {
     a.b(0xba), a.d(link);                  // mov edx, link
     a.op_rr(0, true, {0x89}, R13, RCX);   // mov rcx, r13
-    a.op_rr(0, true, {0x89}, RBX, RDI);   // mov rdi, rbx (r8 = cycles already)
-    a.mov_imm64(RAX, reinterpret_cast<uint64_t>(call ? &profile_call : &profile_ret));
-    a.b(0xff), a.b(0xd0);                  // call rax
-    a.op_rr(0, true, {0x89}, RAX, R8);    // mov r8, rax
-    timing_regs(a, timing_);
+    a.op_rr(0, true, {0x89}, RBX, RDI);   // mov rdi, rbx
+    call_helper(call ? reinterpret_cast<uint64_t>(&profile_call) : reinterpret_cast<uint64_t>(&profile_ret));
   };
   // Continue at entry `to` (a constant) after `n` instructions and `c`
   // cycles of the block; `from` (unless kFallThrough) = a taken jump from
@@ -443,6 +454,17 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
         // Jump over the taken path when the condition fails.
         const uint8_t not_taken = op == Op::BEQ ? NE : op == Op::BNE ? E : op == Op::BLT ? GE
                                 : op == Op::BGE ? L : op == Op::BLTU ? AE : B;
+        if (timed && timing_.predictor) {
+          // The predictor's hook with the outcome, then the compare again.
+          a.xor_self(RDX);
+          a.load(RAX, xoff(e.rs1));
+          a.alu_mem(0x3b, RAX, xoff(e.rs2));
+          a.setcc(not_taken ^ 1, RDX);  // edx = taken
+          a.mov_imm64(RDI, reinterpret_cast<uint64_t>(timing_.predictor));
+          a.b(0xbe), a.d(pc);                     // mov esi, pc
+          a.b(0xb9), a.d(e.imm < 0 ? 1u : 0u);    // mov ecx, backward
+          call_helper(reinterpret_cast<uint64_t>(&predict_branch));
+        }
         a.load(RAX, xoff(e.rs1));
         a.alu_mem(0x3b, RAX, xoff(e.rs2));
         uint8_t* const skip = a.jcc32(not_taken);

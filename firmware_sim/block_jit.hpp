@@ -1,5 +1,5 @@
 // Generated x86-64 code for hot straight-line runs of the plain interpreter
-// and of the block-costed timed one (BlockCosts, a static branch predictor). A run entered by a taken jump often enough is translated from
+// and of the block-costed timed one (BlockCosts: a cycle model without caches). A run entered by a taken jump often enough is translated from
 // its decoded entries (never from memory, so stores to code and fence.i
 // behave exactly as in the interpreter); its code reads and writes the guest
 // register file directly, keeps the instruction count in a host register and
@@ -8,8 +8,8 @@
 // accesses, CSRs, rounding modes other than RNE, ...) leaves to the
 // interpreter before that instruction. Timed blocks add the cost slots of
 // their instructions as constants, count straight-line runs in BlockCosts'
-// enters/leaves exactly where the interpreter does, and report calls and
-// returns to the profiler through a helper call. Other hosts get no blocks (available()
+// enters/leaves exactly where the interpreter does, and call helpers for the
+// profiler's calls and returns and for a dynamic branch predictor. Other hosts get no blocks (available()
 // is false) and the interpreter runs everything.
 #pragma once
 #include <cstddef>
@@ -20,6 +20,7 @@
 
 namespace fwsim {
 
+class CycleModel;
 class Profiler;
 
 class BlockJit {
@@ -51,16 +52,19 @@ class BlockJit {
     Profiler* profiler;  // with Timing::profile
   };
   // What timed blocks update: BlockCosts' arrays (which must not move while
-  // the translator exists) and, with `profile`, State::profiler.
+  // the translator exists), with `profile` State::profiler, and with
+  // `predictor` (a model whose branch cycles are not in the slots, see
+  // BlockCosts::static_branches()) that model's branch().
   struct Timing {
     const CostSlot* slots;
     uint64_t* enters;
     uint64_t* leaves;
     bool profile;
+    CycleModel* predictor;
+    bool operator==(const Timing&) const = default;
   };
 
-  // Without `timing`, plain blocks; with it, timed ones (the costs must have
-  // static branch cycles, BlockCosts::static_branches()).
+  // Without `timing`, plain blocks; with it, timed ones.
   BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing = nullptr);
   ~BlockJit();
   BlockJit(const BlockJit&) = delete;
@@ -84,7 +88,7 @@ class BlockJit {
     if (table_ && table_[index] >= kNoBlock) table_[index] = 0;
   }
   bool timed() const { return timing_.slots != nullptr; }
-  bool timed_profile() const { return timing_.profile; }
+  const Timing& timing() const { return timing_; }
   // DecodeCache::epoch() the blocks were made from.
   uint64_t epoch() const { return epoch_; }
   void set_epoch(uint64_t e) { epoch_ = e; }

@@ -291,8 +291,8 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   FWSIM_PINNED(intptr_t, slot_bias, "r13") = 0;
   intptr_t enter_bias = 0, leave_bias = 0;
   bool static_branches = false;  // branch cycles come from the slots (BlockCosts)
-  // Generated code for hot runs: plain blocks in Mode 3; timed blocks in
-  // Mode 1 when the branch cycles are static (block_jit.hpp).
+  // Generated code for hot runs: plain blocks in Mode 3, timed blocks in
+  // Mode 1 (block_jit.hpp).
   BlockJit* jit = Mode == 3 ? jit_.get() : nullptr;
   if constexpr (Mode == 1) {
     if (costs_.built_for() != model_) {
@@ -300,10 +300,10 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
       if (timed_jit_) timed_jit_->flush();  // its blocks add the old slots
     }
     static_branches = costs_.static_branches();
-    if (jit_enabled_ && !fpu_model_ && static_branches) {
-      const bool profile = profiler_ != nullptr;
-      if (!timed_jit_ || timed_jit_->timed_profile() != profile) {
-        const BlockJit::Timing timing{costs_.slots(), costs_.enters(), costs_.leaves(), profile};
+    if (jit_enabled_ && !fpu_model_) {
+      const BlockJit::Timing timing{costs_.slots(), costs_.enters(), costs_.leaves(), profiler_ != nullptr,
+                                    static_branches ? nullptr : &model};
+      if (!timed_jit_ || !(timed_jit_->timing() == timing)) {
         const uint64_t made = timed_jit_ ? timed_jit_->blocks_made() : 0;
         timed_jit_ = std::make_unique<BlockJit>(code_.count(), code_base, ram_size, &timing);
         timed_jit_->add_blocks_made(made);

@@ -21,17 +21,26 @@ using fwsim::StopInfo;
 
 namespace {
 
-// Static predictors (the branch cycles are block costs), with taken and
-// not-taken cycles and stalls that differ, so a miscounted branch or stall shows.
+// Static predictors (the branch cycles are block costs) and dynamic ones
+// (the predictor is called), with taken and not-taken cycles and stalls that
+// differ, so a miscounted branch or stall shows.
 fwsim::CycleModelConfig model_config(unsigned which) {
   fwsim::CycleModelConfig c = fwsim::default_cycle_model();
-  if (which % 3 == 1) {
+  if (which % 5 == 3) {
+    c.predictor = fwsim::PredictorKind::Gshare;
+    c.predictor_bits = 4;
+    c.mispredict_penalty = 5;
+  } else if (which % 5 == 4) {
+    c.predictor = fwsim::PredictorKind::Bimodal;
+    c.predictor_bits = 3;
+    c.branch_taken = 3;
+  } else if (which % 5 == 1) {
     c.predictor = fwsim::PredictorKind::StaticNotTaken;
     c.branch_taken = 5;
     c.branch_not_taken = 2;
     c.mispredict_penalty = 7;
     c.load_use_stall = 3;
-  } else if (which % 3 == 2) {
+  } else if (which % 5 == 2) {
     c.branch_taken = 1;
     c.branch_not_taken = 4;
     c.mispredict_penalty = 9;
@@ -134,8 +143,8 @@ TEST_CASE("timed generated code follows model and profiler changes between runs"
   for (uint32_t seed = 3000; seed < 3030; ++seed) {
     INFO("seed " << seed);
     const Program p = random_program(seed);
-    TimedSim with(p, true, 0, model_config(0), true), without(p, false, 0, model_config(0), true);
-    fwsim::CycleModel other_with(model_config(1)), other_without(model_config(1));
+    TimedSim with(p, true, 0, model_config(seed), true), without(p, false, 0, model_config(seed), true);
+    fwsim::CycleModel other_with(model_config(seed + 1)), other_without(model_config(seed + 1));
     StopInfo a = with.sim.run(300), b = without.sim.run(300);
     require_same_timing(with, without, a, b);
     // Another model for a while (its own statistics), then no profiler.
@@ -145,6 +154,7 @@ TEST_CASE("timed generated code follows model and profiler changes between runs"
     b = without.sim.run(900);
     require_same(with.sim, without.sim, a, b);
     REQUIRE(other_with.branches() == other_without.branches());
+    REQUIRE(other_with.mispredicts() == other_without.mispredicts());
     REQUIRE(other_with.load_use_stalls() == other_without.load_use_stalls());
     REQUIRE(with.profile() == without.profile());
     with.sim.m.set_cycle_model(&with.model);
@@ -191,12 +201,12 @@ TEST_CASE("a translated block's cost follows the entry before it being decoded l
   CHECK(cycles[0] == cycles[1]);
 }
 
-TEST_CASE("timed runs with caches or a dynamic predictor stay interpreted", "[jit][cycle]") {
+TEST_CASE("timed runs with caches stay interpreted", "[jit][cycle]") {
   const Program p = random_program(7);
-  fwsim::CycleModelConfig gshare = fwsim::default_cycle_model(), cached = gshare;
-  gshare.predictor = fwsim::PredictorKind::Gshare;
-  cached.dcache.size = 1024;
-  for (const fwsim::CycleModelConfig& cfg : {gshare, cached}) {
+  fwsim::CycleModelConfig dcache = fwsim::default_cycle_model(), icache = dcache;
+  dcache.dcache.size = 1024;
+  icache.icache.size = 1024;
+  for (const fwsim::CycleModelConfig& cfg : {dcache, icache}) {
     TimedSim with(p, true, 0, cfg, true), without(p, false, 0, cfg, true);
     const StopInfo a = with.sim.run(), b = without.sim.run();
     require_same_timing(with, without, a, b);
