@@ -1,5 +1,6 @@
 // Generated x86-64 code for hot straight-line runs of the plain interpreter
-// and of the block-costed timed one (BlockCosts: a cycle model without caches). A run entered by a taken jump often enough is translated from
+// and of the block-costed timed one (BlockCosts: a cycle model without
+// caches). A run entered by a taken jump often enough is translated from
 // its decoded entries (never from memory, so stores to code and fence.i
 // behave exactly as in the interpreter); its code reads and writes the guest
 // register file directly, keeps the instruction count in a host register and
@@ -9,8 +10,9 @@
 // interpreter before that instruction. Timed blocks add the cost slots of
 // their instructions as constants, count straight-line runs in BlockCosts'
 // enters/leaves exactly where the interpreter does, and call helpers for the
-// profiler's calls and returns and for a dynamic branch predictor. Other hosts get no blocks (available()
-// is false) and the interpreter runs everything.
+// profiler's calls and returns and for a dynamic branch predictor. Other
+// hosts get no blocks (available() is false) and the interpreter runs
+// everything.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -117,8 +117,9 @@ StopInfo Machine::run(uint64_t max_instructions) {
   const PinnedRegs saved;
 #endif
   fpu::clear_host_flags();
-  // Plain; timed with pre-computed costs; timed with per-instruction hooks
-  // (trace, caches), which the pre-computed costs cannot express.
+  // Plain; timed with pre-computed costs (both with generated code for hot
+  // runs); timed with per-instruction hooks (trace, caches), which the
+  // pre-computed costs cannot express.
   if (!model_ && !profiler_ && !trace_ && watches_.empty()) {
     // Generated code covers the IEEE arithmetic only.
     if (jit_enabled_ && !fpu_model_ && !jit_)

@@ -96,8 +96,9 @@ class Machine {
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
 
  private:
-  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks,
-  // 3 plain with generated code for hot runs
+  // 0 plain, 1 timed with block costs (and generated code for hot runs
+  // unless disabled), 2 timed with per-instruction hooks, 3 plain with
+  // generated code for hot runs
   template <int Mode>
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
