@@ -5,9 +5,11 @@
 #include <new>
 #include <vector>
 
+#include "cycle_model.hpp"
 #include "fpu.hpp"
 #include "hart_state.hpp"
 #include "isa_table.hpp"
+#include "profiler.hpp"
 
 #if defined(__x86_64__) && defined(__unix__)
 #include <sys/mman.h>
@@ -21,7 +23,9 @@ namespace {
 
 static_assert(offsetof(BlockJit::State, x) == 0 && offsetof(BlockJit::State, ram) == 8 &&
               offsetof(BlockJit::State, table) == 16 && offsetof(BlockJit::State, count) == 24 &&
-              offsetof(BlockJit::State, limit) == 32 && offsetof(BlockJit::State, exit) == 40);
+              offsetof(BlockJit::State, limit) == 32 && offsetof(BlockJit::State, exit) == 40 &&
+              offsetof(BlockJit::State, run_start) == 44 && offsetof(BlockJit::State, cycles) == 48);
+static_assert(sizeof(CostSlot) == 8 && offsetof(CostSlot, stall) == 4);
 static_assert(offsetof(HartState, f) == offsetof(HartState, x) + 33 * 4);
 
 constexpr size_t kCodeBytes = size_t{16} << 20;
@@ -30,8 +34,14 @@ constexpr unsigned kMaxBlockInsns = 64;
 
 // Host registers. In generated code: r12 = guest x[] (f[] follows), r15 =
 // RAM, rbp = the per-entry table, r13 = instructions retired, r14 = limit,
-// rbx = State; rax, rcx, rdx and xmm0 are scratch.
-enum Reg : int { RAX = 0, RCX = 1, RDX = 2, RBX = 3, RSP = 4, RBP = 5, RSI = 6, RDI = 7, R12 = 12, R13 = 13, R14 = 14, R15 = 15 };
+// rbx = State; rax, rcx, rdx and xmm0 are scratch. Timed blocks also keep
+// the cycle count in r8 and BlockCosts' enters, leaves and slots in r9, r10
+// and r11 (caller-saved: reloaded after a profiler call).
+enum Reg : int {
+  RAX = 0, RCX = 1, RDX = 2, RBX = 3, RSP = 4, RBP = 5, RSI = 6, RDI = 7,
+  R8 = 8, R9 = 9, R10 = 10, R11 = 11, R12 = 12, R13 = 13, R14 = 14, R15 = 15
+};
+constexpr int32_t kStateRunStart = 44, kStateCycles = 48;
 
 int32_t xoff(unsigned r) { return static_cast<int32_t>(4 * r); }
 int32_t foff(unsigned r) { return static_cast<int32_t>(4 * (33 + r)); }
@@ -107,6 +117,12 @@ class Emitter {
     d(0);
     return at;
   }
+  void mov_imm64(int reg, uint64_t v) {
+    rex(true, 0, 0, reg);
+    b(0xb8u + (reg & 7));
+    std::memcpy(p_, &v, 8);
+    p_ += 8;
+  }
   void jmp_to(const uint8_t* target) {
     b(0xe9);
     d(static_cast<uint32_t>(target - (p_ + 4)));
@@ -127,12 +143,38 @@ struct SideExit {
   uint8_t* jump;    // rel32 to patch
   uint32_t index;   // entry to resume at
   uint32_t retired; // instructions of the block before it
+  uint64_t cycles;  // their cycles (timed blocks)
 };
+
+// r9, r10, r11 = BlockCosts' enters, leaves, slots.
+void timing_regs(Emitter& a, const BlockJit::Timing& t) {
+  a.mov_imm64(R9, reinterpret_cast<uint64_t>(t.enters));
+  a.mov_imm64(R10, reinterpret_cast<uint64_t>(t.leaves));
+  a.mov_imm64(R11, reinterpret_cast<uint64_t>(t.slots));
+}
+
+// The profiler's hooks, called from timed blocks at a call or return (after
+// the instruction's own cost, before the jump's target is entered). They
+// return the cycle count so the caller gets it back in rax.
+uint64_t profile_call(BlockJit::State* st, uint32_t target, uint32_t link, uint64_t count, uint64_t cycles) noexcept {
+  st->profiler->call(target, link, Cost{st->ir_base + count, cycles});
+  return cycles;
+}
+uint64_t profile_ret(BlockJit::State* st, uint32_t target, uint32_t, uint64_t count, uint64_t cycles) noexcept {
+  st->profiler->ret(target, Cost{st->ir_base + count, cycles});
+  return cycles;
+}
+// A conditional branch's cycles and counts from a dynamic predictor.
+uint64_t predict_branch(CycleModel* model, uint32_t pc, uint32_t taken, uint32_t backward, uint64_t cycles) noexcept {
+  model->branch(pc, taken != 0, backward != 0, cycles);
+  return cycles;
+}
 
 }  // namespace
 
-BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size)
+BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing)
     : count_(entry_count), code_base_(code_base), ram_size_(ram_size) {
+  if (timing) timing_ = *timing;
   // Table offsets are 32-bit displacements (entry * 8).
   if (entry_count >= (1u << 28)) return;
   void* mem = mmap(nullptr, kCodeBytes, PROT_READ | PROT_WRITE | PROT_EXEC, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -161,10 +203,15 @@ BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size)
   a.op_mem(0, true, {0x8b}, RBP, RBX, 16);
   a.op_mem(0, true, {0x8b}, R13, RBX, 24);
   a.op_mem(0, true, {0x8b}, R14, RBX, 32);
+  if (timed()) {
+    a.op_mem(0, true, {0x8b}, R8, RBX, kStateCycles);
+    timing_regs(a, timing_);
+  }
   a.b(0xff), a.b(0xe6);  // jmp rsi
   // Exit: eax = entry index, State::exit already set.
   uint8_t* const common = a.here();
   a.op_mem(0, true, {0x89}, R13, RBX, 24);
+  if (timed()) a.op_mem(0, true, {0x89}, R8, RBX, kStateCycles);
   a.b(0x48), a.b(0x83), a.b(0xc4), a.b(0x08);  // add rsp, 8
   for (int r : {R15, R14, R13, R12}) {
     a.b(0x41);
@@ -207,8 +254,13 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
   const uint8_t* const exit_here = code_ + exit_offsets_[static_cast<int>(Exit::Here)];
   const uint8_t* const exit_limit = code_ + exit_offsets_[static_cast<int>(Exit::Limit)];
   Emitter a(block);
+  const bool timed = this->timed();
+  constexpr uint32_t kFallThrough = UINT32_MAX;
   std::vector<SideExit> sides;
-  auto side = [&](uint8_t cc, uint32_t at, uint32_t retired) { sides.push_back({a.jcc32(cc), at, retired}); };
+  int64_t cyc = 0;  // timed: cycles of the block's instructions before the current one
+  auto side = [&](uint8_t cc, uint32_t at, uint32_t retired) {
+    sides.push_back({a.jcc32(cc), at, retired, static_cast<uint64_t>(cyc)});
+  };
   auto add_retired = [&](uint32_t n) {
     if (n == 0) return;
     a.rex(true, 0, 0, R13);
@@ -216,11 +268,57 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
     a.b(0xc0u | (R13 & 7));  // add r13, imm32
     a.d(n);
   };
-  // Continue at entry `to` (a constant) after `n` instructions of the block;
-  // `taken` = a taken jump, which checks the limit first.
-  auto chain = [&](uint32_t to, uint32_t n, bool taken) {
+  // `n` instructions and `c` cycles of the block done.
+  auto settle = [&](uint32_t n, int64_t c) {
     add_retired(n);
-    if (taken) {
+    if (timed && c) {
+      a.op_rr(0, true, {0x81}, 0, R8);  // add r8, imm32
+      a.d(static_cast<uint32_t>(static_cast<int32_t>(c)));
+    }
+  };
+  // A taken jump from entry `from` to `to` (in ecx when dynamic) as the
+  // interpreter's ENTER counts it: the run ending at `from` leaves, the one
+  // at `to` enters, and `to`'s load-use stall is not charged. The stall is
+  // read from its slot, which changes when the entry before `to` is decoded.
+  auto enter_run = [&](uint32_t from, uint32_t to, bool dynamic) {
+    a.op_mem(0, true, {0xff}, 0, R10, static_cast<int32_t>(from * 8));  // inc qword leaves[from]
+    if (dynamic) {
+      a.rex(true, 0, RCX, R9);
+      a.b(0xff);
+      a.memidx(0, R9, RCX, 3, 0);  // inc qword enters[rcx]
+      a.rex(false, RAX, RCX, R11);
+      a.b(0x0f), a.b(0xb7);
+      a.memidx(RAX, R11, RCX, 3, 4);  // movzx eax, word slots[rcx].stall
+    } else {
+      a.op_mem(0, true, {0xff}, 0, R9, static_cast<int32_t>(to * 8));
+      a.op_mem(0, false, {0x0f, 0xb7}, RAX, R11, static_cast<int32_t>(to * 8 + 4));
+      a.op_mem(0, false, {0xc7}, 0, RBX, kStateRunStart);
+      a.d(to);
+    }
+    a.op_rr(0, true, {0x29}, RAX, R8);  // sub r8, rax
+  };
+  // Calls a helper (its address) taking the cycle count as its fifth
+  // argument (r8) and returning it; the other arguments are set.
+  auto call_helper = [&](uint64_t fn) {
+    a.mov_imm64(RAX, fn);
+    a.b(0xff), a.b(0xd0);                // call rax
+    a.op_rr(0, true, {0x89}, RAX, R8);  // mov r8, rax
+    timing_regs(a, timing_);
+  };
+  // Calls the profiler's call or return hook; esi = the target's address.
+  auto profile_hook = [&](bool call, uint32_t link) {
+    a.b(0xba), a.d(link);                  // mov edx, link
+    a.op_rr(0, true, {0x89}, R13, RCX);   // mov rcx, r13
+    a.op_rr(0, true, {0x89}, RBX, RDI);   // mov rdi, rbx
+    call_helper(call ? reinterpret_cast<uint64_t>(&profile_call) : reinterpret_cast<uint64_t>(&profile_ret));
+  };
+  // Continue at entry `to` (a constant) after `n` instructions and `c`
+  // cycles of the block; `from` (unless kFallThrough) = a taken jump from
+  // that entry, which checks the limit first.
+  auto chain = [&](uint32_t to, uint32_t n, int64_t c, uint32_t from) {
+    settle(n, c);
+    if (from != kFallThrough) {
+      if (timed) enter_run(from, to, false);
       a.op_rr(0, true, {0x39}, R14, R13);  // cmp r13, r14
       a.b(0x76), a.b(10);                  // jbe over the limit exit
       a.b(0xb8), a.d(to);                  // mov eax, to
@@ -259,13 +357,14 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
   for (uint32_t i = index;; ++i, ++n) {
     if (n == kMaxBlockInsns || i >= count_) {
       if (n == 0) return kNoBlock;
-      chain(i, n, false);
+      chain(i, n, cyc, kFallThrough);
       break;
     }
     const Entry& e = entries[i];
     const Op op = base_op(static_cast<Op>(e.op));
     const uint32_t pc = code_base_ + i * 4;
     const bool rne = (e.imm & kRneOrDyn) != 0;
+    const int64_t cost = timed ? int64_t{timing_.slots[i].cost} : 0;  // with the stall after its predecessor
     bool ends = false;  // a control transfer closed the block
     bool supported = true;
     switch (op) {
@@ -355,20 +454,41 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
         // Jump over the taken path when the condition fails.
         const uint8_t not_taken = op == Op::BEQ ? NE : op == Op::BNE ? E : op == Op::BLT ? GE
                                 : op == Op::BGE ? L : op == Op::BLTU ? AE : B;
+        if (timed && timing_.predictor) {
+          // The predictor's hook with the outcome, then the compare again.
+          a.xor_self(RDX);
+          a.load(RAX, xoff(e.rs1));
+          a.alu_mem(0x3b, RAX, xoff(e.rs2));
+          a.setcc(not_taken ^ 1, RDX);  // edx = taken
+          a.mov_imm64(RDI, reinterpret_cast<uint64_t>(timing_.predictor));
+          a.b(0xbe), a.d(pc);                     // mov esi, pc
+          a.b(0xb9), a.d(e.imm < 0 ? 1u : 0u);    // mov ecx, backward
+          call_helper(reinterpret_cast<uint64_t>(&predict_branch));
+        }
         a.load(RAX, xoff(e.rs1));
         a.alu_mem(0x3b, RAX, xoff(e.rs2));
         uint8_t* const skip = a.jcc32(not_taken);
-        chain(i + static_cast<uint32_t>(e.imm), n + 1, true);
+        const int64_t taken = timed ? int64_t{timing_.slots[i].taken} : 0;
+        chain(i + static_cast<uint32_t>(e.imm), n + 1, cyc + cost + taken, i);
         Emitter::patch(skip, a.here());
-        chain(i + 1, n + 1, false);
+        chain(i + 1, n + 1, cyc + cost, kFallThrough);
         ends = true;
         break;
       }
-      case Op::JAL:
+      case Op::JAL: {
         a.store_imm(xoff(e.rd), pc + 4);
-        chain(i + static_cast<uint32_t>(e.imm), n + 1, true);
+        const uint32_t to = i + static_cast<uint32_t>(e.imm);
+        if (timed && timing_.profile && e.rd == 1) {
+          settle(n + 1, cyc + cost);
+          a.b(0xbe), a.d(code_base_ + to * 4);  // mov esi, target
+          profile_hook(true, pc + 4);
+          chain(to, 0, 0, i);
+        } else {
+          chain(to, n + 1, cyc + cost, i);
+        }
         ends = true;
         break;
+      }
       case Op::JALR: {
         a.load(RAX, xoff(e.rs1));
         a.alu_imm(0, RAX, static_cast<uint32_t>(e.imm));
@@ -381,7 +501,19 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
         side(AE, i, n);
         a.store_imm(xoff(e.rd), pc + 4);
         a.shift_imm(5, RCX, 2);  // ecx = target entry
-        add_retired(n + 1);
+        settle(n + 1, cyc + cost);
+        if (timed) {
+          a.op_mem(0, false, {0x89}, RCX, RBX, kStateRunStart);  // run_start = ecx
+          const bool is_call = e.rd == 1, is_ret = e.rd == kSinkReg && e.rs1 == 1;
+          if (timing_.profile && (is_call || is_ret)) {
+            a.op_rr(0, false, {0x89}, RCX, RSI);  // mov esi, ecx
+            a.shift_imm(4, RSI, 2);               // shl esi, 2
+            a.alu_imm(0, RSI, code_base_);        // esi = target
+            profile_hook(is_call, pc + 4);
+            a.op_mem(0, false, {0x8b}, RCX, RBX, kStateRunStart);  // ecx = target entry again
+          }
+          enter_run(i, 0, true);
+        }
         a.op_rr(0, true, {0x39}, R14, R13);  // cmp r13, r14
         a.b(0x76), a.b(7);
         a.op_rr(0, false, {0x89}, RCX, RAX);  // mov eax, ecx
@@ -469,17 +601,18 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
     if (!supported) {
       if (n == 0) return kNoBlock;
       // The interpreter runs it (and what follows, up to its next jump).
-      add_retired(n);
+      settle(n, cyc);
       a.b(0xb8), a.d(i);
       a.jmp_to(exit_here);
       break;
     }
     if (ends) break;
+    cyc += cost;
   }
   // Cold side exits: before instruction `index`, `retired` of the block done.
   for (const SideExit& s : sides) {
     Emitter::patch(s.jump, a.here());
-    add_retired(s.retired);
+    settle(s.retired, static_cast<int64_t>(s.cycles));
     a.b(0xb8), a.d(s.index);
     a.jmp_to(exit_here);
   }
@@ -491,7 +624,7 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
 
 #else  // no code generator on this host
 
-BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size)
+BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing*)
     : count_(entry_count), code_base_(code_base), ram_size_(ram_size) {}
 BlockJit::~BlockJit() = default;
 void BlockJit::flush() {}

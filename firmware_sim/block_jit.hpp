@@ -1,20 +1,29 @@
-// Generated x86-64 code for hot straight-line runs of the plain (untimed)
-// interpreter. A run entered by a taken jump often enough is translated from
+// Generated x86-64 code for hot straight-line runs of the plain interpreter
+// and of the block-costed timed one (BlockCosts: a cycle model without
+// caches). A run entered by a taken jump often enough is translated from
 // its decoded entries (never from memory, so stores to code and fence.i
 // behave exactly as in the interpreter); its code reads and writes the guest
 // register file directly, keeps the instruction count in a host register and
 // jumps from block to block through the per-entry table without returning.
 // Anything it does not translate (devices, misaligned or out-of-RAM
 // accesses, CSRs, rounding modes other than RNE, ...) leaves to the
-// interpreter before that instruction. Other hosts get no blocks (available()
-// is false) and the interpreter runs everything.
+// interpreter before that instruction. Timed blocks add the cost slots of
+// their instructions as constants, count straight-line runs in BlockCosts'
+// enters/leaves exactly where the interpreter does, and call helpers for the
+// profiler's calls and returns and for a dynamic branch predictor. Other
+// hosts get no blocks (available() is false) and the interpreter runs
+// everything.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 
+#include "block_costs.hpp"
 #include "decode_cache.hpp"
 
 namespace fwsim {
+
+class CycleModel;
+class Profiler;
 
 class BlockJit {
  public:
@@ -38,9 +47,27 @@ class BlockJit {
     uint64_t count;     // instructions retired since the run started
     uint64_t limit;     // a taken jump with count > limit stops
     uint32_t exit;      // Exit
+    // Timed blocks only:
+    uint32_t run_start;  // entry the last taken jump entered (the current run's start)
+    uint64_t cycles;     // the cycle count
+    uint64_t ir_base;    // instructions retired before `count` started (profile costs)
+    Profiler* profiler;  // with Timing::profile
+  };
+  // What timed blocks update: BlockCosts' arrays (which must not move while
+  // the translator exists), with `profile` State::profiler, and with
+  // `predictor` (a model whose branch cycles are not in the slots, see
+  // BlockCosts::static_branches()) that model's branch().
+  struct Timing {
+    const CostSlot* slots;
+    uint64_t* enters;
+    uint64_t* leaves;
+    bool profile;
+    CycleModel* predictor;
+    bool operator==(const Timing&) const = default;
   };
 
-  BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size);
+  // Without `timing`, plain blocks; with it, timed ones.
+  BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing = nullptr);
   ~BlockJit();
   BlockJit(const BlockJit&) = delete;
   BlockJit& operator=(const BlockJit&) = delete;
@@ -57,11 +84,19 @@ class BlockJit {
   uint32_t run(State& st, uintptr_t code) { return enter_(&st, code); }
   // Drops every block (decoded entries changed); counts restart.
   void flush();
+  // Drops the block starting at entry `index`, if any: its first
+  // instruction's cost slot changed (the entry before it was decoded).
+  void drop(uint32_t index) {
+    if (table_ && table_[index] >= kNoBlock) table_[index] = 0;
+  }
+  bool timed() const { return timing_.slots != nullptr; }
+  const Timing& timing() const { return timing_; }
   // DecodeCache::epoch() the blocks were made from.
   uint64_t epoch() const { return epoch_; }
   void set_epoch(uint64_t e) { epoch_ = e; }
   // Blocks translated so far (flushes included): for tests and statistics.
   uint64_t blocks_made() const { return blocks_made_; }
+  void add_blocks_made(uint64_t n) { blocks_made_ += n; }
 
  private:
   using EnterFn = uint32_t (*)(State*, uintptr_t);
@@ -78,6 +113,7 @@ class BlockJit {
   uint32_t touched_lo_ = UINT32_MAX, touched_hi_ = 0;
   uint64_t epoch_ = 0;
   uint64_t blocks_made_ = 0;
+  Timing timing_{};
 };
 
 }  // namespace fwsim

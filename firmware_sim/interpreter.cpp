@@ -117,8 +117,9 @@ StopInfo Machine::run(uint64_t max_instructions) {
   const PinnedRegs saved;
 #endif
   fpu::clear_host_flags();
-  // Plain; timed with pre-computed costs; timed with per-instruction hooks
-  // (trace, caches), which the pre-computed costs cannot express.
+  // Plain; timed with pre-computed costs (both with generated code for hot
+  // runs); timed with per-instruction hooks (trace, caches), which the
+  // pre-computed costs cannot express.
   if (!model_ && !profiler_ && !trace_ && watches_.empty()) {
     // Generated code covers the IEEE arithmetic only.
     if (jit_enabled_ && !fpu_model_ && !jit_)
@@ -291,9 +292,25 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   FWSIM_PINNED(intptr_t, slot_bias, "r13") = 0;
   intptr_t enter_bias = 0, leave_bias = 0;
   bool static_branches = false;  // branch cycles come from the slots (BlockCosts)
+  // Generated code for hot runs: plain blocks in Mode 3, timed blocks in
+  // Mode 1 (block_jit.hpp).
+  BlockJit* jit = Mode == 3 ? jit_.get() : nullptr;
   if constexpr (Mode == 1) {
-    if (costs_.built_for() != model_) costs_.build(code_, model);
+    if (costs_.built_for() != model_) {
+      costs_.build(code_, model);
+      if (timed_jit_) timed_jit_->flush();  // its blocks add the old slots
+    }
     static_branches = costs_.static_branches();
+    if (jit_enabled_ && !fpu_model_) {
+      const BlockJit::Timing timing{costs_.slots(), costs_.enters(), costs_.leaves(), profiler_ != nullptr,
+                                    static_branches ? nullptr : &model};
+      if (!timed_jit_ || !(timed_jit_->timing() == timing)) {
+        const uint64_t made = timed_jit_ ? timed_jit_->blocks_made() : 0;
+        timed_jit_ = std::make_unique<BlockJit>(code_.count(), code_base, ram_size, &timing);
+        timed_jit_->add_blocks_made(made);
+      }
+      if (timed_jit_->available()) jit = timed_jit_.get();
+    }
     slot_bias = reinterpret_cast<char*>(costs_.slots()) - reinterpret_cast<char*>(base);
     enter_bias = reinterpret_cast<char*>(costs_.enters()) - reinterpret_cast<char*>(base);
     leave_bias = reinterpret_cast<char*>(costs_.leaves()) - reinterpret_cast<char*>(base);
@@ -309,7 +326,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     if (start_discounted) CYC -= SLOT(ip).stall;
   }
   const uint64_t limit8 = limit > (UINT64_MAX >> 3) ? UINT64_MAX : limit << 3;
-  uintptr_t* const jit_table = Mode == 3 ? jit_->table() : nullptr;
+  uintptr_t* const jit_table = jit ? jit->table() : nullptr;
   (void)jit_table;
   StopInfo stop;
   Bus::Result bus_result = Bus::Result::Ok;
@@ -371,6 +388,9 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     ip = (target);                                            \
     if ((done) > limit8) goto limit_reached;                  \
     if constexpr (Mode == 3) goto jit_enter;                  \
+    if constexpr (Mode == 1) {                                \
+      if (jit_table) goto jit_enter;                          \
+    }                                                         \
   } while (0)
 #define DONE() (K_VALUE() + reinterpret_cast<uint64_t>(ip + 1))
 #define JUMP(target)                          \
@@ -632,6 +652,8 @@ L_UNDECODED: {
   if constexpr (Mode == 1) {
     const uint64_t old_stall = SLOT(ip).stall;
     costs_.update(code_, model, static_cast<uint32_t>(ip - base));
+    // A block starting after this entry added its old slot.
+    if (jit_table) jit->drop(static_cast<uint32_t>(ip - base) + 1);
     // A run entered here by a jump was discounted before the stall was known.
     if (ip == run_start && DISCOUNTED()) CYC = CYC + old_stall - SLOT(ip).stall;
   }
@@ -841,24 +863,29 @@ jit_enter:
   __attribute__((unused));  // reached only from the loop with generated code
   // A run entered by a taken jump (or left by generated code at a target it
   // has no block for): counted until hot, then translated and run.
-  if constexpr (Mode == 3) {
+  if constexpr (Mode == 3 || Mode == 1) {
     uintptr_t* const slot = jit_table + (ip - base);
     uintptr_t v = *slot;
     if (v < BlockJit::kHot) {
       *slot = v + 1;
       DISPATCH();
     }
-    if (jit_->epoch() != code_.epoch()) {
+    if (jit->epoch() != code_.epoch()) {
       // Decoded entries changed (fence.i, debugger): every block is stale.
-      jit_->flush();
-      jit_->set_epoch(code_.epoch());
+      jit->flush();
+      jit->set_epoch(code_.epoch());
       DISPATCH();
     }
-    if (v == BlockJit::kHot) v = *slot = jit_->compile(base, static_cast<uint32_t>(ip - base));
+    if (v == BlockJit::kHot) v = *slot = jit->compile(base, static_cast<uint32_t>(ip - base));
     // Blocks assume frm = RNE for dynamic-rounding FP ops.
     if (v == BlockJit::kNoBlock || hart_.frm != fpu::RNE) DISPATCH();
-    BlockJit::State st{XR, ram, jit_table, RETIRED(), limit, 0};
-    ip = base + jit_->run(st, v);
+    BlockJit::State st{XR, ram, jit_table, RETIRED(), limit, 0, static_cast<uint32_t>(run_start - base),
+                       Timed ? static_cast<uint64_t>(CYC) : 0, start, profiler};
+    ip = base + jit->run(st, v);
+    if constexpr (Mode == 1) {
+      CYC = st.cycles;
+      run_start = base + st.run_start;
+    }
     K_SET(st.count * sizeof(Entry) - reinterpret_cast<uint64_t>(ip));
     if (st.exit == static_cast<uint32_t>(BlockJit::Exit::Target)) goto jit_enter;
     if (st.exit == static_cast<uint32_t>(BlockJit::Exit::Limit)) goto limit_reached;

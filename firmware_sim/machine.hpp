@@ -51,11 +51,15 @@ class Machine {
   // Null (the default) = exact IEEE arithmetic; otherwise the model's
   // arithmetic for the ops it replaces (fpu_approx.hpp).
   void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
-  // Plain runs translate hot code to host code (block_jit.hpp) unless
-  // disabled; counts, output and stops are the same either way.
+  // Plain runs, and timed runs with a static branch predictor and no
+  // caches, translate hot code to host code (block_jit.hpp) unless
+  // disabled; counts, cycles, statistics, profiles, output and stops are
+  // the same either way.
   void set_jit(bool on) { jit_enabled_ = on; }
   bool jit_enabled() const { return jit_enabled_; }
-  uint64_t jit_blocks() const { return jit_ ? jit_->blocks_made() : 0; }
+  uint64_t jit_blocks() const {
+    return (jit_ ? jit_->blocks_made() : 0) + (timed_jit_ ? timed_jit_->blocks_made() : 0);
+  }
 
   // Debugger support (gdb_stub.hpp). A breakpoint stops a run with
   // StopCause::Breakpoint before the instruction at `pc` executes; false when
@@ -92,8 +96,9 @@ class Machine {
   StopInfo run(uint64_t max_instructions = std::numeric_limits<uint64_t>::max());
 
  private:
-  // 0 plain, 1 timed with block costs, 2 timed with per-instruction hooks,
-  // 3 plain with generated code for hot runs
+  // 0 plain, 1 timed with block costs (and generated code for hot runs
+  // unless disabled), 2 timed with per-instruction hooks, 3 plain with
+  // generated code for hot runs
   template <int Mode>
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
@@ -123,6 +128,7 @@ class Machine {
   const FpuApprox* fpu_model_ = nullptr;
   bool jit_enabled_ = true;
   std::unique_ptr<BlockJit> jit_;  // made on the first run that uses it
+  std::unique_ptr<BlockJit> timed_jit_;  // the same for the block-costed timed loop
 };
 
 }  // namespace fwsim
