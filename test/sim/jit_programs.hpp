@@ -152,6 +152,15 @@ inline void load(Sim& s, const Program& p, bool jit, uint8_t frm) {
   std::memcpy(s.m.bus().ram() + kDataOffset, p.data.data(), p.data.size());
 }
 
+// How many instructions the program runs to its end, interpreted: the
+// range the limit tests pick their limits from.
+inline uint64_t instructions_to_end(const Program& p) {
+  Sim probe(p.code);
+  load(probe, p, false, 0);
+  probe.run();
+  return probe.m.hart().instret;
+}
+
 // Everything architectural, and how the run stopped.
 inline void require_same(Sim& a, Sim& b, const StopInfo& sa, const StopInfo& sb) {
   REQUIRE(sa.cause == sb.cause);
