@@ -186,13 +186,6 @@ template <int kBytes, class R, class Limit, class Leaf>
         const int k = __builtin_ctz(mask);
         mask &= mask - 1;
         const Entry e{node.child[k], node.count[k], entry[k]};
-        if (e.count == 0) {
-          const char* at = reinterpret_cast<const char*>(tree.nodes + e.child);
-          __builtin_prefetch(at);
-          __builtin_prefetch(at + 64);
-          __builtin_prefetch(at + 128);
-          __builtin_prefetch(at + 192);
-        }
         int i = top++;
         while (i > base && stack[i - 1].t < e.t) {
           stack[i] = stack[i - 1];
