@@ -172,6 +172,9 @@ class TracerCore {
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
           if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
           spheres_in_leaf<M, kBytes>(lanes, first, count, sray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+            // The sphere's file order is read only for a tie: a farther hit
+            // leaves its sphere's record untouched (not loaded).
+            if (h.kind != HitKind::kNone && !(t <= h.t)) return;
             const uint32_t i = bvh_.refs[pos];
             h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
           });
@@ -241,9 +244,11 @@ class TracerCore {
   }
 
   // Is anything between eps and `limit` along the ray? (Shadow rays toward
-  // light `light`.) The object that last blocked this light is tried first:
-  // neighbouring shadow rays are usually blocked by the same one. The cache
-  // only saves time; the answer is the same with or without it.
+  // light `light`.) A sun grid answers the rays it covers; for the others
+  // the object that last blocked this light is tried first: neighbouring
+  // shadow rays are usually blocked by the same one. (Before a grid's cell
+  // the cache costs more than it saves: it misses most rays there.) The
+  // cache only saves time; the answer is the same with or without it.
   bool occluded(const Ray<R>& ray, R eps, R limit, uint32_t light) const {
     if constexpr ((F & kPlanes) != 0) {
       for (uint32_t i = 0; i < s_.plane_count; ++i) {
@@ -253,16 +258,16 @@ class TracerCore {
     }
     if (bvh_.node_count == 0) return false;
     uint32_t* cached = light < kShadowCache ? &shadow_cache_[light] : nullptr;
-    if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
     if constexpr (kWideBvh) {
       if (light < bvh_.wide.sun_grid_count && sun_grid_covers(bvh_.wide.sun_grids[light], ray)) {
         return sun_grid_any(bvh_.wide.sun_grids[light], ray.origin, [&](uint32_t i) __attribute__((always_inline)) {
           const R t = hit_sphere_inline<M>(s_.spheres[i], ray, eps);
-          if (!(t > eps && t < limit)) return false;
-          if (cached != nullptr) *cached = i;
-          return true;
+          return t > eps && t < limit;
         });
       }
+    }
+    if (cached != nullptr && *cached != kNoBlocker && blocks(*cached, ray, eps, limit)) return true;
+    if constexpr (kWideBvh) {
       if (bvh_.wide.node_count != 0) {
 #if MINRT_AVX2_DISPATCH
         if (bvh_.wide.avx2) return occluded_wide_avx2(ray, eps, limit, cached);

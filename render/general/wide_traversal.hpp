@@ -153,11 +153,11 @@ template <int kBytes>
 template <int kBytes, class R, class Limit, class Leaf>
 [[gnu::always_inline]] inline void wide_nearest(const WideBvh<R>& tree, const Ray<R>& ray, Limit limit, Leaf leaf) {
   const WideRay<kBytes> r(ray);
-  // A waiting child: its parent's node and lane (node * kWideArity + lane;
-  // its child and count are read from the node when it comes off) and its
-  // entry distance. Eight bytes: the insertion moves one word.
+  // A waiting child: its node (or a leaf's first reference), its count
+  // (0 for a node) and its entry distance.
   struct Entry {
-    uint32_t slot;
+    uint32_t child;
+    uint32_t count;
     WideBox t;
   };
   Entry stack[kWideStack];
@@ -182,11 +182,10 @@ template <int kBytes, class R, class Limit, class Leaf>
     } else {
       // Insert the met children in order of decreasing entry distance.
       const int base = top;
-      const uint32_t slot0 = current * static_cast<uint32_t>(kWideArity);
       while (mask != 0) {
         const int k = __builtin_ctz(mask);
         mask &= mask - 1;
-        const Entry e{slot0 + static_cast<uint32_t>(k), entry[k]};
+        const Entry e{node.child[k], node.count[k], entry[k]};
         int i = top++;
         while (i > base && stack[i - 1].t < e.t) {
           stack[i] = stack[i - 1];
@@ -199,14 +198,12 @@ template <int kBytes, class R, class Limit, class Leaf>
     while (top > 0) {
       const Entry e = stack[--top];
       if (e.t > bound) continue;
-      const WideNode& parent = tree.nodes[e.slot / static_cast<uint32_t>(kWideArity)];
-      const uint32_t k = e.slot % static_cast<uint32_t>(kWideArity);
-      if (parent.count[k] == 0) {
-        current = parent.child[k];
+      if (e.count == 0) {
+        current = e.child;
         descend = true;
         break;
       }
-      leaf(parent.child[k], parent.count[k]);
+      leaf(e.child, e.count);
       bound = static_cast<WideBox>(limit());
     }
     if (!descend) return;

@@ -153,6 +153,28 @@ TEST_CASE("wide BVH: a sphere too large for float beside triangles", "[general][
   check_walks<PortableFloat>(text);
 }
 
+// Every sphere of a cloud twice, at the same place in another colour: each
+// hit is a tie of distance, which the later sphere wins (SPEC.md 1.3). The
+// wide walk reads a sphere's file order only for such ties; it must pick
+// the binary walk's winner whichever leaf or lane holds either copy.
+TEST_CASE("wide BVH: coincident spheres, the later one wins in every walk", "[general][bvh]") {
+  std::string text = sphere_cloud(300, 0.08);
+  std::istringstream lines(text.substr(text.find("color 1 1 1")));
+  std::ostringstream twice;
+  twice << text.substr(0, text.find("color 1 1 1"));
+  std::string line, sphere;
+  for (int k = 0; std::getline(lines, line); ++k) {
+    twice << line << '\n';
+    if (line.rfind("sphere ", 0) != 0) continue;
+    twice << "color " << (k % 3 == 0 ? "1 0 0" : k % 3 == 1 ? "0 1 0" : "0 0 1") << '\n' << line << '\n';
+  }
+  text = twice.str();
+  check_walks<LibmDouble>(text);
+  check_walks<LibmFloat>(text);
+  // The later copy's colour shows: not the image of the cloud drawn once.
+  CHECK(render<LibmDouble>(text, Walk::kWidest).rgba != render<LibmDouble>(sphere_cloud(300, 0.08), Walk::kWidest).rgba);
+}
+
 // Shadow rays toward a sun through its grid answer as the walk does: the
 // same bytes with and without the grids, on clouds of small and of large
 // overlapping spheres, in double and in float.
