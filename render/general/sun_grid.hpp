@@ -22,7 +22,6 @@ namespace minrt::general {
 // A sphere listed in a cell, with how far its far side lies along the
 // sun's direction: a cell's list runs from the farthest, so a ray stops at
 // the first sphere whose far side is behind its origin.
-template <class R>
 struct SunGridItem {
   float far;  // rounded up: a float keeps an item in eight bytes
   uint32_t sphere;
@@ -38,7 +37,7 @@ struct SunGrid {
   R margin = R(0);                  // the discs' margin
   uint32_t nu = 0, nv = 0;          // 0: no grid for this light
   const uint32_t* start = nullptr;  // cell c lists items[start[c] .. start[c + 1])
-  const SunGridItem<R>* items = nullptr;
+  const SunGridItem* items = nullptr;
 };
 
 // Lights that may have a grid (the first ones of the scene), and each grid's
@@ -60,8 +59,8 @@ constexpr size_t sun_grid_footprint(uint32_t n) {
   const size_t cells = static_cast<size_t>(kSunGridCells) * n + 2;
   return Arena::footprint<SunGrid<R>>(kSunGridLights) +
          kSunGridLights * (Arena::footprint<uint32_t>(cells + 1) +
-                           Arena::footprint<SunGridItem<R>>(static_cast<size_t>(kSunGridItems) * n)) +
-         Arena::footprint<uint32_t>(cells) + Arena::footprint<SunGridItem<R>>(n);  // the fill's scratch
+                           Arena::footprint<SunGridItem>(static_cast<size_t>(kSunGridItems) * n)) +
+         Arena::footprint<uint32_t>(cells) + Arena::footprint<SunGridItem>(n);  // the fill's scratch
 }
 
 namespace sun_grid_detail {
@@ -93,8 +92,7 @@ float float_up(R v) {
 }
 
 // Heap sort, largest `far` first: no recursion, no room beyond the array.
-template <class R>
-void sort_farthest_first(SunGridItem<R>* a, uint32_t n) {
+inline void sort_farthest_first(SunGridItem* a, uint32_t n) {
   // A min-heap on far, whose smallest goes to the end each round.
   auto sift = [&](uint32_t at, uint32_t size) {
     for (;;) {
@@ -103,7 +101,7 @@ void sort_farthest_first(SunGridItem<R>* a, uint32_t n) {
       if (l < size && a[l].far < a[least].far) least = l;
       if (r < size && a[r].far < a[least].far) least = r;
       if (least == at) return;
-      const SunGridItem<R> t = a[at];
+      const SunGridItem t = a[at];
       a[at] = a[least];
       a[least] = t;
       at = least;
@@ -111,7 +109,7 @@ void sort_farthest_first(SunGridItem<R>* a, uint32_t n) {
   };
   for (uint32_t i = n / 2; i-- > 0;) sift(i, n);
   for (uint32_t end = n; end-- > 1;) {
-    const SunGridItem<R> t = a[0];
+    const SunGridItem t = a[0];
     a[0] = a[end];
     a[end] = t;
     sift(0, end);
@@ -197,9 +195,9 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   // The fill's cursors and order are scratch at the arena's top end.
   const size_t mark = arena.top_mark();
   uint32_t* cursor = arena.alloc_top<uint32_t>(cells);
-  auto* order = arena.alloc_top<SunGridItem<R>>(n);
+  auto* order = arena.alloc_top<SunGridItem>(n);
   uint32_t* start = arena.alloc_zeroed<uint32_t>(cells + 1);
-  auto* list = arena.alloc_uninit<SunGridItem<R>>(items > 0 ? static_cast<size_t>(items) : 1);
+  auto* list = arena.alloc_uninit<SunGridItem>(items > 0 ? static_cast<size_t>(items) : 1);
   if (start == nullptr || list == nullptr || cursor == nullptr || order == nullptr) {
     arena.release_top(mark);
     g = SunGrid<R>{};
@@ -208,7 +206,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   // The spheres from the farthest far side, so that each cell's list,
   // filled in this order, runs from the farthest too.
   for (uint32_t i = 0; i < n; ++i)
-    order[i] = SunGridItem<R>{
+    order[i] = SunGridItem{
         sun_grid_detail::float_up(dot(s.spheres[i].center, g.dir) + magnitude(s.spheres[i].radius) + margin), i};
   sun_grid_detail::sort_farthest_first(order, n);
   // Count, then place each sphere in its cells.
