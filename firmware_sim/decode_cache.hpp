@@ -97,8 +97,8 @@ class DecodeCache {
   bool check_isa_ = false;  // without a board: today's rv32imf, nothing filtered
   bool self_jump_halts_ = false;
   uint32_t ram_base_ = 0;
-  uint32_t filled_lo_ = UINT32_MAX, filled_hi_ = 0;
-  uint64_t epoch_ = 0;  // span of entries filled since the last invalidate_all
+  uint32_t filled_lo_ = UINT32_MAX, filled_hi_ = 0;  // span of entries filled since the last invalidate_all
+  uint64_t epoch_ = 0;
 };
 
 }  // namespace fwsim

@@ -51,9 +51,8 @@ class Machine {
   // Null (the default) = exact IEEE arithmetic; otherwise the model's
   // arithmetic for the ops it replaces (fpu_approx.hpp).
   void set_fpu_model(const FpuApprox* m) { fpu_model_ = m; }
-  // Plain runs, and timed runs with a static branch predictor and no
-  // caches, translate hot code to host code (block_jit.hpp) unless
-  // disabled; counts, cycles, statistics, profiles, output and stops are
+  // Plain runs, and timed runs without caches, trace or watchpoints,
+  // translate hot code to host code (block_jit.hpp) unless disabled; counts, cycles, statistics, profiles, output and stops are
   // the same either way.
   void set_jit(bool on) { jit_enabled_ = on; }
   bool jit_enabled() const { return jit_enabled_; }

@@ -9,9 +9,10 @@
 // open() says why in one line and the caller goes on without a window.
 //
 // Threads: SDL lives on a thread of its own, which looks for events every
-// kPollMs and redraws at most kRefreshHz times a second. Producers hand rows over through a shared
-// buffer with a per-row ready flag (each row is written once, then
-// published with a release store), so a render never waits on the window.
+// kPollMs and redraws at most kRefreshHz times a second. Producers hand
+// rows over through a shared buffer with a per-row ready flag (each row is
+// written once, then published with a release store), so a render never
+// waits on the window.
 //
 // For tests: MINRT_SHOW_SNAPSHOT=FILE.ppm saves what the window shows once
 // the image is complete and closes it; MINRT_SHOW_PARTIAL_SNAPSHOT=FILE.ppm
