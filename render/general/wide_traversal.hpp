@@ -195,6 +195,7 @@ template <int kBytes, int kOctant = -1>
 // distance's bits above (distances are never negative, and non-negative
 // floats order as their bits), its parent node and lane below, so keys
 // order by distance and a key past `wide_key(bound, ~0u)` is beyond bound.
+static_assert(kWideArity == 8, "a key's lane is its low three bits");
 inline uint64_t wide_key(WideBox t, uint32_t lane) {
   uint32_t bits;
   __builtin_memcpy(&bits, &t, sizeof bits);
