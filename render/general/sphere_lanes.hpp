@@ -55,13 +55,12 @@ struct SphereRay {
   using V = Lanes<R, kBytes>;
   V ox, oy, oz, dx, dy, dz;
   [[gnu::always_inline]] explicit SphereRay(const Ray<R>& ray) {
-    const V zero{};
-    ox = zero + ray.origin.x;
-    oy = zero + ray.origin.y;
-    oz = zero + ray.origin.z;
-    dx = zero + ray.dir.x;
-    dy = zero + ray.dir.y;
-    dz = zero + ray.dir.z;
+    splat(ox, ray.origin.x);
+    splat(oy, ray.origin.y);
+    splat(oz, ray.origin.z);
+    splat(dx, ray.dir.x);
+    splat(dy, ray.dir.y);
+    splat(dz, ray.dir.z);
   }
 };
 

@@ -171,7 +171,7 @@ class TracerCore {
         bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
           if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
-          spheres_in_leaf<M, kBytes>(lanes, first, count, sray, eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+          spheres_in_leaf<M, kBytes>(lanes, first, count, from_memory(sray), eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
             // The sphere's file order is read only for a tie: a farther hit
             // leaves its sphere's record untouched (not loaded).
             if (h.kind != HitKind::kNone && !(t <= h.t)) return;

@@ -31,6 +31,8 @@ template <class R>
 bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
   out = WideBvh<R>{};
   if (bvh.node_count == 0) return true;
+  // The walk's stack keys hold a node's index in 29 bits (wide_traversal.hpp).
+  if (bvh.node_count > kWideMaxNodes) return false;
   // The arena's base is only as aligned as the host's allocator makes it:
   // one node's room more, and the nodes start at the first cache line in it.
   auto* raw = arena.alloc_zeroed<uint8_t>(sizeof(WideNode) * static_cast<size_t>(bvh.node_count) + kCacheLine);

@@ -24,6 +24,9 @@ namespace minrt::general {
 inline constexpr bool kWideBvh = sizeof(void*) >= 8;
 
 inline constexpr int kWideArity = 8;
+// The most nodes a wide tree has: the nearest-hit walk's stack keys name a
+// node and a lane in 32 bits (wide_traversal.hpp).
+inline constexpr uint32_t kWideMaxNodes = 1u << 29;
 
 // Whatever the tracer's precision: half the bytes of doubles, twice the
 // boxes per vector.

@@ -233,3 +233,93 @@ TEST_CASE("sun grids: a cell lists every sphere that blocks its rays", "[general
   CHECK(blocked > 1000);  // the rays are not all free
   CHECK(blocked < 19000);
 }
+
+namespace {
+
+// The nearest sphere along `ray` by the wide walk with kBytes vectors (the
+// leaves tested sphere by sphere with the tracer's test and tie rule).
+template <int kBytes>
+[[gnu::always_inline]] inline void wide_nearest_spheres(const general::Bvh<double>& tree,
+                                                        const model::Scene<double>& scene,
+                                                        const general::Ray<double>& ray, double eps,
+                                                        general::Hit<double>& h) {
+  general::wide_nearest<kBytes>(
+      tree.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == general::HitKind::kNone ? 3.0e38 : h.t; },
+      [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
+        for (uint32_t k = 0; k < count; ++k) {
+          const uint32_t i = tree.refs[first + k];
+          const double t = general::hit_sphere<LibmDouble>(scene.spheres[i], ray, eps);
+          if (t > eps) h.offer(t, general::HitKind::kSphere, i, scene.spheres[i].order);
+        }
+      });
+}
+
+#if MINRT_AVX2_DISPATCH
+MINRT_TARGET_AVX2 void wide_nearest_spheres_avx2(const general::Bvh<double>& tree, const model::Scene<double>& scene,
+                                                 const general::Ray<double>& ray, double eps,
+                                                 general::Hit<double>& h) {
+  wide_nearest_spheres<general::kAvx2BoxBytes>(tree, scene, ray, eps, h);
+}
+#endif
+
+}  // namespace
+
+// The walk has a copy for each octant of directions (wide_traversal.hpp):
+// rays in every octant, along the axes with components of +0 and -0, and
+// from inside boxes meet the sphere that testing every sphere finds (the
+// same distance, and the later of two at the same distance).
+TEST_CASE("wide BVH: every octant and axis-parallel rays find the nearest sphere", "[general][bvh]") {
+  if (!general::kWideBvh) return;
+  const std::string text = sphere_cloud(2000, 0.05);
+  const size_t bytes = size_t{64} << 20;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  const model::Scene<double> scene = read_scene<LibmDouble>(text, arena);
+  general::Bvh<double> tree;
+  REQUIRE(general::build_bvh<LibmDouble>(scene, arena, tree));
+  REQUIRE(general::build_wide_bvh(tree, arena, tree.wide));
+  REQUIRE(tree.wide.node_count != 0);
+  uint32_t state = 4321u;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  const double eps = 1e-4;
+  const double z = 0.0, nz = -0.0;
+  const Vec3<double> axis_dirs[] = {{1, z, z},  {-1, z, nz}, {nz, 1, z},  {z, -1, nz},
+                                    {z, nz, 1}, {nz, z, -1}, {nz, nz, -1}, {-1, nz, nz}};
+  int hits = 0, rays = 0;
+  for (int k = 0; k < 6000; ++k) {
+    const Vec3<double> o{next() * 4.0 - 2.0, next() * 3.0 - 2.0, next() * 3.0 - 4.5};
+    Vec3<double> d = k % 3 == 0 ? axis_dirs[(k / 3) % 8]
+                                : normalize<LibmDouble>(Vec3<double>{next() - 0.5, next() - 0.5, next() - 0.5});
+    const general::Ray<double> ray{o, d};
+    general::Hit<double> every;
+    for (uint32_t i = 0; i < scene.sphere_count; ++i) {
+      const double t = general::hit_sphere<LibmDouble>(scene.spheres[i], ray, eps);
+      if (t > eps) every.offer(t, general::HitKind::kSphere, i, scene.spheres[i].order);
+    }
+    general::Hit<double> wide16;
+    wide_nearest_spheres<16>(tree, scene, ray, eps, wide16);
+    REQUIRE(wide16.kind == every.kind);
+    if (every.kind != general::HitKind::kNone) {
+      CHECK(wide16.index == every.index);
+      CHECK(wide16.t == every.t);
+      ++hits;
+    }
+#if MINRT_AVX2_DISPATCH
+    if (general::cpu_has_avx2()) {
+      general::Hit<double> widest;
+      wide_nearest_spheres_avx2(tree, scene, ray, eps, widest);
+      REQUIRE(widest.kind == every.kind);
+      if (every.kind != general::HitKind::kNone) {
+        CHECK(widest.index == every.index);
+        CHECK(widest.t == every.t);
+      }
+    }
+#endif
+    ++rays;
+  }
+  CHECK(hits > rays / 4);  // most rays meet a sphere, not all
+  CHECK(hits < rays);
+}
