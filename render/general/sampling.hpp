@@ -100,8 +100,9 @@ template <class M>
 }
 
 // Three independent standard normal values, drawn in the order x, y, z.
+// Inlined with their fast paths into the shading.
 template <class M>
-Vec3<typename M::real> gaussian3(CounterRng& rng) {
+[[gnu::always_inline]] inline Vec3<typename M::real> gaussian3(CounterRng& rng) {
   using R = typename M::real;
   const R x = standard_normal<M>(rng);
   const R y = standard_normal<M>(rng);
