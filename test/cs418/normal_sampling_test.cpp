@@ -142,7 +142,7 @@ NormalStats stats_of(const std::vector<double>& v) {
 
 std::string standard_normal_failures(const std::vector<double>& v) { return stats_of(v).failures(); }
 
-// The ziggurat's tail (about 1 value in 1,700 comes from it) is too rare to
+// The ziggurat's tail (about 1 value in 1,760 comes from it) is too rare to
 // be judged in the values above: sqrt(n) times the KS distance of tail
 // samples from the normal beyond the tail start r, P(X <= x | X > r).
 double tail_ks(const std::vector<double>& v) {
