@@ -100,9 +100,11 @@ template <class M>
 }
 
 // Three independent standard normal values, drawn in the order x, y, z.
-// Inlined with their fast paths into the shading.
+// Not forced inline: inside the shading it costs the board's scenes
+// without roughness 0.35 % more instructions (registers), and saves rough
+// scenes only 1 %.
 template <class M>
-[[gnu::always_inline]] inline Vec3<typename M::real> gaussian3(CounterRng& rng) {
+Vec3<typename M::real> gaussian3(CounterRng& rng) {
   using R = typename M::real;
   const R x = standard_normal<M>(rng);
   const R y = standard_normal<M>(rng);
