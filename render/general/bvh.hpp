@@ -331,12 +331,16 @@ template <class R>
   return tmax >= tmin && tmin <= limit ? tmin : R(-1);
 }
 
-// 1/d per axis, with zero components replaced by a tiny value of the same
-// sign so the slab test never multiplies zero by infinity.
+// What a zero direction component is replaced by before its inverse is
+// taken, so the slab test never multiplies zero by infinity.
+template <class R>
+inline constexpr R kTinyDirection = static_cast<R>(1e-30f);
+
+// 1/d per axis, with zero components (either sign) replaced by
+// kTinyDirection.
 template <class R>
 Vec3<R> inverse_dir(const Vec3<R>& d) {
-  constexpr R kTiny = static_cast<R>(1e-30f);
-  auto inv = [](R v) { return R(1) / (v == R(0) ? kTiny : v); };
+  auto inv = [](R v) { return R(1) / (v == R(0) ? kTinyDirection<R> : v); };
   return {inv(d.x), inv(d.y), inv(d.z)};
 }
 

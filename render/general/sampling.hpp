@@ -45,9 +45,7 @@ typename M::real tail(CounterRng& rng) {
   }
   return r;
 }
-}  // namespace normal_detail
 
-namespace normal_detail {
 // A draw's strip (its low bits) and signed 24-bit point across the strip
 // (its high bits, [-2^23, 2^23)), and that point's value.
 template <class M>

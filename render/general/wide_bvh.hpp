@@ -26,7 +26,8 @@ inline WideBox wide_box_up(double v) { return -wide_box_down(-v); }
 
 // Collapses `bvh` into `out`: every wide node takes the binary node's two
 // children and keeps opening the inner one with the largest box until it
-// has eight. False (and `out` empty) when the arena is too small.
+// has eight. False (and `out` empty) when the arena is too small or the
+// tree has more than kWideMaxNodes nodes: the binary tree is walked then.
 template <class R>
 bool build_wide_bvh(const Bvh<R>& bvh, Arena& arena, WideBvh<R>& out) {
   out = WideBvh<R>{};

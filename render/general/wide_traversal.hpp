@@ -120,7 +120,7 @@ struct WideRay {
     const Axes o = {ray.origin.x, ray.origin.y, ray.origin.z, R(0)};
     const Axes d = {ray.dir.x, ray.dir.y, ray.dir.z, R(1)};
     // inverse_dir (bvh.hpp), lane by lane.
-    const Axes i = R(1) / (d == R(0) ? static_cast<R>(1e-30f) - Axes{} : d);
+    const Axes i = R(1) / (d == R(0) ? kTinyDirection<R> - Axes{} : d);
     const FloatAxes f = __builtin_convertvector(o, FloatAxes);
     // |f| / 2^23 is at least one step of f; f is within half a step of o.
     const FloatAxes step = (f < WideBox(0) ? -f : f) * WideBox(1.0f / 8388608.0f) + WideBox(1e-30f);
@@ -150,8 +150,7 @@ struct WideRay {
 // Slab test of the ray against the node's eight boxes at once: entry[k] is
 // no later than where it enters box k (0 when it starts inside); bit k of
 // the result is set when it may meet box k at or before r.limit (never
-// clear where the exact test in the tracer's precision would
-// meet it).
+// clear where the exact test in the tracer's precision would meet it).
 // For a positive 1/d the low bound gives the smaller distance, so picking
 // the bound by the sign replaces the min/max of the two, and starting from
 // [0, limit] replaces the clamp and the limit test. kOctant (bit a set:
