@@ -89,10 +89,11 @@ template <class M, int kBytes, class Found>
     const V clx = ox + dx * tc - cx, cly = oy + dy * tc - cy, clz = oz + dz * tc - cz;
     const V d2 = clx * clx + cly * cly + clz * clz;
     const auto met = inside | (~(tc < zero) & ~(r2 < d2));
-    // The lanes met, less those past the leaf's end.
+    // The lanes met, less those past the leaf's end (without a branch: how
+    // many lanes the last group keeps varies from leaf to leaf).
     const uint32_t left = end - p;
-    uint32_t bits = true_lanes<R, kBytes>(met);
-    if (left < static_cast<uint32_t>(kL)) bits &= (1u << left) - 1u;
+    const uint32_t keep = left < static_cast<uint32_t>(kL) ? left : static_cast<uint32_t>(kL);
+    uint32_t bits = true_lanes<R, kBytes>(met) & ((1u << keep) - 1u);
     while (bits != 0) {
       const int k = __builtin_ctz(bits);
       bits &= bits - 1;
