@@ -19,11 +19,10 @@
 
 namespace minrt::general {
 
-// A sphere listed in a cell, with how far its far side lies along the
-// sun's direction: a cell's list runs from the farthest, so a ray stops at
-// the first sphere whose far side is behind its origin.
+// A sphere with how far its far side lies along the sun's direction
+// (rounded up), while the grid is built.
 struct SunGridItem {
-  float far;  // rounded up: a float keeps an item in eight bytes
+  float far;
   uint32_t sphere;
 };
 
@@ -37,7 +36,14 @@ struct SunGrid {
   R margin = R(0);                  // the discs' margin
   uint32_t nu = 0, nv = 0;          // 0: no grid for this light
   const uint32_t* start = nullptr;  // cell c lists items[start[c] .. start[c + 1])
-  const SunGridItem* items = nullptr;
+  // A listed sphere in four bytes, so that the lists stay in cache: its
+  // index in the low index_bits, above them its far side as a level,
+  // (far - far0) * far_scale rounded up. A cell's list runs from the
+  // farthest, so a ray stops at the first sphere whose far side is behind
+  // its origin.
+  const uint32_t* items = nullptr;
+  uint32_t index_bits = 0;
+  R far0 = R(0), far_scale = R(0);
 };
 
 // Lights that may have a grid (the first ones of the scene), and each grid's
@@ -50,6 +56,11 @@ inline constexpr uint32_t kSunGridItems = 32;
 // 700 a shadow ray: it is built when the image has at least this many
 // samples a sphere (each sample sends about one shadow ray to each sun).
 inline constexpr uint32_t kSunGridSamples = 8;
+// An item is four bytes: a sphere's index and its far side's level, in at
+// most kSunGridLevelBits (levels exact in float), at least 32 less the bits
+// of kSunGridMaxSpheres.
+inline constexpr uint32_t kSunGridLevelBits = 16;
+inline constexpr uint32_t kSunGridMaxSpheres = 1u << 26;
 // The margin, in units of the precision's epsilon times the scene's extent:
 // the exact test's rounding is a few epsilons of that, the float model's too.
 inline constexpr double kSunGridMargin = 8192.0;
@@ -59,7 +70,7 @@ constexpr size_t sun_grid_footprint(uint32_t n) {
   const size_t cells = static_cast<size_t>(kSunGridCells) * n + 2;
   return Arena::footprint<SunGrid<R>>(kSunGridLights) +
          kSunGridLights * (Arena::footprint<uint32_t>(cells + 1) +
-                           Arena::footprint<SunGridItem>(static_cast<size_t>(kSunGridItems) * n)) +
+                           Arena::footprint<uint32_t>(static_cast<size_t>(kSunGridItems) * n)) +
          Arena::footprint<uint32_t>(cells) + Arena::footprint<SunGridItem>(n);  // the fill's scratch
 }
 
@@ -128,7 +139,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   using sun_grid_detail::magnitude;
   g = SunGrid<R>{};
   const uint32_t n = s.sphere_count;
-  if (n == 0) return false;
+  if (n == 0 || n > kSunGridMaxSpheres) return false;
   // The extent: every centre coordinate and radius within it.
   R extent = R(0);
   for (uint32_t i = 0; i < n; ++i) {
@@ -197,7 +208,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   uint32_t* cursor = arena.alloc_top<uint32_t>(cells);
   auto* order = arena.alloc_top<SunGridItem>(n);
   uint32_t* start = arena.alloc_zeroed<uint32_t>(cells + 1);
-  auto* list = arena.alloc_uninit<SunGridItem>(items > 0 ? static_cast<size_t>(items) : 1);
+  auto* list = arena.alloc_uninit<uint32_t>(items > 0 ? static_cast<size_t>(items) : 1);
   if (start == nullptr || list == nullptr || cursor == nullptr || order == nullptr) {
     arena.release_top(mark);
     g = SunGrid<R>{};
@@ -209,6 +220,22 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
     order[i] = SunGridItem{
         sun_grid_detail::float_up(dot(s.spheres[i].center, g.dir) + magnitude(s.spheres[i].radius) + margin), i};
   sun_grid_detail::sort_farthest_first(order, n);
+  // The far sides as levels: index_bits for the largest index, up to
+  // kSunGridLevelBits of the rest for the level (exact in float). The
+  // scale maps the far sides onto 0 .. top - 1, so that its rounding
+  // leaves every level at or below the top.
+  uint32_t bits = 1;
+  while ((n - 1) >> bits != 0) ++bits;
+  const uint32_t level_bits = 32 - bits < kSunGridLevelBits ? 32 - bits : kSunGridLevelBits;
+  const uint32_t top = (1u << level_bits) - 1u;
+  const R far0 = static_cast<R>(order[n - 1].far), span = static_cast<R>(order[0].far) - far0;
+  const R far_scale = span > R(0) ? static_cast<R>(top - 1) / span : R(0);
+  auto level = [&](float far) {
+    const R q = (static_cast<R>(far) - far0) * far_scale;
+    uint32_t l = q > R(0) ? static_cast<uint32_t>(q) : 0u;
+    if (static_cast<R>(l) < q) ++l;  // up: a level never below its far side's
+    return l < top ? l : top;
+  };
   // Count, then place each sphere in its cells.
   for (int pass = 0; pass < 2; ++pass) {
     for (uint32_t o = 0; o < n; ++o) {
@@ -218,7 +245,7 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
         for (uint32_t cu = ua; cu <= ub; ++cu) {
           const size_t c = static_cast<size_t>(cv) * g.nu + cu;
           if (pass == 0) ++start[c + 1];
-          else list[cursor[c]++] = order[o];
+          else list[cursor[c]++] = level(order[o].far) << bits | order[o].sphere;
         }
     }
     if (pass == 0) {
@@ -232,6 +259,9 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   g.margin = margin;
   g.start = start;
   g.items = list;
+  g.index_bits = bits;
+  g.far0 = far0;
+  g.far_scale = far_scale;
   return true;
 }
 
@@ -255,10 +285,15 @@ template <class R, class Blocks>
   if (!(fu >= R(0) && fv >= R(0) && fu < static_cast<R>(g.nu) && fv < static_cast<R>(g.nv))) return false;
   const uint32_t cu = static_cast<uint32_t>(fu), cv = static_cast<uint32_t>(fv);
   const size_t c = static_cast<size_t>(cv) * g.nu + cu;
-  const R behind = dot(origin, g.dir) - g.margin;
+  // The level of the plane behind the origin, by the arithmetic of the
+  // levels, which is monotonic: a sphere's level below it has its far
+  // side below the plane.
+  const R behind = (dot(origin, g.dir) - g.margin - g.far0) * g.far_scale;
+  const uint32_t mask = (1u << g.index_bits) - 1u;
   for (uint32_t k = g.start[c], end = g.start[c + 1]; k < end; ++k) {
-    if (g.items[k].far < behind) return false;
-    if (blocks(g.items[k].sphere)) return true;
+    const uint32_t item = g.items[k];
+    if (static_cast<R>(item >> g.index_bits) < behind) return false;
+    if (blocks(item & mask)) return true;
   }
   return false;
 }

@@ -236,6 +236,64 @@ TEST_CASE("sun grids: a cell lists every sphere that blocks its rays", "[general
 
 namespace {
 
+// Every item of every cell: its sphere's index, a level at or above its far
+// side's (by the arithmetic the look-up uses), levels not rising along a
+// list, and each sphere in at least one cell.
+template <class M>
+void check_sun_grid_levels(const std::string& text, const Vec3<typename M::real>& sun) {
+  using R = typename M::real;
+  const size_t bytes = size_t{64} << 20;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  const model::Scene<R> scene = read_scene<M>(text, arena);
+  const Vec3<R> dir = normalize<M>(sun);
+  general::SunGrid<R> grid;
+  REQUIRE(general::build_sun_grid<M>(scene, dir, arena, grid));
+  REQUIRE(grid.index_bits >= 1);
+  REQUIRE((scene.sphere_count - 1) >> grid.index_bits == 0);
+  REQUIRE(grid.far_scale > R(0));
+  const uint32_t mask = (1u << grid.index_bits) - 1u;
+  std::vector<bool> listed(scene.sphere_count, false);
+  uint32_t top_level = 0, items = 0;
+  for (size_t c = 0; c < static_cast<size_t>(grid.nu) * grid.nv; ++c) {
+    uint32_t previous = 0xffffffffu;
+    for (uint32_t k = grid.start[c]; k < grid.start[c + 1]; ++k, ++items) {
+      const uint32_t i = grid.items[k] & mask, level = grid.items[k] >> grid.index_bits;
+      REQUIRE(i < scene.sphere_count);
+      listed[i] = true;
+      const model::Sphere<R>& sp = scene.spheres[i];
+      const R r = sp.radius < R(0) ? -sp.radius : sp.radius;
+      const float far = general::sun_grid_detail::float_up(dot(sp.center, dir) + r + grid.margin);
+      CHECK(static_cast<R>(level) >= (static_cast<R>(far) - grid.far0) * grid.far_scale);
+      CHECK(level <= previous);
+      previous = level;
+      if (level > top_level) top_level = level;
+    }
+  }
+  CHECK(items >= scene.sphere_count);
+  for (uint32_t i = 0; i < scene.sphere_count; ++i) CHECK(listed[i]);
+  CHECK(top_level > 1000);  // the levels tell the far sides apart
+  CHECK(top_level < (1u << general::kSunGridLevelBits));
+}
+
+}  // namespace
+
+// The four-byte items: double and float grids, over small spheres and
+// over a few large ones whose far sides spread widely.
+TEST_CASE("sun grids: an item's level is never below its sphere's far side", "[general][bvh]") {
+  for (const auto& [spheres, radius] : {std::pair{800, 0.08}, std::pair{3000, 0.01}, std::pair{40, 2.0}}) {
+    DYNAMIC_SECTION(spheres << " spheres of radius about " << radius) {
+      const std::string text = sphere_cloud(spheres, radius);
+      check_sun_grid_levels<LibmDouble>(text, Vec3<double>{1, 2, 1});
+      check_sun_grid_levels<LibmDouble>(text, Vec3<double>{-1, 0.5, 0.3});
+      check_sun_grid_levels<LibmFloat>(text, Vec3<float>{1, 2, 1});
+      check_sun_grid_levels<PortableFloat>(text, Vec3<float>{-1, 0.5, 0.3});
+    }
+  }
+}
+
+namespace {
+
 // The nearest sphere along `ray` by the wide walk with kBytes vectors (the
 // leaves tested sphere by sphere with the tracer's test and tie rule).
 template <int kBytes>
