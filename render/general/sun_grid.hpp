@@ -229,7 +229,10 @@ bool build_sun_grid(const model::Scene<typename M::real>& s, const Vec3<typename
   const uint32_t level_bits = 32 - bits < kSunGridLevelBits ? 32 - bits : kSunGridLevelBits;
   const uint32_t top = (1u << level_bits) - 1u;
   const R far0 = static_cast<R>(order[n - 1].far), span = static_cast<R>(order[0].far) - far0;
-  const R far_scale = span > R(0) ? static_cast<R>(top - 1) / span : R(0);
+  R far_scale = span > R(0) ? static_cast<R>(top - 1) / span : R(0);
+  // Far sides too close together for a finite scale share level 0: no ray
+  // stops early, none stops wrongly.
+  if (!(far_scale < R(1e30f))) far_scale = R(0);
   auto level = [&](float far) {
     const R q = (static_cast<R>(far) - far0) * far_scale;
     uint32_t l = q > R(0) ? static_cast<uint32_t>(q) : 0u;

@@ -292,6 +292,41 @@ TEST_CASE("sun grids: an item's level is never below its sphere's far side", "[g
   }
 }
 
+// Spheres whose far sides coincide (equal radii, centres level across the
+// sun) have no scale for levels: every ray reads its list to the end and
+// finds what testing every sphere finds.
+TEST_CASE("sun grids: far sides all equal, no ray stops early", "[general][bvh]") {
+  using R = double;
+  std::ostringstream text;
+  text << "png 64 48 x.png\naa 40\ncolor 1 1 1\nsun 0 1 0\n";
+  for (int i = 0; i < 200; ++i) text << "sphere " << (i % 20) * 0.3 - 3.0 << " -1 " << (i / 20) * 0.3 - 4.0 << " 0.1\n";
+  const size_t bytes = size_t{16} << 20;
+  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
+  Arena arena(storage.get(), bytes);
+  const model::Scene<R> scene = read_scene<LibmDouble>(text.str(), arena);
+  const Vec3<R> dir{0, 1, 0};
+  general::SunGrid<R> grid;
+  REQUIRE(general::build_sun_grid<LibmDouble>(scene, dir, arena, grid));
+  CHECK(grid.far_scale == 0.0);
+  const R eps = 1e-4;
+  int blocked = 0;
+  for (int k = 0; k < 4000; ++k) {
+    // Below, between and on the spheres, and above them.
+    const Vec3<R> o{(k % 80) * 0.08 - 3.3, (k / 80 % 5) * 0.05 - 1.2, (k / 400) * 0.3 - 4.05};
+    const general::Ray<R> ray{o, dir};
+    bool any = false;
+    for (uint32_t i = 0; i < scene.sphere_count && !any; ++i)
+      any = general::hit_sphere<LibmDouble>(scene.spheres[i], ray, eps) > eps;
+    REQUIRE(general::sun_grid_covers(grid, ray));
+    CHECK(general::sun_grid_any(grid, o, [&](uint32_t i) {
+            return general::hit_sphere<LibmDouble>(scene.spheres[i], ray, eps) > eps;
+          }) == any);
+    blocked += any ? 1 : 0;
+  }
+  CHECK(blocked > 100);
+  CHECK(blocked < 3900);
+}
+
 namespace {
 
 // The nearest sphere along `ray` by the wide walk with kBytes vectors (the
