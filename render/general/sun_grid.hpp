@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
+#include "core/math/float_step.hpp"
 #include "core/math/vec3.hpp"
 #include "formats/model/scene.hpp"
 #include "render/general/intersect.hpp"
@@ -98,8 +99,7 @@ template <class R>
 float float_up(R v) {
   const float f = static_cast<float>(v);
   if (!(static_cast<R>(f) < v)) return f;
-  // |f| / 2^23 is at least one step of f, and f is within half a step of v.
-  return f + (f < 0.0f ? -f : f) * (1.0f / 8388608.0f) + 1e-30f;
+  return f + float_step_bound(f);
 }
 
 // Heap sort, largest `far` first: no recursion, no room beyond the array.

@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "core/base/arena.hpp"
+#include "core/math/float_step.hpp"
 #include "render/general/bvh.hpp"
 #include "render/general/wide_node.hpp"
 
@@ -19,8 +20,7 @@ inline WideBox wide_box_down(double v) {
   const WideBox f = static_cast<WideBox>(v);
   if (!(static_cast<double>(f) > v)) return f;
   if (f > kMaxFloat) return kMaxFloat;  // rounded up to infinity
-  // |f| / 2^23 is at least one step of f, and f is within half a step of v.
-  return f - (f < WideBox(0) ? -f : f) * WideBox(1.0f / 8388608.0f) - WideBox(1e-30f);
+  return f - float_step_bound(f);
 }
 inline WideBox wide_box_up(double v) { return -wide_box_down(-v); }
 

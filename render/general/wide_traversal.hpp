@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/math/float_step.hpp"
 #include "render/general/bvh.hpp"
 #include "render/general/ray.hpp"
 #include "render/general/simd_dispatch.hpp"
@@ -122,8 +123,7 @@ struct WideRay {
     // inverse_dir (bvh.hpp), lane by lane.
     const Axes i = R(1) / (d == R(0) ? kTinyDirection<R> - Axes{} : d);
     const FloatAxes f = __builtin_convertvector(o, FloatAxes);
-    // |f| / 2^23 is at least one step of f; f is within half a step of o.
-    const FloatAxes step = (f < WideBox(0) ? -f : f) * WideBox(1.0f / 8388608.0f) + WideBox(1e-30f);
+    const FloatAxes step = float_step_bound(f);
     const Signs negative = __builtin_convertvector(i < R(0), Signs);
     // Entry: (bound - origin) * inv as small as may be, so the origin is
     // taken above it for a positive direction and below for a negative.
