@@ -44,6 +44,12 @@ class Cs418Shader : public TracerCore<M, F> {
     return {shade(ray, h, depth, gi_level, weight, rng), true};
   }
 
+  // The colour of a primary ray whose hit `h` (not kNone) was found apart,
+  // by nearest_packet: what trace(ray, 0, 0, 1, 0, rng) gives.
+  Vec3<R> shade_primary(const Ray<R>& ray, const Hit<R>& h, CounterRng& rng) const {
+    return shade(ray, h, 0, 0, R(1), rng);
+  }
+
   // The pixel's bytes from the sum of its `hits` samples' colours (of
   // s.samples): the mean, exposure, sRGB; alpha the share of samples that
   // hit; (0, 0, 0, 0) where none did.

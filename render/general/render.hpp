@@ -17,6 +17,7 @@
 #include "render/general/eastray_shading.hpp"
 #include "render/general/eastray_view.hpp"
 #include "render/general/features.hpp"
+#include "render/general/packet_row.hpp"
 #include "render/general/phong_shading.hpp"
 #include "render/general/tracer.hpp"
 #include "render/general/wide_bvh.hpp"
@@ -88,6 +89,8 @@ class Renderer {
     else if ((features_ & ~kPathBasic) == 0) path_ = kPathBasic;
     else if ((features_ & ~kPathDirect) == 0) path_ = kPathDirect;
     else path_ = kPathFull;
+    if constexpr (kWideBvh)
+      bvh_.wide.packets = wide_walk() && (path_ == kPathBasic || path_ == kPathDirect || path_ == kPathFull);
     return true;
   }
 
@@ -122,6 +125,15 @@ class Renderer {
   void use_16_byte_vectors() {
     if constexpr (kWideBvh) bvh_.wide.avx2 = false;
   }
+  // Each primary ray by itself, as the board traces them: the same image
+  // (tests).
+  void drop_packets() {
+    if constexpr (kWideBvh) bvh_.wide.packets = false;
+  }
+  bool packets() const {
+    if constexpr (kWideBvh) return bvh_.wide.packets;
+    return false;
+  }
   bool wide_walk() const {
     if constexpr (kWideBvh) return bvh_.wide.node_count != 0;
     return false;
@@ -133,6 +145,15 @@ class Renderer {
 
   // One row of RGBA bytes (4 * width). Safe to call from several threads.
   void render_row(int y, uint8_t* rgba) const {
+    if constexpr (kWideBvh) {
+      if (bvh_.wide.packets) {
+        switch (path_) {
+          case kPathBasic: return packet_row<kPathBasic>(y, rgba);
+          case kPathDirect: return packet_row<kPathDirect>(y, rgba);
+          default: return packet_row<kPathFull>(y, rgba);
+        }
+      }
+    }
     switch (path_) {
       case kPathBasic: row<kPathBasic>(y, rgba); break;
       case kPathDirect: row<kPathDirect>(y, rgba); break;
@@ -209,6 +230,14 @@ class Renderer {
       }
       Tracer<M, F>::pixel(s, sum, hits, out + 4 * x);
     }
+  }
+
+  // CS418's rows on the host with the primary rays in packets
+  // (packet_row.hpp).
+  template <uint32_t F>
+  void packet_row(int y, uint8_t* out) const {
+    const Tracer<M, F> tracer(*scene_, bvh_, light_dirs_, min_weight_);  // one per row, as in row()
+    general::packet_row<M, F, kPacketRays>(*scene_, tracer, CameraRays<M>(*scene_), seed_, y, out);
   }
 
   const model::Scene<R>* scene_ = nullptr;

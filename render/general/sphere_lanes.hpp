@@ -54,6 +54,7 @@ template <class R, int kBytes>
 struct SphereRay {
   using V = Lanes<R, kBytes>;
   V ox, oy, oz, dx, dy, dz;
+  SphereRay() = default;  // an array of a packet's rays, set one by one
   [[gnu::always_inline]] explicit SphereRay(const Ray<R>& ray) {
     splat(ox, ray.origin.x);
     splat(oy, ray.origin.y);

@@ -17,6 +17,7 @@
 #include "render/general/solid_intersect.hpp"
 #include "render/general/simd_dispatch.hpp"
 #include "render/general/sphere_lanes.hpp"
+#include "render/general/wide_packet.hpp"
 #include "render/general/wide_traversal.hpp"
 
 namespace minrt::general {
@@ -49,6 +50,35 @@ class TracerCore {
   TracerCore(const model::Scene<R>& scene, const Bvh<R>& bvh, const Vec3<R>* light_dirs, R min_weight,
              const CsgObjects<R>* objects = nullptr)
       : s_(scene), bvh_(bvh), light_dirs_(light_dirs), min_weight_(min_weight), objects_(objects) {}
+
+  // The nearest hit of rays[r] into h[r] for each bit r of `active` (h[r]
+  // as nearest() leaves it), the rays walked through the wide tree as one
+  // packet (wide_packet.hpp) where they share an octant. P: 4 or 8.
+  template <int P>
+  void nearest_packet(const Ray<R>* rays, uint32_t active, R eps, Hit<R>* h) const {
+    if constexpr (kWideBvh) {
+      if (bvh_.node_count != 0 && bvh_.wide.node_count != 0) {
+        if constexpr ((F & kPlanes) != 0) {
+          for (uint32_t b = active; b != 0; b &= b - 1) {
+            const int r = __builtin_ctz(b);
+            for (uint32_t i = 0; i < s_.plane_count; ++i) {
+              const R t = hit_plane<M>(s_.planes[i], rays[r], eps);
+              if (t > eps) h[r].offer(t, HitKind::kPlane, i, s_.planes[i].order);
+            }
+          }
+        }
+        if (active == 0) return;
+#if MINRT_AVX2_DISPATCH
+        if (bvh_.wide.avx2) return nearest_packet_avx2<P>(rays, active, eps, h);
+#endif
+        // 16-byte vectors: four rays at a time.
+        for (int q = 0; q < P; q += 4)
+          if ((active >> q & 15u) != 0) nearest_packet_wide<4, 16, 16, false>(rays + q, active >> q & 15u, eps, h + q);
+        return;
+      }
+    }
+    for (uint32_t b = active; b != 0; b &= b - 1) nearest(rays[__builtin_ctz(b)], eps, h[__builtin_ctz(b)]);
+  }
 
  protected:
   // ------------------------------------------------------------ visibility
@@ -212,7 +242,56 @@ class TracerCore {
     });
   }
 
+  // The packet's walk, the leaves tested ray by ray as nearest_wide does;
+  // rays in several octants are walked one by one.
+  template <int P, int kBoxBytes, int kBytes, bool kAvx>
+  [[gnu::always_inline]] inline void nearest_packet_wide(const Ray<R>* rays, uint32_t active, R eps,
+                                                         Hit<R>* h) const {
+    PacketRay<P> packet;
+    if (!make_packet_ray<P>(rays, active, packet)) {
+      for (uint32_t b = active; b != 0; b &= b - 1) {
+        const int r = __builtin_ctz(b);
 #if MINRT_AVX2_DISPATCH
+        if constexpr (kAvx) {
+          nearest_wide_avx2(rays[r], eps, h[r]);
+          continue;
+        }
+#endif
+        nearest_wide<kBoxBytes, kBytes>(rays[r], eps, h[r]);
+      }
+      return;
+    }
+    const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    SphereRay<R, kBytes> srays[P];
+    for (uint32_t b = active; b != 0; b &= b - 1) srays[__builtin_ctz(b)] = SphereRay<R, kBytes>(rays[__builtin_ctz(b)]);
+    wide_packet_nearest<P, kAvx>(
+        bvh_.wide, packet,  active,
+        [&](int r) __attribute__((always_inline)) { return h[r].kind == HitKind::kNone ? R(3.0e38f) : h[r].t; },
+        [&](uint32_t first, uint32_t count, uint32_t which) __attribute__((always_inline)) {
+          for (; which != 0; which &= which - 1) {
+            const int r = __builtin_ctz(which);
+            Hit<R>& hr = h[r];
+            if (lanes.r2 == nullptr) {
+              leaf_refs<true>(first, count, rays[r], eps, hr);
+              continue;
+            }
+            spheres_in_leaf<M, kBytes>(lanes, first, count, from_memory(srays[r]), eps,
+                                       [&](uint32_t pos, R t) __attribute__((always_inline)) {
+                                         if (hr.kind != HitKind::kNone && !(t <= hr.t)) return;
+                                         const uint32_t i = bvh_.refs[pos];
+                                         hr.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
+                                       });
+            if constexpr ((F & (kTriangles | kSolids)) != 0)
+              if (mixed_) leaf_refs<false>(first, count, rays[r], eps, hr);
+          }
+        });
+  }
+
+#if MINRT_AVX2_DISPATCH
+  template <int P>
+  MINRT_TARGET_AVX2 void nearest_packet_avx2(const Ray<R>* rays, uint32_t active, R eps, Hit<R>* h) const {
+    nearest_packet_wide<P, kAvx2BoxBytes, kAvx2Bytes<R>, true>(rays, active, eps, h);
+  }
   MINRT_TARGET_AVX2 void nearest_wide_avx2(const Ray<R>& ray, R eps, Hit<R>& h) const {
     nearest_wide<kAvx2BoxBytes, kAvx2Bytes<R>>(ray, eps, h);
   }

@@ -68,6 +68,7 @@ struct WideBvh {
   const SunGrid<R>* sun_grids = nullptr;  // by light, for the first sun_grid_count lights
   uint32_t sun_grid_count = 0;
   bool avx2 = false;  // walk with the AVX2 copy (simd_dispatch.hpp)
+  bool packets = false;  // CS418's primary rays in packets (packet_row.hpp)
 };
 
 // What Bvh keeps of the wide tree: the tree on the hosts that build it,
