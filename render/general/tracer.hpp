@@ -195,22 +195,30 @@ class TracerCore {
   // same code compiled for AVX2 (simd_dispatch.hpp).
   template <int kBoxBytes, int kBytes>
   [[gnu::always_inline]] inline void nearest_wide(const Ray<R>& ray, R eps, Hit<R>& h) const {
-    const SphereLanes<R>& lanes = bvh_.wide.spheres;
     const SphereRay<R, kBytes> sray(ray);
     wide_nearest<kBoxBytes>(
         bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
-          if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
-          spheres_in_leaf<M, kBytes>(lanes, first, count, from_memory(sray), eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
-            // The sphere's file order is read only for a tie: a farther hit
-            // leaves its sphere's record untouched (not loaded).
-            if (h.kind != HitKind::kNone && !(t <= h.t)) return;
-            const uint32_t i = bvh_.refs[pos];
-            h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
-          });
-          if constexpr ((F & (kTriangles | kSolids)) != 0)
-            if (mixed_) leaf_refs<false>(first, count, ray, eps, h);
+          nearest_in_leaf<kBytes>(first, count, ray, sray, eps, h);
         });
+  }
+
+  // A wide leaf's references first .. first+count-1 for the nearest hit:
+  // its spheres a vector group at a time, then any other primitives.
+  template <int kBytes>
+  [[gnu::always_inline]] inline void nearest_in_leaf(uint32_t first, uint32_t count, const Ray<R>& ray,
+                                                     const SphereRay<R, kBytes>& sray, R eps, Hit<R>& h) const {
+    const SphereLanes<R>& lanes = bvh_.wide.spheres;
+    if (lanes.r2 == nullptr) return leaf_refs<true>(first, count, ray, eps, h);
+    spheres_in_leaf<M, kBytes>(lanes, first, count, from_memory(sray), eps, [&](uint32_t pos, R t) __attribute__((always_inline)) {
+      // The sphere's file order is read only for a tie: a farther hit
+      // leaves its sphere's record untouched (not loaded).
+      if (h.kind != HitKind::kNone && !(t <= h.t)) return;
+      const uint32_t i = bvh_.refs[pos];
+      h.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
+    });
+    if constexpr ((F & (kTriangles | kSolids)) != 0)
+      if (mixed_) leaf_refs<false>(first, count, ray, eps, h);
   }
 
   template <int kBoxBytes, int kBytes>
@@ -261,28 +269,15 @@ class TracerCore {
       }
       return;
     }
-    const SphereLanes<R>& lanes = bvh_.wide.spheres;
     SphereRay<R, kBytes> srays[P];
     for (uint32_t b = active; b != 0; b &= b - 1) srays[__builtin_ctz(b)] = SphereRay<R, kBytes>(rays[__builtin_ctz(b)]);
     wide_packet_nearest<P, kAvx>(
-        bvh_.wide, packet,  active,
+        bvh_.wide, packet, active,
         [&](int r) __attribute__((always_inline)) { return h[r].kind == HitKind::kNone ? R(3.0e38f) : h[r].t; },
         [&](uint32_t first, uint32_t count, uint32_t which) __attribute__((always_inline)) {
           for (; which != 0; which &= which - 1) {
             const int r = __builtin_ctz(which);
-            Hit<R>& hr = h[r];
-            if (lanes.r2 == nullptr) {
-              leaf_refs<true>(first, count, rays[r], eps, hr);
-              continue;
-            }
-            spheres_in_leaf<M, kBytes>(lanes, first, count, from_memory(srays[r]), eps,
-                                       [&](uint32_t pos, R t) __attribute__((always_inline)) {
-                                         if (hr.kind != HitKind::kNone && !(t <= hr.t)) return;
-                                         const uint32_t i = bvh_.refs[pos];
-                                         hr.offer(t, HitKind::kSphere, i, s_.spheres[i].order);
-                                       });
-            if constexpr ((F & (kTriangles | kSolids)) != 0)
-              if (mixed_) leaf_refs<false>(first, count, rays[r], eps, hr);
+            nearest_in_leaf<kBytes>(first, count, rays[r], srays[r], eps, h[r]);
           }
         });
   }
