@@ -20,6 +20,7 @@
 #include "core/math/math_portable.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "formats/model/scene_builder.hpp"
+#include "cs418_scene_text.hpp"
 #include "render/general/render.hpp"
 
 namespace {
@@ -53,27 +54,8 @@ std::string packet_scene(int spheres, double radius, const char* camera) {
     if (i % 5 == 0) s << "color 1 0 0\nsphere " << at.str() << '\n';
   }
   s << "color 0.8 0.2 0.2\n";
-  for (int i = 0; i < 30; ++i) {
-    const double a = i * 0.2;
-    s << "xyz " << 0.4 * a - 1.5 << " -1.2 " << -2.0 - 0.3 * (i % 3) << '\n';
-    s << "xyz " << 0.4 * a - 1.2 << " 0.4 " << -2.5 - 0.2 * (i % 4) << '\n';
-    s << "xyz " << 0.4 * a - 1.0 << " -0.5 " << -3.0 << '\n';
-    s << "tri -3 -2 -1\n";
-  }
+  test::append_triangle_fan(s, 30, 0.2, 0.4);
   return s.str();
-}
-
-template <class M>
-model::Scene<typename M::real> read_scene(const std::string& text, Arena& arena) {
-  model::SceneBuilder<typename M::real> builder(arena);
-  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
-  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
-  cs418::Header header;
-  model::Scene<typename M::real> scene;
-  Diagnostic d;
-  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
-  REQUIRE(builder.finish(scene));
-  return scene;
 }
 
 // The tracer with its single walk in reach.
@@ -188,7 +170,7 @@ void check_walks(const std::string& text) {
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const auto scene = read_scene<M>(text, arena);
+  const auto scene = test::read_scene<M>(text, arena);
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 7));
   REQUIRE(renderer.wide_walk());
@@ -216,7 +198,7 @@ void check_rows(const std::string& text) {
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const auto scene = read_scene<M>(text, arena);
+  const auto scene = test::read_scene<M>(text, arena);
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 11));
   REQUIRE(renderer.packets());

@@ -18,6 +18,7 @@
 #include "core/math/math_portable.hpp"
 #include "formats/cs418/cs418_reader.hpp"
 #include "formats/model/scene_builder.hpp"
+#include "cs418_scene_text.hpp"
 #include "render/general/render.hpp"
 
 namespace {
@@ -45,13 +46,7 @@ std::string cloud_scene(int spheres, double radius) {
       << radius * (0.5 + next()) << '\n';
   }
   s << "shininess 0.2\ntransparency 0\nroughness 0\ncolor 0.8 0.2 0.2\n";
-  for (int i = 0; i < 40; ++i) {
-    const double a = i * 0.157;
-    s << "xyz " << 0.5 * a - 1.5 << " -1.2 " << -2.0 - 0.3 * (i % 3) << '\n';
-    s << "xyz " << 0.5 * a - 1.2 << " 0.4 " << -2.5 - 0.2 * (i % 4) << '\n';
-    s << "xyz " << 0.5 * a - 1.0 << " -0.5 " << -3.0 << '\n';
-    s << "tri -3 -2 -1\n";
-  }
+  test::append_triangle_fan(s, 40, 0.157, 0.5);
   return s.str();
 }
 
@@ -67,24 +62,11 @@ enum class Walk { kBinary, kWide16, kWidest, kWidestNoSunGrids };
 
 // The scene a CS418 text sets up, laid out in `arena`.
 template <class M>
-model::Scene<typename M::real> read_scene(const std::string& text, Arena& arena) {
-  model::SceneBuilder<typename M::real> builder(arena);
-  MemorySource mem{reinterpret_cast<const uint8_t*>(text.data()), text.size()};
-  cs418::Reader<M> reader(mem.source(), builder, cs418::TextureResolver{}, WarningSink{});
-  cs418::Header header;
-  model::Scene<typename M::real> scene;
-  Diagnostic d;
-  REQUIRE(reader.read(header, scene, d) == cs418::ReadStatus::kOk);
-  REQUIRE(builder.finish(scene));
-  return scene;
-}
-
-template <class M>
 Rendered<M> render(const std::string& text, Walk walk) {
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const auto scene = read_scene<M>(text, arena);
+  const auto scene = test::read_scene<M>(text, arena);
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 7));
   if (walk == Walk::kBinary) renderer.drop_wide_bvh();
@@ -198,7 +180,7 @@ TEST_CASE("sun grids: a cell lists every sphere that blocks its rays", "[general
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const model::Scene<R> scene = read_scene<LibmDouble>(text, arena);
+  const model::Scene<R> scene = test::read_scene<LibmDouble>(text, arena);
   const Vec3<R> dir = normalize<LibmDouble>(Vec3<R>{1, 2, 1});
   general::SunGrid<R> grid;
   REQUIRE(general::build_sun_grid<LibmDouble>(scene, dir, arena, grid));
@@ -245,7 +227,7 @@ void check_sun_grid_levels(const std::string& text, const Vec3<typename M::real>
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const model::Scene<R> scene = read_scene<M>(text, arena);
+  const model::Scene<R> scene = test::read_scene<M>(text, arena);
   const Vec3<R> dir = normalize<M>(sun);
   general::SunGrid<R> grid;
   REQUIRE(general::build_sun_grid<M>(scene, dir, arena, grid));
@@ -303,7 +285,7 @@ TEST_CASE("sun grids: far sides all equal, no ray stops early", "[general][bvh]"
   const size_t bytes = size_t{16} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const model::Scene<R> scene = read_scene<LibmDouble>(text.str(), arena);
+  const model::Scene<R> scene = test::read_scene<LibmDouble>(text.str(), arena);
   const Vec3<R> dir{0, 1, 0};
   general::SunGrid<R> grid;
   REQUIRE(general::build_sun_grid<LibmDouble>(scene, dir, arena, grid));
@@ -367,7 +349,7 @@ TEST_CASE("wide BVH: every octant and axis-parallel rays find the nearest sphere
   const size_t bytes = size_t{64} << 20;
   std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
   Arena arena(storage.get(), bytes);
-  const model::Scene<double> scene = read_scene<LibmDouble>(text, arena);
+  const model::Scene<double> scene = test::read_scene<LibmDouble>(text, arena);
   general::Bvh<double> tree;
   REQUIRE(general::build_bvh<LibmDouble>(scene, arena, tree));
   REQUIRE(general::build_wide_bvh(tree, arena, tree.wide));
