@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstddef>
+#include <memory>
 #include <ostream>
 #include <string>
 
@@ -28,6 +30,17 @@ model::Scene<typename M::real> read_scene(const std::string& text, Arena& arena)
   REQUIRE(builder.finish(scene));
   return scene;
 }
+
+// The scene with the arena it lives in (64 MB: the tests' scenes and
+// their trees fit with room to spare).
+template <class M>
+struct SceneInArena {
+  std::unique_ptr<unsigned char[]> storage;
+  Arena arena;
+  model::Scene<typename M::real> scene;
+  explicit SceneInArena(const std::string& text, size_t bytes = size_t{64} << 20)
+      : storage(new unsigned char[bytes]), arena(storage.get(), bytes), scene(read_scene<M>(text, arena)) {}
+};
 
 // `count` triangles, the i-th moved `spread * i * step` along x.
 inline void append_triangle_fan(std::ostream& s, int count, double step, double spread) {

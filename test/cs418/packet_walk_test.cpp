@@ -167,10 +167,9 @@ void check_packets(const Probe<M, F>& tracer, const model::Scene<typename M::rea
 
 template <class M>
 void check_walks(const std::string& text) {
-  const size_t bytes = size_t{64} << 20;
-  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
-  Arena arena(storage.get(), bytes);
-  const auto scene = test::read_scene<M>(text, arena);
+  test::SceneInArena<M> in(text);
+  Arena& arena = in.arena;
+  const auto& scene = in.scene;
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 7));
   REQUIRE(renderer.wide_walk());
@@ -195,10 +194,9 @@ void check_walks(const std::string& text) {
 // The bytes of the scene's rows with packets and with the plain loop.
 template <class M>
 void check_rows(const std::string& text) {
-  const size_t bytes = size_t{64} << 20;
-  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
-  Arena arena(storage.get(), bytes);
-  const auto scene = test::read_scene<M>(text, arena);
+  test::SceneInArena<M> in(text);
+  Arena& arena = in.arena;
+  const auto& scene = in.scene;
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 11));
   REQUIRE(renderer.packets());

@@ -63,10 +63,9 @@ enum class Walk { kBinary, kWide16, kWidest, kWidestNoSunGrids };
 // The scene a CS418 text sets up, laid out in `arena`.
 template <class M>
 Rendered<M> render(const std::string& text, Walk walk) {
-  const size_t bytes = size_t{64} << 20;
-  std::unique_ptr<unsigned char[]> storage(new unsigned char[bytes]);
-  Arena arena(storage.get(), bytes);
-  const auto scene = test::read_scene<M>(text, arena);
+  test::SceneInArena<M> in(text);
+  Arena& arena = in.arena;
+  const auto& scene = in.scene;
   general::Renderer<M> renderer;
   REQUIRE(renderer.setup(scene, arena, 7));
   if (walk == Walk::kBinary) renderer.drop_wide_bvh();
