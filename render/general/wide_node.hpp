@@ -48,6 +48,13 @@ inline constexpr size_t kWideNodeBytes = 256;
 inline constexpr size_t kCacheLine = 64;
 static_assert(sizeof(WideNode) == kWideNodeBytes, "whole cache lines");
 
+// Where in a node the eight children's low (high: true) bounds along `axis`
+// start, in bytes: the walks load a ray's near and far bounds from there.
+inline constexpr uint32_t wide_bound_at(int axis, bool high) {
+  return static_cast<uint32_t>((high ? offsetof(WideNode, hi) : offsetof(WideNode, lo)) +
+                               sizeof(WideBox) * kWideArity * static_cast<size_t>(axis));
+}
+
 // The spheres' centres and squared radii by position in the BVH's reference
 // array (sphere_lanes.hpp), so that a leaf's spheres load as vectors; other
 // primitives' positions hold a negative squared radius, which no ray meets.

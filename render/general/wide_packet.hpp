@@ -12,10 +12,8 @@
 // the packet's); make_packet_ray says when they do not.
 #pragma once
 
-#include <stddef.h>
 #include <stdint.h>
 
-#include "core/math/float_step.hpp"
 #include "render/general/bvh.hpp"
 #include "render/general/ray.hpp"
 #include "render/general/simd_dispatch.hpp"
@@ -108,12 +106,11 @@ struct PacketRay {
 
 // Fills `out` from rays[r] for each bit r of `active` (the other lanes
 // repeat an active ray: their limit keeps them out of every box), with
-// WideRay's arithmetic lane by lane. False when the directions are not all
-// in one octant.
+// WideRay's arithmetic (slab_lanes) lane by lane. False when the
+// directions are not all in one octant.
 template <int P, class R>
 [[gnu::always_inline]] inline bool make_packet_ray(const Ray<R>* rays, uint32_t active, PacketRay<P>& out) {
   using Reals = Lanes<R, P * static_cast<int>(sizeof(R))>;
-  using V = PacketLanes<P>;
   using I = PacketMask<P>;
   const uint32_t lead = static_cast<uint32_t>(__builtin_ctz(active));
   for (int a = 0; a < 3; ++a) {
@@ -123,22 +120,12 @@ template <int P, class R>
       o[r] = a == 0 ? ray.origin.x : a == 1 ? ray.origin.y : ray.origin.z;
       d[r] = a == 0 ? ray.dir.x : a == 1 ? ray.dir.y : ray.dir.z;
     }
-    const Reals i = R(1) / (d == R(0) ? kTinyDirection<R> - Reals{} : d);
-    const V f = __builtin_convertvector(o, V);
-    V step;
-    for (int r = 0; r < P; ++r) step[r] = float_step_bound(f[r]);  // (a 32-byte vector may not pass through a call)
-    const I negative = __builtin_convertvector(i < R(0), I);
-    const V above = f + step, below = f - step;
-    out.near_origin[a] = negative != 0 ? below : above;
-    out.far_origin[a] = negative != 0 ? above : below;
-    const V inv = __builtin_convertvector(i, V);
-    out.near_inv[a] = inv * kEntryShrink;
-    out.far_inv[a] = inv * kExitGrow;
+    I negative;
+    slab_lanes(o, d, out.near_origin[a], out.far_origin[a], out.near_inv[a], out.far_inv[a], negative);
     uint32_t neg = 0;
     for (int r = 0; r < P; ++r) neg |= (negative[r] != 0 ? 1u : 0u) << r;
     if (neg != 0 && neg != (1u << P) - 1u) return false;
-    const uint32_t lo = static_cast<uint32_t>(offsetof(WideNode, lo) + sizeof(WideBox) * kWideArity * a);
-    const uint32_t hi = static_cast<uint32_t>(offsetof(WideNode, hi) + sizeof(WideBox) * kWideArity * a);
+    const uint32_t lo = wide_bound_at(a, false), hi = wide_bound_at(a, true);
     out.near_at[a] = neg != 0 ? hi : lo;
     out.far_at[a] = neg != 0 ? lo : hi;
   }

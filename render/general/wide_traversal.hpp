@@ -93,6 +93,35 @@ template <class T>
   return *p;
 }
 
+// The box test's floats for lanes of origins `o` and directions `d` in the
+// tracer's precision (the three axes of one ray, or one axis of a packet's
+// rays): the origin rounded toward each lane's near bound for entries and
+// away from it for exits, 1/d (kTinyDirection for 0, as inverse_dir in
+// bvh.hpp) scaled by the margins, and which lanes point down their axis.
+template <class F, class I, class Reals>
+[[gnu::always_inline]] inline void slab_lanes(const Reals& o, const Reals& d, F& near_origin, F& far_origin,
+                                              F& near_inv, F& far_inv, I& negative) {
+  using R = __typeof__(o[0] + 0);
+  const Reals i = R(1) / (d == R(0) ? kTinyDirection<R> - Reals{} : d);
+  const F f = __builtin_convertvector(o, F);
+  F step;
+  if constexpr (sizeof(F) > 16) {
+    // (a 32-byte vector may not pass through a call)
+    for (int k = 0; k < static_cast<int>(sizeof(F) / sizeof(WideBox)); ++k) step[k] = float_step_bound(f[k]);
+  } else {
+    step = float_step_bound(f);
+  }
+  negative = __builtin_convertvector(i < R(0), I);
+  // Entry: (bound - origin) * inv as small as may be, so the origin is
+  // taken above it for a positive direction and below for a negative.
+  const F above = f + step, below = f - step;
+  near_origin = negative != 0 ? below : above;
+  far_origin = negative != 0 ? above : below;
+  const F inv = __builtin_convertvector(i, F);
+  near_inv = inv * kEntryShrink;
+  far_inv = inv * kExitGrow;
+}
+
 // A ray as the box test wants it, in floats: for each axis, which bound it
 // meets first (by the sign of the direction), 1/d in every lane scaled by
 // the entry and exit margins, and the origin rounded toward the near bound
@@ -121,24 +150,16 @@ struct WideRay {
     const Axes o = {ray.origin.x, ray.origin.y, ray.origin.z, R(0)};
     const Axes d = {ray.dir.x, ray.dir.y, ray.dir.z, R(1)};
     // inverse_dir (bvh.hpp), lane by lane.
-    const Axes i = R(1) / (d == R(0) ? kTinyDirection<R> - Axes{} : d);
-    const FloatAxes f = __builtin_convertvector(o, FloatAxes);
-    const FloatAxes step = float_step_bound(f);
-    const Signs negative = __builtin_convertvector(i < R(0), Signs);
-    // Entry: (bound - origin) * inv as small as may be, so the origin is
-    // taken above it for a positive direction and below for a negative.
-    const FloatAxes above = f + step, below = f - step;
-    const FloatAxes near = negative != 0 ? below : above, far = negative != 0 ? above : below;
-    const FloatAxes inv = __builtin_convertvector(i, FloatAxes);
-    const FloatAxes near_i = inv * kEntryShrink, far_i = inv * kExitGrow;
+    FloatAxes near, far, near_i, far_i;
+    Signs negative;
+    slab_lanes(o, d, near, far, near_i, far_i, negative);
     const uint32_t signs = true_lanes<WideBox, 16>(negative);
     for (int a = 0; a < 3; ++a) {
       splat(near_origin[a], near[a]);
       splat(far_origin[a], far[a]);
       splat(near_inv[a], near_i[a]);
       splat(far_inv[a], far_i[a]);
-      const uint32_t lo = static_cast<uint32_t>(offsetof(WideNode, lo) + sizeof(WideBox) * kWideArity * a);
-      const uint32_t hi = static_cast<uint32_t>(offsetof(WideNode, hi) + sizeof(WideBox) * kWideArity * a);
+      const uint32_t lo = wide_bound_at(a, false), hi = wide_bound_at(a, true);
       const bool neg = (signs >> a & 1u) != 0;
       near_at[a] = neg ? hi : lo;
       far_at[a] = neg ? lo : hi;
@@ -172,10 +193,8 @@ template <int kBytes, int kOctant = -1>
         near_at = r.near_at[a];
         far_at = r.far_at[a];
       } else {
-        const uint32_t lo = static_cast<uint32_t>(offsetof(WideNode, lo) + sizeof(WideBox) * kWideArity * a);
-        const uint32_t hi = static_cast<uint32_t>(offsetof(WideNode, hi) + sizeof(WideBox) * kWideArity * a);
-        near_at = (kOctant >> a & 1) != 0 ? hi : lo;
-        far_at = (kOctant >> a & 1) != 0 ? lo : hi;
+        near_at = wide_bound_at(a, (kOctant >> a & 1) != 0);
+        far_at = wide_bound_at(a, (kOctant >> a & 1) == 0);
       }
       __builtin_memcpy(&near, base + near_at + sizeof(WideBox) * g, sizeof near);
       __builtin_memcpy(&far, base + far_at + sizeof(WideBox) * g, sizeof far);
