@@ -120,7 +120,7 @@ class Cs418Shader : public TracerCore<M, F> {
     for (uint32_t i = 0; i < s_.light_count; ++i) {
       const model::Light<R>& light = s_.lights[i];
       Vec3<R> dir, energy;
-      R limit = R(3.0e38f);
+      R limit = kFarDistance<R>;
       if constexpr ((F & kBulbs) != 0) {
         if (light.kind == model::LightKind::kBulb) {
           const Vec3<R> v = light.vector - p;

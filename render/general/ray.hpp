@@ -13,6 +13,11 @@ struct Ray {
   Vec3<R> dir;  // unit length
 };
 
+// Farther than anything in a scene, yet finite in float too: the distance
+// a walk looks up to before it has a hit, or a sun's shadow ray always.
+template <class R>
+inline constexpr R kFarDistance = static_cast<R>(3.0e38f);
+
 // What a hit is on: an index into the scene's array of that kind.
 enum class HitKind : uint8_t { kNone, kSphere, kPlane, kTriangle, kSolid };
 
@@ -29,6 +34,8 @@ struct Hit {
   bool closer(R t2, uint32_t order2) const {
     return kind == HitKind::kNone || t2 < t || (t2 == t && order2 > order);
   }
+  // How far a walk still looks for a closer hit.
+  R limit() const { return kind == HitKind::kNone ? kFarDistance<R> : t; }
   // Takes the candidate if it is closer (by the rule above); says whether.
   bool offer(R t2, HitKind kind2, uint32_t index2, uint32_t order2) {
     if (!closer(t2, order2)) return false;

@@ -104,19 +104,18 @@ class TracerCore {
     // The order of visits never changes the result: hits are compared by
     // (distance, file order), whatever order they are found in.
     const Vec3<R> inv = inverse_dir(ray.dir);
-    auto limit = [&] { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; };
     struct Entry {
       uint32_t node;
       R t;
     };
     Entry stack[kBvhStack];
     int top = 0;
-    if (box_entry(bvh_.nodes[0].box, ray.origin, inv, limit()) < R(0)) return;
+    if (box_entry(bvh_.nodes[0].box, ray.origin, inv, h.limit()) < R(0)) return;
     uint32_t current = 0;
     for (;;) {
       const BvhNode<R>& node = bvh_.nodes[current];
       if (node.count == 0) {
-        const R lim = limit();
+        const R lim = h.limit();
         const R ta = box_entry(bvh_.nodes[node.index].box, ray.origin, inv, lim);
         const R tb = box_entry(bvh_.nodes[node.index + 1].box, ray.origin, inv, lim);
         if (ta >= R(0) && tb >= R(0)) {
@@ -140,7 +139,7 @@ class TracerCore {
       bool found = false;
       while (top > 0) {
         const Entry e = stack[--top];
-        if (e.t <= limit()) {
+        if (e.t <= h.limit()) {
           current = e.node;
           found = true;
           break;
@@ -197,7 +196,7 @@ class TracerCore {
   [[gnu::always_inline]] inline void nearest_wide(const Ray<R>& ray, R eps, Hit<R>& h) const {
     const SphereRay<R, kBytes> sray(ray);
     wide_nearest<kBoxBytes>(
-        bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.kind == HitKind::kNone ? R(3.0e38f) : h.t; },
+        bvh_.wide, ray, [&]() __attribute__((always_inline)) { return h.limit(); },
         [&](uint32_t first, uint32_t count) __attribute__((always_inline)) {
           nearest_in_leaf<kBytes>(first, count, ray, sray, eps, h);
         });
@@ -273,7 +272,7 @@ class TracerCore {
     for (uint32_t b = active; b != 0; b &= b - 1) srays[__builtin_ctz(b)] = SphereRay<R, kBytes>(rays[__builtin_ctz(b)]);
     wide_packet_nearest<P, kAvx>(
         bvh_.wide, packet, active,
-        [&](int r) __attribute__((always_inline)) { return h[r].kind == HitKind::kNone ? R(3.0e38f) : h[r].t; },
+        [&](int r) __attribute__((always_inline)) { return h[r].limit(); },
         [&](uint32_t first, uint32_t count, uint32_t which) __attribute__((always_inline)) {
           for (; which != 0; which &= which - 1) {
             const int r = __builtin_ctz(which);
