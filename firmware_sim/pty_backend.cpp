@@ -30,7 +30,7 @@ void make_raw(const std::string& slave) {
 
 }  // namespace
 
-int open_uart_pty() {
+int open_uart_pty(const char* who) {
   int master = ::posix_openpt(O_RDWR | O_NOCTTY);
   if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
     throw std::runtime_error(std::string("cannot create pty: ") + std::strerror(errno));
@@ -38,7 +38,7 @@ int open_uart_pty() {
   if (!name) throw std::runtime_error("cannot name pty");
   const std::string slave = name;
   make_raw(slave);
-  std::fprintf(stderr, "firmware-sim: uart on %s\n", slave.c_str());
+  std::fprintf(stderr, "%s: uart on %s\n", who, slave.c_str());
   std::fflush(stderr);
   // While no process has the slave open, the master reports POLLHUP.
   for (;;) {

@@ -5,10 +5,11 @@
 
 namespace fwsim {
 
-// Creates a raw-mode pty, prints "firmware-sim: uart on /dev/pts/N" on
-// stderr, and blocks until a host opens the slave. Returns the master fd;
-// throws std::runtime_error on failure.
-int open_uart_pty();
+// Creates a raw-mode pty, prints "WHO: uart on /dev/pts/N" on stderr
+// (WHO = the program, firmware-sim by default), and blocks until a host
+// opens the slave. Returns the master fd; throws std::runtime_error on
+// failure.
+int open_uart_pty(const char* who = "firmware-sim");
 
 // Waits (at most `timeout_ms`) until the host has read everything written to
 // the pty, so closing the master does not discard the firmware's last output.

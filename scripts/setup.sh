@@ -27,6 +27,7 @@ packages=(
   qemu-user qemu-system-misc gcc-riscv64-unknown-elf
   qemu-system-arm           # the Cortex-M port's test (runtime/cortex-m)
   valgrind
+  verilator                 # the RTL harness (rtl/)
   strace                    # the minrt --sync test counts fsync calls
   time                      # GNU time: CPU seconds in bench/host/contest_speed.sh
   python3 python3-matplotlib
