@@ -199,7 +199,12 @@ bool Lockstep::check(const Retirement& dut, uint64_t cycle) {
     Retirement exp;
     exp.pc = ref_pc;
     if (ref_.bus().in_code(ref_pc, 4)) std::memcpy(&exp.insn, ref_.bus().code_at(ref_pc), 4);
-    diverge(dut, exp, cycle, "pc", hex(ref_pc), hex(dut.pc));
+    std::string what = "pc";
+    if (!past_.empty()) {
+      const Past& prev = past_[(next_ + past_.size() - 1) % past_.size()];
+      what += " after " + line(prev.r);
+    }
+    diverge(dut, exp, cycle, what, hex(ref_pc), hex(dut.pc));
     return false;
   }
   StopInfo stop;

@@ -48,6 +48,12 @@ const std::vector<Group>& option_groups() {
             "$MINRT_FIRMWARE_ELF, else the installed firmware\n"
             "(PREFIX/share/minrt/firmware), else the build's)",
             names_firmware},
+           {"rtl", 0, "ELF",
+            "run the firmware on a CPU's RTL in the Verilator\n"
+            "harness minrt-rtl (docs/rtl.md; ELF defaults to the\n"
+            "build's minrt-rtl-reference.elf, the harness to\n"
+            "$MINRT_RTL_HARNESS, else the build's)",
+            names_firmware},
            {"sim-ram-size", 0, "NM",
             "RAM of the simulated board (default 4M, the\n"
             "board's); for CS418 scenes whose textures do not fit\n"
@@ -143,6 +149,9 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
   else if (name == "port") o.port = v;
   else if (name == "sim") {
     o.sim = true;
+    o.sim_elf = v;
+  } else if (name == "rtl") {
+    o.sim = o.rtl = true;  // the harness takes firmware-sim's command line
     o.sim_elf = v;
   } else if (name == "board") {
     o.sim_board = v;

@@ -17,6 +17,7 @@ struct Options {
   std::string port;          // --port DEV or usb:VID:PID[:SERIAL]
   bool sim = false;          // --sim: firmware-sim on a pty (one of --port and --sim is required)
   std::string sim_elf;       // --sim ELF
+  bool rtl = false;          // --rtl: the RTL harness (minrt-rtl) in firmware-sim's place
   std::string sim_board;     // --board FILE: the simulated board's description
   std::string sim_binary;    // --sim-binary
   std::uint64_t sim_ram_bytes = 0;  // --sim-ram-size (0: the board's 4 MiB)

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -173,6 +174,13 @@ SimConfig simulator_config(const Options& o) {
   cfg.simulator = o.sim_binary.empty() ? default_simulator() : o.sim_binary;
   cfg.board = o.sim_board;
   cfg.firmware = o.sim_elf.empty() ? default_firmware() : o.sim_elf;
+  if (o.rtl) {
+    // The RTL harness: the environment's, else the build's; its firmware
+    // the build's rtl-reference image (docs/rtl.md).
+    const char* env = std::getenv("MINRT_RTL_HARNESS");
+    if (o.sim_binary.empty()) cfg.simulator = env != nullptr && *env != 0 ? env : MINRT_RTL_HARNESS_DEFAULT;
+    if (o.sim_elf.empty()) cfg.firmware = MINRT_RTL_FIRMWARE_DEFAULT;
+  }
   cfg.baud = o.baud_given ? o.port_settings.baud : 0;
   cfg.firmware_args = {"--size", std::to_string(o.spec.width) + "x" + std::to_string(o.spec.height), "--format",
                        o.spec.kind == PpmKind::kP3 ? "p3" : "p6"};
@@ -196,8 +204,11 @@ int find_device(const Options& o, Link& link) {
   link.device = o.port;
   if (o.port.rfind("usb:", 0) == 0 && !resolve_usb_port(o.port, "/sys", link.device, err)) return fail(kExitLink, err);
   if (o.sim) {
+    const SimConfig cfg = simulator_config(o);
+    if (o.rtl && ::access(cfg.simulator.c_str(), X_OK) != 0)
+      return fail(kExitLink, "the RTL harness " + cfg.simulator + " is not built (it needs Verilator, docs/rtl.md)");
     link.sim = std::make_unique<SimLauncher>();
-    if (!link.sim->start(simulator_config(o), err)) return fail(kExitLink, err);
+    if (!link.sim->start(cfg, err)) return fail(kExitLink, err);
     link.device = link.sim->pty_path();
   }
   return kExitOk;
@@ -351,7 +362,7 @@ void print_summary(const Options& o, const Job& job, const Link& link, const Tra
   char line[400];
   int n = std::snprintf(line, sizeof line, "host-send: %s: %zu bytes; received %llu in %.3f s, %.1f kB/s%s", shown.c_str(),
                         file_bytes, static_cast<unsigned long long>(r.received), r.seconds, rate / 1000.0,
-                        o.sim ? " from the simulated board (firmware-sim)" : "");
+                        o.rtl ? " from the RTL harness (minrt-rtl)" : o.sim ? " from the simulated board (firmware-sim)" : "");
   if ((link.paced || (o.sim && o.baud_given)) && n > 0 && n < static_cast<int>(sizeof line))  // the simulator paces at --baud too
     n += std::snprintf(line + n, sizeof line - n, ", %.1f%% of the 8N1 limit at %u baud",
                        rate * 1000.0 / o.port_settings.baud, static_cast<unsigned>(o.port_settings.baud));

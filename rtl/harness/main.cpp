@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -357,6 +358,7 @@ int main(int argc, char** argv) {
   cycle = 0;
 
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   uint64_t retired = 0;
   uint32_t shadow[32] = {};
   for (unsigned r = 0; r < 32; ++r) shadow[r] = boot.x[r];
@@ -470,6 +472,7 @@ int main(int argc, char** argv) {
     tock();
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   uart.flush();
   if (line) line->flush();
   if (fst) fst->close();
@@ -480,9 +483,10 @@ int main(int argc, char** argv) {
   if (!o.quiet) {
     const double cpi = retired ? static_cast<double>(cycle) / static_cast<double>(retired) : 0;
     std::fprintf(stderr,
-                 "minrt-rtl: %llu cycles, %llu instructions retired, CPI %.3f, %.2f s, %.2f MHz simulated",
-                 static_cast<unsigned long long>(cycle), static_cast<unsigned long long>(retired), cpi, secs,
-                 secs > 0 ? static_cast<double>(cycle) / secs / 1e6 : 0.0);
+                 "minrt-rtl: %llu cycles, %llu instructions retired, CPI %.3f, %.2f s wall, %.2f s CPU, "
+                 "%.2f MHz simulated",
+                 static_cast<unsigned long long>(cycle), static_cast<unsigned long long>(retired), cpi, secs, cpu,
+                 cpu > 0 ? static_cast<double>(cycle) / cpu / 1e6 : 0.0);
     if (lockstep)
       std::fprintf(stderr, ", lock-step: %llu checked, %llu float results adopted",
                    static_cast<unsigned long long>(lockstep->checked()),
