@@ -443,7 +443,10 @@ int main(int argc, char** argv) {
         top->dmem_ready = 1;
       }
     }
-    if (line) top->ser_rx = line->rx_bit(cycle);
+    if (line) {
+      if (top->uart_touched) line->open();
+      top->ser_rx = line->rx_bit(cycle);
+    }
     tick();
     if (line) line->tx_sample(top->ser_tx, cycle);
     if (top->rvfi_valid) {
@@ -459,6 +462,7 @@ int main(int argc, char** argv) {
       r.mem_rdata = top->rvfi_mem_rdata;
       r.mem_wdata = top->rvfi_mem_wdata;
       if (r.rd) shadow[r.rd] = r.rd_value;
+      if (line && r.mem_rmask && r.mem_addr - map.uart_base < uart_size) line->open();
       if (r.insn == 0x00000073 && map.halt == HaltKind::Ecall && shadow[17] == kEcallExit)
         stop(static_cast<int>(shadow[10] & 0xff), "");
       if (stub_retire) --stub_retire;
@@ -492,6 +496,8 @@ int main(int argc, char** argv) {
                    static_cast<unsigned long long>(lockstep->checked()),
                    static_cast<unsigned long long>(lockstep->fp_adopted()));
     if (line && top->ser_overruns) std::fprintf(stderr, ", %u bytes lost to UART overrun", top->ser_overruns);
+    if (line && line->framing_errors())
+      std::fprintf(stderr, ", %llu framing errors", static_cast<unsigned long long>(line->framing_errors()));
     std::fputc('\n', stderr);
   }
   return status;

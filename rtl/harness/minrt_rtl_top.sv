@@ -40,7 +40,8 @@ module minrt_rtl_top (
     // the serial line (modes 1 and 2)
     output logic        ser_tx,
     input  logic        ser_rx,
-    output logic [31:0] ser_overruns
+    output logic [31:0] ser_overruns,
+    output logic        uart_touched   // the CPU has read the harness UART (mode 1)
 );
   logic        cpu_dvalid, cpu_dready;
   logic [31:0] cpu_drdata, uart_rdata;
@@ -62,6 +63,13 @@ module minrt_rtl_top (
       .tx_ready_mask(uart_tx_ready_mask), .rx_ready_mask(uart_rx_ready_mask),
       .sel(uart_hit), .we(dmem_we), .offset(dmem_addr - uart_base), .wdata(dmem_wdata),
       .rdata(uart_rdata), .overruns(ser_overruns), .tx(uart_tx_line), .rx(ser_rx));
+
+  // The host starts sending once the firmware is up and polls its UART, as
+  // a host does with a board that was reset long before.
+  always_ff @(posedge clk) begin
+    if (rst) uart_touched <= 1'b0;
+    else if (uart_hit && !dmem_we) uart_touched <= 1'b1;
+  end
 
   assign dmem_valid = cpu_dvalid && !uart_hit;
   assign cpu_dready = uart_hit ? 1'b1 : dmem_ready;

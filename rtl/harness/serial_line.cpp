@@ -27,6 +27,7 @@ bool SerialLine::rx_bit(uint64_t cycle) {
   if (sending_ && cycle - frame_start_ >= 10ull * cpb_) sending_ = false;
   if (!sending_) {
     uint8_t b;
+    if (!open_) return true;
     if (!next_input(b, cycle)) return true;  // idle line is high
     frame_ = static_cast<uint16_t>(1u << 9 | b << 1);  // stop 1, data, start 0
     frame_start_ = cycle;

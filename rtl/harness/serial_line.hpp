@@ -16,8 +16,11 @@ class SerialLine {
   ~SerialLine() { flush(); }
   unsigned cycles_per_bit() const { return cpb_; }
 
-  // The level of the CPU's receive pin during `cycle`.
+  // The level of the CPU's receive pin during `cycle`. Nothing is sent
+  // before open() (the firmware has not looked at its UART yet).
   bool rx_bit(uint64_t cycle);
+  void open() { open_ = true; }
+  bool is_open() const { return open_; }
   // The CPU's transmit pin during `cycle`.
   void tx_sample(bool level, uint64_t cycle);
   void flush();
@@ -29,6 +32,7 @@ class SerialLine {
   int in_fd_, out_fd_;
   unsigned cpb_;
   // receive pin (host -> CPU)
+  bool open_ = false;
   bool sending_ = false;
   uint64_t frame_start_ = 0;
   uint16_t frame_ = 0;  // start, data, stop: bit 0 first

@@ -21,6 +21,8 @@ ALLOWED = {
     "protocol": {"core/base"},
     "runtime": {"core", "formats", "render", "protocol"},
     "firmware_sim": {"posix"},
+    # the Verilator harness: firmware-sim's board model and lock-step checker
+    "rtl": {"firmware_sim", "posix"},
     "host": {"core", "formats", "render", "protocol", "posix"},
     # OS helpers every host tool shares (output files); nothing of the project.
     "posix": set(),
