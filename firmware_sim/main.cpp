@@ -267,6 +267,7 @@ int run(int argc, char** argv) {
   } else if (stop.cause != StopCause::Exit) {
     uint32_t word = 0;
     if (const uint8_t* p = m.bus().host_at(stop.pc, 4)) std::memcpy(&word, p, 4);
+    else if (const uint8_t* p2 = m.bus().host_at(stop.pc, 2)) std::memcpy(&word, p2, 2);
     std::fprintf(stderr, "firmware-sim: error: %s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
   }
   if (profiler) {
