@@ -252,6 +252,11 @@ int run(int argc, char** argv) {
   if (trace) std::fclose(trace);
   if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
   if (!timed) m.hart().cycles = m.hart().instret;
+  if (uart.bytes_dropped())
+    std::fprintf(stderr,
+                 "firmware-sim: warning: %llu bytes dropped while the UART was off (the board file's uart_enable "
+                 "condition; the firmware switches it on with uart_init)\n",
+                 static_cast<unsigned long long>(uart.bytes_dropped()));
 
   if (interrupted) {
     // What ran so far, and no profile of a run cut short.
