@@ -172,8 +172,8 @@ uint64_t predict_branch(CycleModel* model, uint32_t pc, uint32_t taken, uint32_t
 
 }  // namespace
 
-BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing)
-    : count_(entry_count), code_base_(code_base), ram_size_(ram_size) {
+BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing, unsigned shift)
+    : count_(entry_count), code_base_(code_base), ram_size_(ram_size), shift_(shift) {
   if (timing) timing_ = *timing;
   // Table offsets are 32-bit displacements (entry * 8).
   if (entry_count >= (1u << 28)) return;
@@ -354,7 +354,8 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
   };
 
   uint32_t n = 0;  // instructions translated
-  for (uint32_t i = index;; ++i, ++n) {
+  uint32_t next = index;  // the entry after the current instruction
+  for (uint32_t i = index;; i = next, ++n) {
     if (n == kMaxBlockInsns || i >= count_) {
       if (n == 0) return kNoBlock;
       chain(i, n, cyc, kFallThrough);
@@ -362,7 +363,9 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
     }
     const Entry& e = entries[i];
     const Op op = base_op(static_cast<Op>(e.op));
-    const uint32_t pc = code_base_ + i * 4;
+    // With C, a 32-bit instruction's second half is a SKIP entry.
+    next = i + (shift_ == 1 && entries[i + 1].op == static_cast<uint8_t>(Op::SKIP) ? 2 : 1);
+    const uint32_t pc = code_base_ + (i << shift_);
     const bool rne = (e.imm & kRneOrDyn) != 0;
     const int64_t cost = timed ? int64_t{timing_.slots[i].cost} : 0;  // with the stall after its predecessor
     bool ends = false;  // a control transfer closed the block
@@ -471,17 +474,17 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
         const int64_t taken = timed ? int64_t{timing_.slots[i].taken} : 0;
         chain(i + static_cast<uint32_t>(e.imm), n + 1, cyc + cost + taken, i);
         Emitter::patch(skip, a.here());
-        chain(i + 1, n + 1, cyc + cost, kFallThrough);
+        chain(next, n + 1, cyc + cost, kFallThrough);
         ends = true;
         break;
       }
       case Op::JAL: {
-        a.store_imm(xoff(e.rd), pc + 4);
+        a.store_imm(xoff(e.rd), pc + e.rs2);
         const uint32_t to = i + static_cast<uint32_t>(e.imm);
         if (timed && timing_.profile && e.rd == 1) {
           settle(n + 1, cyc + cost);
-          a.b(0xbe), a.d(code_base_ + to * 4);  // mov esi, target
-          profile_hook(true, pc + 4);
+          a.b(0xbe), a.d(code_base_ + (to << shift_));  // mov esi, target
+          profile_hook(true, pc + e.rs2);
           chain(to, 0, 0, i);
         } else {
           chain(to, n + 1, cyc + cost, i);
@@ -493,23 +496,23 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
         a.load(RAX, xoff(e.rs1));
         a.alu_imm(0, RAX, static_cast<uint32_t>(e.imm));
         a.alu_imm(4, RAX, ~1u);
-        a.b(0xa8), a.b(3);  // test al, 3
+        a.b(0xa8), a.b(static_cast<uint8_t>((1u << shift_) - 1));  // test al, fetch alignment
         side(NE, i, n);
         a.op_rr(0, false, {0x89}, RAX, RCX);  // mov ecx, eax
         a.alu_imm(5, RCX, code_base_);
-        a.alu_imm(7, RCX, count_ * 4);
+        a.alu_imm(7, RCX, count_ << shift_);
         side(AE, i, n);
-        a.store_imm(xoff(e.rd), pc + 4);
-        a.shift_imm(5, RCX, 2);  // ecx = target entry
+        a.store_imm(xoff(e.rd), pc + e.rs2);
+        a.shift_imm(5, RCX, shift_);  // ecx = target entry
         settle(n + 1, cyc + cost);
         if (timed) {
           a.op_mem(0, false, {0x89}, RCX, RBX, kStateRunStart);  // run_start = ecx
           const bool is_call = e.rd == 1, is_ret = e.rd == kSinkReg && e.rs1 == 1;
           if (timing_.profile && (is_call || is_ret)) {
             a.op_rr(0, false, {0x89}, RCX, RSI);  // mov esi, ecx
-            a.shift_imm(4, RSI, 2);               // shl esi, 2
+            a.shift_imm(4, RSI, shift_);          // shl esi, shift
             a.alu_imm(0, RSI, code_base_);        // esi = target
-            profile_hook(is_call, pc + 4);
+            profile_hook(is_call, pc + e.rs2);
             a.op_mem(0, false, {0x8b}, RCX, RBX, kStateRunStart);  // ecx = target entry again
           }
           enter_run(i, 0, true);
@@ -624,8 +627,8 @@ uintptr_t BlockJit::compile(const Entry* entries, uint32_t index) {
 
 #else  // no code generator on this host
 
-BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing*)
-    : count_(entry_count), code_base_(code_base), ram_size_(ram_size) {}
+BlockJit::BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing*, unsigned shift)
+    : count_(entry_count), code_base_(code_base), ram_size_(ram_size), shift_(shift) {}
 BlockJit::~BlockJit() = default;
 void BlockJit::flush() {}
 uintptr_t BlockJit::compile(const Entry*, uint32_t) { return kNoBlock; }

@@ -66,8 +66,10 @@ class BlockJit {
     bool operator==(const Timing&) const = default;
   };
 
-  // Without `timing`, plain blocks; with it, timed ones.
-  BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing = nullptr);
+  // Without `timing`, plain blocks; with it, timed ones. `shift`: log2 of
+  // the code bytes per entry (DecodeCache::shift()).
+  BlockJit(uint32_t entry_count, uint32_t code_base, uint32_t ram_size, const Timing* timing = nullptr,
+           unsigned shift = 2);
   ~BlockJit();
   BlockJit(const BlockJit&) = delete;
   BlockJit& operator=(const BlockJit&) = delete;
@@ -103,6 +105,7 @@ class BlockJit {
   uint32_t count_;
   uint32_t code_base_;
   uint32_t ram_size_;
+  unsigned shift_;
   uintptr_t* table_ = nullptr;
   uint8_t* code_ = nullptr;
   size_t code_size_ = 0;

@@ -44,6 +44,24 @@ void parse_halt(const std::string& v, MemoryMap& map) {
   }
 }
 
+// OFFSET:VALUE pairs separated by spaces or commas.
+void parse_uart_init(const std::string& v, std::vector<std::pair<uint32_t, uint32_t>>& out) {
+  std::string item;
+  std::istringstream in(v);
+  while (std::getline(in, item, ',')) {
+    std::istringstream words(item);
+    std::string pair;
+    while (words >> pair) {
+      const size_t colon = pair.find(':');
+      if (colon == std::string::npos) throw BadLine("uart_init needs OFFSET:VALUE pairs, got '" + pair + "'");
+      const uint32_t offset = number("uart_init offset", pair.substr(0, colon));
+      if (offset >= 0x100) throw BadLine("uart_init offset " + pair.substr(0, colon) + " is not below 0x100");
+      out.emplace_back(offset, number("uart_init value", pair.substr(colon + 1)));
+    }
+  }
+  if (out.empty()) throw BadLine("uart_init has no OFFSET:VALUE pair");
+}
+
 }  // namespace
 
 Board parse_board_file(const std::string& text, const std::string& origin) {
@@ -94,6 +112,17 @@ Board parse_board_file(const std::string& text, const std::string& origin) {
       else if (key == "uart_width") {
         m.uart.width = number(key, v);
         if (m.uart.width != 1 && m.uart.width != 4) throw BadLine("uart_width must be 1 or 4, got '" + v + "'");
+      } else if (key == "uart_tx_idle") {
+        m.uart.tx_idle = number(key, v);
+      } else if (key == "uart_init") {
+        parse_uart_init(v, b.uart_init);
+      } else if (key == "uart_enable") {
+        const size_t colon = v.find(':');
+        if (colon == std::string::npos) throw BadLine("uart_enable needs OFFSET:MASK, got '" + v + "'");
+        m.uart.enable_offset = number("uart_enable offset", trim(v.substr(0, colon)));
+        m.uart.enable_mask = number("uart_enable mask", trim(v.substr(colon + 1)));
+        if (!m.uart.enable_mask) throw BadLine("the uart_enable mask must not be 0");
+        if (m.uart.enable_offset >= 0x100) throw BadLine("the uart_enable offset must be below 0x100");
       } else if (key == "halt") parse_halt(v, m);
       else throw BadLine("unknown key '" + key + "'");
     } catch (const BadLine& e) {
@@ -105,8 +134,11 @@ Board parse_board_file(const std::string& text, const std::string& origin) {
   for (const char* k : {"name", "isa", "reset", "ram_base", "ram_size", "uart", "uart_base", "halt"})
     if (!seen.count(k)) throw std::runtime_error(where(end) + "missing required key '" + k + "'");
   const bool generic = b.map.uart.kind == UartKind::Generic;
-  for (const char* k : {"uart_data", "uart_status", "uart_tx_ready", "uart_rx_ready", "uart_width"}) {
-    if (generic && std::string(k) != "uart_width" && !seen.count(k))
+  for (const char* k : {"uart_data", "uart_status", "uart_tx_ready", "uart_rx_ready", "uart_width", "uart_tx_idle",
+                        "uart_init", "uart_enable"}) {
+    const std::string key = k;
+    const bool optional = key == "uart_width" || key == "uart_tx_idle" || key == "uart_init" || key == "uart_enable";
+    if (generic && !optional && !seen.count(k))
       throw std::runtime_error(where(end) + "uart = generic needs '" + k + "'");
     if (!generic && seen.count(k))
       throw std::runtime_error(where(seen[k]) + "'" + k + "' applies only to uart = generic");
@@ -118,6 +150,11 @@ Board parse_board_file(const std::string& text, const std::string& origin) {
       throw std::runtime_error(where(seen["uart_data"]) + "uart_data and uart_status must be multiples of uart_width");
     if (!u.tx_ready || !u.rx_ready)
       throw std::runtime_error(where(seen[u.tx_ready ? "uart_rx_ready" : "uart_tx_ready"]) + "a status mask must not be 0");
+    if (seen.count("uart_tx_idle") && !u.tx_idle)
+      throw std::runtime_error(where(seen["uart_tx_idle"]) + "a status mask must not be 0");
+    for (const auto& [offset, value] : b.uart_init)
+      if (offset % u.width)
+        throw std::runtime_error(where(seen["uart_init"]) + "uart_init offsets must be multiples of uart_width");
   }
   if (seen.count("rom_base") != seen.count("rom_size"))
     throw std::runtime_error(where(end) + "rom_base and rom_size go together");

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "isa_subset.hpp"
 #include "memory_map.hpp"
@@ -18,6 +20,9 @@ struct Board {
   uint32_t reset = 0;
   MemoryMap map;                          // RAM, ROM, UART, halt
   std::optional<uint32_t> uart_divisor;   // for the firmware's UART set-up
+  // Generic UART: the register writes (offset, value) the firmware makes at
+  // start-up (the simulator models their effect through map.uart's enable).
+  std::vector<std::pair<uint32_t, uint32_t>> uart_init;
 };
 
 // Throws std::runtime_error("ORIGIN:LINE: reason") for a bad line, a

@@ -3,14 +3,20 @@
 #include <bit>
 #include <string>
 
+#include "compressed.hpp"
 #include "decoder.hpp"
 #include "disassembler.hpp"
 #include "isa_table.hpp"
 
 namespace fwsim {
 
+// A compressed instruction (`word` holds it in its low half) shows its 16
+// bits, as spike's log does.
 void write_commit_trace(std::FILE* out, uint32_t pc, uint32_t word, const HartState& hart) {
-  const DecodedInsn d = decode(word);
+  const DecodedInsn d = decode_any(word);
+  char hex[16];
+  if (d.length == 2) std::snprintf(hex, sizeof hex, "    %04x", word & 0xffff);
+  else std::snprintf(hex, sizeof hex, "%08x", word);
   const std::string text = disassemble(word, pc);
   char effect[96] = "";
   switch (op_info(d.op).format) {
@@ -37,13 +43,14 @@ void write_commit_trace(std::FILE* out, uint32_t pc, uint32_t word, const HartSt
     default:
       break;
   }
-  if (effect[0]) std::fprintf(out, "%08x: %08x  %-32s %s\n", pc, word, text.c_str(), effect);
-  else std::fprintf(out, "%08x: %08x  %s\n", pc, word, text.c_str());
+  if (effect[0]) std::fprintf(out, "%08x: %s  %-32s %s\n", pc, hex, text.c_str(), effect);
+  else std::fprintf(out, "%08x: %s  %s\n", pc, hex, text.c_str());
 }
 
 void write_spike_commit(std::FILE* out, uint32_t pc, uint32_t word, const HartState& hart) {
-  const DecodedInsn d = decode(word);
-  std::fprintf(out, "core   0: 3 0x%08x (0x%08x)", pc, word);
+  const DecodedInsn d = decode_any(word);
+  if (d.length == 2) std::fprintf(out, "core   0: 3 0x%08x (0x%04x)", pc, word & 0xffff);
+  else std::fprintf(out, "core   0: 3 0x%08x (0x%08x)", pc, word);
   switch (op_info(d.op).format) {
     case Format::R: case Format::I: case Format::Shift: case Format::Load: case Format::U:
     case Format::J: case Format::Jalr: case Format::Csr: case Format::CsrI: case Format::FCmp:

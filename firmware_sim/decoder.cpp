@@ -75,7 +75,7 @@ DecodedInsn decode(uint32_t w) {
   d.rs3 = w >> 27;
   d.rm = (w >> 12) & 7;
   const uint32_t f3 = (w >> 12) & 7, f7 = w >> 25;
-  if ((w & 3) != 3) return d;  // compressed instructions are not supported
+  if ((w & 3) != 3) return d;  // compressed: decode_compressed
   switch ((w >> 2) & 0x1f) {
     case 0x0d: d.op = Op::LUI; d.imm = static_cast<int32_t>(w & 0xfffff000u); break;
     case 0x05: d.op = Op::AUIPC; d.imm = static_cast<int32_t>(w & 0xfffff000u); break;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "compressed.hpp"
 #include "decoder.hpp"
 
 namespace fwsim {
@@ -23,7 +24,8 @@ const char* x_reg_name(unsigned i) { return kXNames[i & 31]; }
 const char* f_reg_name(unsigned i) { return kFNames[i & 31]; }
 
 std::string disassemble(uint32_t word, uint32_t pc) {
-  const DecodedInsn d = decode(word);
+  // A compressed instruction shows as the instruction it expands to.
+  const DecodedInsn d = decode_any(word);
   const OpInfo& info = op_info(d.op);
   const char *x_rd = kXNames[d.rd], *x1 = kXNames[d.rs1], *x2 = kXNames[d.rs2];
   const char *f_rd = kFNames[d.rd], *f1 = kFNames[d.rs1], *f2 = kFNames[d.rs2];
@@ -57,7 +59,8 @@ std::string disassemble(uint32_t word, uint32_t pc) {
     case Format::FLoad: std::snprintf(buf, sizeof buf, "%s %s, %d(%s)", mn, f_rd, d.imm, x1); break;
     case Format::FStore: std::snprintf(buf, sizeof buf, "%s %s, %d(%s)", mn, f2, d.imm, x1); break;
     case Format::None:
-      if (d.op == Op::ILLEGAL) std::snprintf(buf, sizeof buf, "<illegal 0x%08x>", word);
+      if (d.op == Op::ILLEGAL && d.length == 2) std::snprintf(buf, sizeof buf, "<illegal 0x%04x>", word & 0xffff);
+      else if (d.op == Op::ILLEGAL) std::snprintf(buf, sizeof buf, "<illegal 0x%08x>", word);
       else std::snprintf(buf, sizeof buf, "%s", mn);
       break;
   }

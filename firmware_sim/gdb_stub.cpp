@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "compressed.hpp"
 #include "decoder.hpp"
 #include "disassembler.hpp"
 #include "fpu.hpp"
@@ -268,10 +269,11 @@ StopInfo GdbStub::step(Machine& m, uint64_t max_instructions) {
   HartState& h = m.hart();
   const uint32_t pc = h.pc;
   std::vector<uint32_t> next{pc + 4};
-  if (m.bus().in_code(pc, 4) && !(pc & 3)) {
-    uint32_t word;
-    std::memcpy(&word, m.bus().code_at(pc), 4);
-    const DecodedInsn d = decode(word);
+  if (m.bus().in_code(pc, 2) && !(pc & 1)) {
+    uint32_t word = 0;
+    std::memcpy(&word, m.bus().code_at(pc), m.bus().in_code(pc, 4) ? 4 : 2);
+    const DecodedInsn d = m.compressed() ? decode_any(word) : decode(word);
+    next = {pc + d.length};
     const Format f = op_info(d.op).format;
     if (f == Format::Branch) next.push_back(pc + static_cast<uint32_t>(d.imm));
     else if (f == Format::J) next = {pc + static_cast<uint32_t>(d.imm)};

@@ -15,6 +15,7 @@
 #include <cstring>
 
 #include "commit_trace.hpp"
+#include "compressed.hpp"
 #include "decoder.hpp"
 #include "disassembler.hpp"
 #include "fpu.hpp"
@@ -94,21 +95,29 @@ uint32_t rem_s(uint32_t a, uint32_t b) {
 
 }  // namespace
 
-void Machine::trace_instruction(uint32_t pc) {
+uint32_t Machine::instruction_at(uint32_t pc) {
   uint32_t word = 0;
-  std::memcpy(&word, bus_.code_at(pc), 4);
+  std::memcpy(&word, bus_.code_at(pc), 2);
+  if (!code_.compressed() || !is_compressed(word)) {
+    if (bus_.in_code(pc, 4)) std::memcpy(&word, bus_.code_at(pc), 4);
+  }
+  return word;
+}
+
+void Machine::trace_instruction(uint32_t pc) {
+  const uint32_t word = instruction_at(pc);
   if (spike_trace_) write_spike_commit(trace_, pc, word, hart_);
   else write_commit_trace(trace_, pc, word, hart_);
 }
 
 StopInfo Machine::run(uint64_t max_instructions) {
   StopInfo s;
-  if (!bus_.in_code(hart_.pc, 4)) {
+  if (!bus_.in_code(hart_.pc, 1u << code_.shift())) {
     s.cause = StopCause::FetchFault;
     s.pc = s.addr = hart_.pc;
     return s;
   }
-  if (hart_.pc & 3) {
+  if (hart_.pc & ((1u << code_.shift()) - 1)) {
     s.cause = StopCause::MisalignedFetch;
     s.pc = s.addr = hart_.pc;
     return s;
@@ -123,11 +132,13 @@ StopInfo Machine::run(uint64_t max_instructions) {
   if (!model_ && !profiler_ && !trace_ && watches_.empty()) {
     // Generated code covers the IEEE arithmetic only.
     if (jit_enabled_ && !fpu_model_ && !jit_)
-      jit_ = std::make_unique<BlockJit>(code_.count(), bus_.code_base(), bus_.ram_size());
+      jit_ = std::make_unique<BlockJit>(code_.count(), bus_.code_base(), bus_.ram_size(), nullptr, code_.shift());
     if (jit_enabled_ && !fpu_model_ && jit_->available()) s = run_loop<3>(max_instructions);
     else s = run_loop<0>(max_instructions);
   }
-  else if (model_ && !trace_ && watches_.empty() && !model_->per_access_state()) s = run_loop<1>(max_instructions);
+  // Block costs assume one entry per instruction: not with the C extension.
+  else if (model_ && !trace_ && watches_.empty() && !model_->per_access_state() && !code_.compressed())
+    s = run_loop<1>(max_instructions);
   else s = run_loop<2>(max_instructions);
   hart_.fflags |= fpu::take_host_flags();
   return s;
@@ -240,11 +251,14 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
   const uint32_t code_base = bus_.code_base();
   const uint32_t code_size = bus_.code_size();
   const uint8_t* const code_mem = bus_.code();
+  // Code bytes per entry: 4, or 2 with the C extension (decode_cache.hpp).
+  const unsigned shift = code_.shift();
+  const uint32_t fetch_align = (1u << shift) - 1;
 #ifdef FWSIM_GLOBAL_REGS
-  g_ip = base + (hart_.pc - code_base) / 4;
+  g_ip = base + ((hart_.pc - code_base) >> shift);
 #define ip g_ip
 #else
-  Entry* ip = base + (hart_.pc - code_base) / 4;
+  Entry* ip = base + ((hart_.pc - code_base) >> shift);
 #endif
 #ifdef FWSIM_GLOBAL_REGS
   g_x = hart_.x;
@@ -339,7 +353,7 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     model.fn(__VA_ARGS__, cycles_); \
     CYC = cycles_;               \
   } while (0)
-#define PC_OF(p) (code_base + static_cast<uint32_t>((p) - base) * 4u)
+#define PC_OF(p) (code_base + (static_cast<uint32_t>((p) - base) << shift))
 #define RETIRED() ((K_VALUE() + reinterpret_cast<uint64_t>(ip)) >> 3)
 #define NOW() (Timed ? CYC : start + RETIRED())
 #define SYNC()                                                 \
@@ -374,6 +388,15 @@ StopInfo Machine::run_loop(uint64_t max_instructions) {
     cont;               \
   } while (0)
 #define NEXT() NEXT_THEN(DISPATCH())
+  // On the stop paths: past the second half of the 32-bit instruction just
+  // retired (with C), which is not counted.
+#define PAST_SKIP()                                    \
+  do {                                                 \
+    if (ip->op == static_cast<uint8_t>(Op::SKIP)) {    \
+      ++ip;                                            \
+      K_SET(K_VALUE() - sizeof(Entry));                \
+    }                                                  \
+  } while (0)
   // Closes the straight-line run at the current instruction (which retires)
   // and starts one at `target`; `done` is the count so far, in bytes.
 #define ENTER(target, done)                                   \
@@ -646,9 +669,7 @@ R_FCVT_S_WU: FP_RNE(L_FCVT_S_WU, static_cast<float>(XR[ip->rs1]));
 #undef FWSIM_FUSED_HANDLER
 
 L_UNDECODED: {
-  uint32_t word;
-  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
-  code_.fill(static_cast<uint32_t>(ip - base), word);
+  code_.fill(static_cast<uint32_t>(ip - base), code_mem);
   if constexpr (Mode == 1) {
     const uint64_t old_stall = SLOT(ip).stall;
     costs_.update(code_, model, static_cast<uint32_t>(ip - base));
@@ -661,18 +682,21 @@ L_UNDECODED: {
 }
 L_ILLEGAL: FAULT(StopCause::IllegalInstruction, 0);
 L_OUTSIDE_ISA: {
-  uint32_t word;
-  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
-  stop.detail = missing_extension(code_.isa(), word, decode(word));
+  const uint32_t word = instruction_at(PC_OF(ip));
+  stop.detail = missing_extension(code_.isa(), word, code_.compressed() ? decode_any(word) : decode(word));
   FAULT(StopCause::OutsideIsa, 0);
 }
+L_SKIP:
+  // Straight-line code steps over the second half of a 32-bit instruction
+  // without counting it.
+  ++ip;
+  K_SET(K_VALUE() - sizeof(Entry));
+  DISPATCH();
 L_SELF_JUMP: {
   // The board's "loop" halt: a taken jump or branch to itself ends the run.
-  uint32_t word;
-  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
-  const DecodedInsn d = decode(word);
+  const DecodedInsn d = decode_any(instruction_at(PC_OF(ip)));
   if (branch_condition(d.op, XR[d.rs1], XR[d.rs2])) {
-    if (d.op == Op::JAL && d.rd != 0) XR[d.rd] = PC_OF(ip) + 4;
+    if (d.op == Op::JAL && d.rd != 0) XR[d.rd] = PC_OF(ip) + d.length;
     stop.exit_code = static_cast<int>(XR[10]);
     goto halt_exit;
   }
@@ -682,23 +706,26 @@ L_SELF_JUMP: {
 L_FETCH_FAULT: FAULT(StopCause::FetchFault, PC_OF(ip));
 L_BREAKPOINT: FAULT(StopCause::Breakpoint, PC_OF(ip));
 L_SLOW_CTI: {
-  // A branch or jal whose target is outside code memory or not word aligned.
-  uint32_t word;
-  std::memcpy(&word, code_mem + (PC_OF(ip) - code_base), 4);
-  const DecodedInsn d = decode(word);
+  // A branch or jal whose target is outside code memory, off the entry
+  // grid, or inside a 32-bit instruction (overlapping instructions, which
+  // are not supported: an illegal instruction).
+  const DecodedInsn d = decode_any(instruction_at(PC_OF(ip)));
   const bool taken = branch_condition(d.op, XR[d.rs1], XR[d.rs2]);
   if (!taken) {
     if constexpr (Timed) MODEL_CALL(branch, PC_OF(ip), false, false);
     NEXT();
   }
   const uint32_t target = PC_OF(ip) + static_cast<uint32_t>(d.imm);
-  FAULT((target & 3) ? StopCause::MisalignedFetch : StopCause::FetchFault, target);
+  FAULT((target & fetch_align)               ? StopCause::MisalignedFetch
+        : target - code_base >= code_size ? StopCause::FetchFault
+                                             : StopCause::IllegalInstruction,
+        target);
 }
 L_LUI: ALU(static_cast<uint32_t>(ip->imm));
 L_AUIPC: ALU(PC_OF(ip) + static_cast<uint32_t>(ip->imm));
 L_JAL: {
   Entry* const target = ip + ip->imm;
-  const uint32_t link = PC_OF(ip) + 4;
+  const uint32_t link = PC_OF(ip) + ip->rs2;
   RD = link;
   STEP();
   const uint64_t done = DONE();
@@ -710,9 +737,11 @@ L_JAL: {
 }
 L_JALR: {
   const uint32_t target = (RS1 + static_cast<uint32_t>(ip->imm)) & ~1u;
-  if (target & 3) FAULT(StopCause::MisalignedFetch, target);
+  if (target & fetch_align) FAULT(StopCause::MisalignedFetch, target);
   if (target - code_base >= code_size) FAULT(StopCause::FetchFault, target);
-  const uint32_t link = PC_OF(ip) + 4;
+  Entry* const to = base + ((target - code_base) >> shift);
+  if (to->op == static_cast<uint8_t>(Op::SKIP)) FAULT(StopCause::IllegalInstruction, target);
+  const uint32_t link = PC_OF(ip) + ip->rs2;
   RD = link;
   STEP();
   const uint64_t done = DONE();
@@ -723,7 +752,7 @@ L_JALR: {
       else if (ip->rd == kSinkReg && ip->rs1 == 1) profiler->ret(target, now);
     }
   }
-  ENTER(base + (target - code_base) / 4, done);
+  ENTER(to, done);
   DISPATCH();
 }
 L_BEQ: BRANCH(RS1 == RS2);
@@ -760,7 +789,10 @@ L_SRA: ALU(static_cast<uint32_t>(static_cast<int32_t>(RS1) >> (RS2 & 31)));
 L_OR: ALU(RS1 | RS2);
 L_AND: ALU(RS1 & RS2);
 L_FENCE: NEXT();
-L_FENCE_I: NEXT_THEN(code_.invalidate_all(); DISPATCH());
+L_FENCE_I:
+  // The entry after it (its second half, with C) is dropped too: step past
+  // it before anything decodes it as an instruction.
+  NEXT_THEN(code_.invalidate_all(); if (shift == 1) { ++ip; K_SET(K_VALUE() - sizeof(Entry)); } DISPATCH());
 L_ECALL:
   if (halt_on_ecall && XR[17] == kEcallExit) {
     stop.exit_code = static_cast<int>(XR[10]);
@@ -845,11 +877,12 @@ L_FMV_W_X: {
 device_stop:
   // A device ended the run: the finisher (the store retires), a UART whose
   // input is exhausted while the firmware keeps polling, or a host I/O error.
+  stop.pc = PC_OF(ip);
   if (retire_stopper) {
     STEP();
     ++ip;
+    PAST_SKIP();
   }
-  stop.pc = PC_OF(ip) - (retire_stopper ? 4 : 0);
   if (bus_.finished()) {
     stop.cause = StopCause::Exit;
     stop.exit_code = bus_.exit_code();
@@ -895,16 +928,18 @@ jit_enter:
 watch_stop:
   __attribute__((unused));  // reached only from the hooked loop
   // The accessing instruction has run: report the stop after it.
+  stop.pc = PC_OF(ip);
   STEP();
   ++ip;
-  stop.pc = PC_OF(ip) - 4;
+  PAST_SKIP();
   stop.cause = StopCause::Watchpoint;
   goto out;
 halt_exit:
   // The board's ecall or jump-to-self halt: the instruction retires.
+  stop.pc = PC_OF(ip);
   STEP();
   ++ip;
-  stop.pc = PC_OF(ip) - 4;
+  PAST_SKIP();
   stop.cause = StopCause::Exit;
   goto out;
 limit_reached:
@@ -951,6 +986,7 @@ out:
 #undef DISPATCH
 #undef STEP
 #undef NEXT
+#undef PAST_SKIP
 #undef JUMP
 #undef FAULT
 #undef BRANCH

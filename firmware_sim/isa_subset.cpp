@@ -45,8 +45,8 @@ std::string isa_name(const IsaSpec& isa) {
 }
 
 const char* missing_extension(const IsaSpec& isa, uint32_t word, const DecodedInsn& d) {
-  if ((word & 3) != 3)
-    return isa.c ? "the C extension, which firmware-sim does not execute" : "the C extension";
+  // A compressed instruction needs C, then whatever its expansion (`d`) needs.
+  if ((word & 3) != 3 && !isa.c) return "the C extension";
   const InsnClass cls = op_info(d.op).cls;
   if ((cls == InsnClass::Mul || cls == InsnClass::Div) && !isa.m) return "the M extension";
   switch (cls) {

@@ -39,6 +39,7 @@ enum class Format : uint8_t {
   X(BREAKPOINT, "<breakpoint>", Internal, None)        \
   X(OUTSIDE_ISA, "<outside the board's ISA>", Internal, None) \
   X(SELF_JUMP, "<jump to itself>", Internal, None)     \
+  X(SKIP, "<second half of an instruction>", Internal, None) \
   X(LUI, "lui", Alu, U)                                \
   X(AUIPC, "auipc", Alu, U)                            \
   X(JAL, "jal", Jump, J)                               \

@@ -35,6 +35,8 @@ class Machine {
   // The board's instruction set: instructions outside it stop the run with
   // StopCause::OutsideIsa. Call before running.
   void set_isa(const IsaSpec& isa) { code_.configure(isa, bus_.map().halt == HaltKind::Loop); }
+  // The board has the C extension: instructions at any halfword.
+  bool compressed() const { return code_.compressed(); }
 
   // With a model (and optionally a profiler or a trace stream) the timed
   // variant runs; without, the plain one, which counts instructions only.
@@ -65,14 +67,24 @@ class Machine {
   // `pc` is not a word of code memory. Code written from outside (a debugger's memory
   // write) must be invalidated to be decoded again.
   bool set_breakpoint(uint32_t pc) {
-    if (!bus_.in_code(pc, 4) || (pc & 3)) return false;
-    code_.set_breakpoint((pc - bus_.code_base()) / 4);
+    const uint32_t unit = 1u << code_.shift();
+    if (!bus_.in_code(pc, unit) || (pc & (unit - 1))) return false;
+    code_.set_breakpoint((pc - bus_.code_base()) >> code_.shift());
     return true;
   }
-  void clear_breakpoint(uint32_t pc) { invalidate_code(pc, 4); }
+  void clear_breakpoint(uint32_t pc) { invalidate_code(pc, 1u << code_.shift()); }
   void invalidate_code(uint32_t addr, uint32_t len) {
-    for (uint32_t a = addr & ~3u; a - (addr & ~3u) < len + (addr & 3); a += 4)
-      if (bus_.in_code(a, 4)) code_.invalidate((a - bus_.code_base()) / 4);
+    const uint32_t base = bus_.code_base(), size = bus_.code_size();
+    uint32_t lo = addr, n = len;
+    if (lo - base >= size) {  // starts below or above code memory
+      if (addr < base && uint64_t{addr} + len > base) {
+        n = static_cast<uint32_t>(uint64_t{addr} + len - base);
+        lo = base;
+      } else {
+        return;
+      }
+    }
+    code_.invalidate_bytes(lo - base, n);
   }
 
   // Debugger watchpoints: a load (kind 3), store (2) or either (4)
@@ -101,6 +113,9 @@ class Machine {
   template <int Mode>
   StopInfo run_loop(uint64_t max_instructions);
   void trace_instruction(uint32_t pc);
+  // The instruction at `pc` in code memory: 16 bits (zero-extended) when
+  // compressed on a board with C, else 32.
+  uint32_t instruction_at(uint32_t pc);
   // The kind of the first watchpoint an access hits, or 0.
   uint8_t watch_hit(uint32_t addr, uint32_t size, bool store) const {
     for (const Watch& w : watches_)

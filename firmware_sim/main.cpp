@@ -252,6 +252,11 @@ int run(int argc, char** argv) {
   if (trace) std::fclose(trace);
   if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
   if (!timed) m.hart().cycles = m.hart().instret;
+  if (uart.bytes_dropped())
+    std::fprintf(stderr,
+                 "firmware-sim: warning: %llu bytes dropped while the UART was off (the board file's uart_enable "
+                 "condition; the firmware switches it on with uart_init)\n",
+                 static_cast<unsigned long long>(uart.bytes_dropped()));
 
   if (interrupted) {
     // What ran so far, and no profile of a run cut short.
@@ -267,6 +272,7 @@ int run(int argc, char** argv) {
   } else if (stop.cause != StopCause::Exit) {
     uint32_t word = 0;
     if (const uint8_t* p = m.bus().host_at(stop.pc, 4)) std::memcpy(&word, p, 4);
+    else if (const uint8_t* p2 = m.bus().host_at(stop.pc, 2)) std::memcpy(&word, p2, 2);
     std::fprintf(stderr, "firmware-sim: error: %s\n", describe_stop(stop, word, elf.symbols, m.hart().instret).c_str());
   }
   if (profiler) {

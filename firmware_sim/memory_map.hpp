@@ -17,6 +17,10 @@ struct UartLayout {
   // Generic kind only: register offsets, status masks, register width.
   uint32_t data = 0, status = 0, tx_ready = 0, rx_ready = 0;
   uint32_t width = 4;
+  uint32_t tx_idle = 0;  // "everything sent has left" (0: tx_ready's bits)
+  // The UART is off, dropping what is sent and what arrives, until the
+  // register at enable_offset has all enable_mask bits set (mask 0: always on).
+  uint32_t enable_offset = 0, enable_mask = 0;
 };
 // Bytes of address space the UART kind decodes.
 uint32_t uart_region_size(const UartLayout& u);

@@ -14,7 +14,9 @@ std::string describe_stop(const StopInfo& s, uint32_t word, const SymbolTable& s
   std::string where = syms.describe(s.pc);
   std::string insn = word ? disassemble(word, s.pc) : std::string("(no instruction)");
   if (word && (word & 3) != 3) {
-    std::snprintf(buf, sizeof buf, "compressed instruction 0x%04x", word & 0xffff);
+    // Outside the ISA: the encoding alone; otherwise its expansion too.
+    if (s.cause == StopCause::OutsideIsa) std::snprintf(buf, sizeof buf, "compressed instruction 0x%04x", word & 0xffff);
+    else std::snprintf(buf, sizeof buf, "compressed instruction 0x%04x (%s)", word & 0xffff, insn.c_str());
     insn = buf;
   }
   std::snprintf(buf, sizeof buf, "%s at pc 0x%08x (%s): %s", describe(s.cause), s.pc,

@@ -143,13 +143,35 @@ uint32_t Uart::read(uint32_t offset, uint64_t now) {
         case kSifiveDiv: return sifive_div_;
         default: return 0;
       }
-    case UartKind::Generic:
-      if (offset == l.status) return (tx_ready(now) ? l.tx_ready : 0) | (poll_rx(now) ? l.rx_ready : 0);
+    case UartKind::Generic: {
+      const uint32_t idle = l.tx_idle ? l.tx_idle : l.tx_ready;
+      const uint32_t written = offset < sizeof generic_regs_ ? generic_regs_[offset / 4] : 0;
+      if (!generic_enabled()) {
+        // Off: a byte that arrives is lost (the receiver is held empty),
+        // the transmitter reads empty and drops what is written.
+        if (offset == l.status) {
+          if (data_ready(now)) {
+            holding_ = false;
+            ++in_pos_;
+            ++dropped_;
+          } else if (eof_) {
+            ++eof_polls_;
+          }
+          return (written & ~(l.tx_ready | l.rx_ready | idle)) | l.tx_ready | idle;
+        }
+        return offset == l.data ? 0 : written;
+      }
+      if (offset == l.status) {
+        const bool free = tx_ready(now);
+        return (written & ~(l.tx_ready | l.rx_ready | idle)) | (free ? l.tx_ready | idle : 0) |
+               (poll_rx(now) ? l.rx_ready : 0);
+      }
       if (offset == l.data) {
         const int c = take_rx(now);
         return c < 0 ? 0 : static_cast<uint32_t>(c);
       }
-      return 0;
+      return written;
+    }
   }
   return 0;
 }
@@ -170,9 +192,22 @@ void Uart::write(uint32_t offset, uint32_t value, uint64_t now) {
         default: return;
       }
     case UartKind::Generic:
-      if (offset == l.data) send(static_cast<uint8_t>(value), now);
+      if (offset != l.data) {
+        if (offset < sizeof generic_regs_) generic_regs_[offset / 4] = value;
+      } else if (generic_enabled()) {
+        send(static_cast<uint8_t>(value), now);
+      } else {
+        ++dropped_;
+      }
       return;
   }
+}
+
+bool Uart::generic_enabled() const {
+  const UartLayout& l = cfg_.layout;
+  if (!l.enable_mask) return true;
+  const uint32_t v = l.enable_offset < sizeof generic_regs_ ? generic_regs_[l.enable_offset / 4] : 0;
+  return (v & l.enable_mask) == l.enable_mask;
 }
 
 void Uart::flush() {

@@ -39,6 +39,8 @@ class Uart {
 
   uint64_t bytes_out() const { return bytes_out_; }
   uint64_t bytes_in() const { return bytes_in_; }
+  // Bytes lost because the firmware had not switched the UART on.
+  uint64_t bytes_dropped() const { return dropped_; }
 
  private:
   bool fill_input();  // true when at least one byte is buffered
@@ -63,6 +65,11 @@ class Uart {
   std::vector<uint8_t> out_buf_;
   uint8_t lcr_ = 0, dll_ = 0, dlm_ = 0, scr_ = 0;
   uint32_t sifive_txctrl_ = 0, sifive_rxctrl_ = 0, sifive_div_ = 0;
+  // Generic kind: what the firmware wrote to registers other than data
+  // (their first 0x100 bytes), for the enable condition and read-back.
+  bool generic_enabled() const;
+  uint32_t generic_regs_[64] = {};
+  uint64_t dropped_ = 0;  // bytes sent or received while the UART was off
   uint64_t bytes_out_ = 0, bytes_in_ = 0;
   bool io_error_ = false;
 };

@@ -1,7 +1,8 @@
 /* Board test program: echoes UART input up to and including the first
  * newline, then halts with the number of bytes echoed as its status.
  * Assembled per board with -D: UART_KIND (1 ns16550, 2 litex, 3 sifive,
- * 4 generic; generic also GEN_DATA, GEN_STATUS, GEN_TX, GEN_RX, GEN_WIDTH),
+ * 4 generic; generic also GEN_DATA, GEN_STATUS, GEN_TX, GEN_RX, GEN_WIDTH,
+ * and optionally GEN_INIT_OFF/GEN_INIT_VAL: one register write first),
  * UART_BASE, HALT_KIND (1 finisher, 2 ecall, 3 store, 4 loop), HALT_ADDR. */
 #if GEN_WIDTH == 1
 #define GEN_LOAD lbu
@@ -16,6 +17,10 @@
 _start:
   li s0, UART_BASE
   li s1, 0
+#ifdef GEN_INIT_OFF
+  li t0, GEN_INIT_VAL
+  GEN_STORE t0, GEN_INIT_OFF(s0)
+#endif
 #if UART_KIND == 3
   li t0, 1
   sw t0, 8(s0)           /* txctrl.txen */
@@ -37,7 +42,8 @@ next:
   bltz a0, 1b
 #else
 1: GEN_LOAD t0, GEN_STATUS(s0)
-  andi t0, t0, GEN_RX
+  li t1, GEN_RX
+  and t0, t0, t1
   beqz t0, 1b
   GEN_LOAD a0, GEN_DATA(s0)
 #endif
@@ -58,7 +64,8 @@ next:
   sw a0, 0(s0)
 #else
 2: GEN_LOAD t0, GEN_STATUS(s0)
-  andi t0, t0, GEN_TX
+  li t1, GEN_TX
+  and t0, t0, t1
   beqz t0, 2b
   GEN_STORE a0, GEN_DATA(s0)
 #endif
