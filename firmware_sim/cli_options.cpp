@@ -17,6 +17,7 @@ uint64_t parse_count(const std::string& opt, const std::string& v, bool allow_su
   if (allow_suffix && *end && !end[1]) {
     if (*end == 'K' || *end == 'k') mult = 1024, ++end;
     else if (*end == 'M' || *end == 'm') mult = 1024 * 1024, ++end;
+    else if (*end == 'G' || *end == 'g') mult = 1024 * 1024 * 1024, ++end;
   }
   if (errno || *end || n == 0 || n > UINT64_MAX / mult)
     throw UsageError(opt + " needs a positive number, got '" + v + "'");
@@ -55,7 +56,9 @@ a long run shows its progress on stderr; Ctrl-C stops it with a summary (status 
           {"load-hex", 0, "FILE",
            "run a memory image of 32-bit words ($readmemh .hex/.mem,\nor .coe) loaded at the reset/ROM address, "
            "instead of an ELF"},
-          {"max-instructions", 0, "N", "stop with an error after N instructions"},
+          {"max-instructions", 0, "N", "stop with an error after N instructions\n(default 4000000000000)"},
+          {"max-output", 0, "N", "stop with an error once the firmware has sent N UART\nbytes (K/M/G suffix ok; default 1G)"},
+          {"no-limit", 0, nullptr, "no bound on instructions or UART output"},
           {"no-jit", 0, nullptr,
            "interpret every instruction (no generated host code for\nhot loops; same results, slower)"},
           {nullptr, 0, nullptr, "Memory map (default: the board's, include/minrt/memory_map.h):"},
@@ -76,8 +79,8 @@ a long run shows its progress on stderr; Ctrl-C stops it with a summary (status 
            "wait for GDB on 127.0.0.1:PORT (0 = any free port;\nthe port is printed on stderr) and run under its "
            "control"},
       },
-      "Exit status: firmware's code; 2 usage, 3 bad ELF, 4 trap, 5 instruction limit,\n"
-      "6 UART input exhausted while polled, 7 host I/O error, 8 killed from gdb,\n"
+      "Exit status: firmware's code; 2 usage, 3 bad ELF, 4 trap, 5 instruction or\noutput limit, "
+      "6 UART input exhausted while polled,\n7 host I/O error (a failed write), 8 killed from gdb, "
       "130 interrupted (Ctrl-C).\n"};
   return tool;
 }
@@ -124,6 +127,8 @@ bool parse_cli(int argc, char** argv, const char* version, CliOptions& o, int& s
           else if (name == "folded-out") o.folded_out = v;
           else if (name == "flame-out") o.flame_out = v;
           else if (name == "max-instructions") o.max_instructions = parse_count(a, v, false);
+          else if (name == "max-output") o.max_output = parse_count(a, v, true);
+          else if (name == "no-limit") o.max_instructions = o.max_output = UINT64_MAX;
           else if (name == "ram-size") {
             const uint64_t r = parse_count(a, v, true);
             if (r % 4096 || r < 65536 || r > 0x7ffff000ull)

@@ -8,6 +8,13 @@
 
 namespace fwsim {
 
+// The bounds of an unattended run (--no-limit lifts both): 4e12
+// instructions, about an hour of generated code at 1,000 MIPS and 75 times
+// the longest render the benches run (53 billion); 1 GiB of UART output,
+// five times the largest image (4096x4096 as P3, 12 bytes a pixel).
+inline constexpr uint64_t kDefaultMaxInstructions = 4'000'000'000'000ull;
+inline constexpr uint64_t kDefaultMaxOutput = uint64_t{1} << 30;
+
 struct CliOptions {
   std::string elf;                // the ELF, or with load_hex the image file
   bool load_hex = false;          // --load-hex: elf names a $readmemh/.mem/.coe image
@@ -20,7 +27,8 @@ struct CliOptions {
   std::vector<std::string> fpu_settings;  // --fpu lists, applied in order after the file
   bool fpu_check = false;         // measure the FPU model's error instead of running an ELF
   std::string profile_out, folded_out;
-  uint64_t max_instructions = 0;  // 0 = unlimited
+  uint64_t max_instructions = kDefaultMaxInstructions;  // UINT64_MAX = unlimited
+  uint64_t max_output = kDefaultMaxOutput;              // UART bytes; UINT64_MAX = unlimited
   bool jit = true;                // --no-jit: no generated code (block_jit.hpp)
   uint32_t ram_size = 0;          // --ram-size; 0 = from the map
   // Memory map (memory_map.hpp): the machine file first, then --ram,

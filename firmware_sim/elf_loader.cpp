@@ -1,6 +1,7 @@
 #include "elf_loader.hpp"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -9,10 +10,10 @@
 
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <vector>
+
+#include "posix/input_file.hpp"
 
 namespace fwsim {
 namespace {
@@ -51,8 +52,8 @@ void read_symbols(const std::vector<uint8_t>& f, const Elf32_Ehdr& eh, const std
       size_t max_len = strtab.sh_size - sym.st_name;
       std::string n(name, strnlen(name, max_len));
       if (n.empty() || n[0] == '$' || n.rfind(".L", 0) == 0) continue;  // mapping symbols, locals
-      // Every report (stats, stop messages, profiles) shows the readable name.
-      out.symbols.add({demangle(n), sym.st_value, type == STT_FUNC ? sym.st_size : 0});
+      // Kept mangled: a report demangles the names it shows (symbols.hpp).
+      out.symbols.add({std::move(n), sym.st_value, type == STT_FUNC ? sym.st_size : 0});
     }
   }
   out.symbols.finalize();
@@ -63,17 +64,25 @@ void read_symbols(const std::vector<uint8_t>& f, const Elf32_Ehdr& eh, const std
 LoadedElf load_elf(const std::string& path, Bus& bus) {
   // Only a regular file no larger than the RAM it is loaded into: checked
   // before reading, so /dev/zero or a directory cannot make us read forever.
+  std::string why;
+  const int fd = minrt::host::open_regular_file(path, why);
+  if (fd < 0) fail(path, "cannot read: " + why);
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) fail(path, std::string("cannot open file: ") + std::strerror(errno));
-  if (!S_ISREG(st.st_mode))
-    fail(path, S_ISDIR(st.st_mode) ? std::string("cannot read: ") + std::strerror(EISDIR) : "not a regular file");
+  if (::fstat(fd, &st) != 0) {
+    ::close(fd);
+    fail(path, std::string("cannot read: ") + std::strerror(errno));
+  }
   const uint64_t room = uint64_t{bus.ram_size()} + (bus.code() != bus.ram() ? bus.code_size() : 0);
-  if (static_cast<uint64_t>(st.st_size) > room)
+  if (static_cast<uint64_t>(st.st_size) > room) {
+    ::close(fd);
     fail(path, "file of " + std::to_string(st.st_size) + " bytes is larger than the " +
                    std::to_string(room) + (bus.code() != bus.ram() ? "-byte RAM and ROM" : "-byte RAM") + " it would load into");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open file: ") + std::strerror(errno));
-  std::vector<uint8_t> f((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  std::string bytes;
+  const bool read_ok = minrt::host::read_whole_fd(fd, bytes, why, room);
+  ::close(fd);
+  if (!read_ok) fail(path, "cannot read: " + why);
+  const std::vector<uint8_t> f(bytes.begin(), bytes.end());
   // The magic first: a short text file is "not an ELF file", not a truncated one.
   if (f.size() < SELFMAG || std::memcmp(f.data(), ELFMAG, SELFMAG) != 0) fail(path, "not an ELF file");
   auto eh = read_at<Elf32_Ehdr>(f, 0, path);

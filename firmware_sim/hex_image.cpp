@@ -4,9 +4,10 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "posix/input_file.hpp"
 
 namespace fwsim {
 namespace {
@@ -134,14 +135,17 @@ void load_coe(const std::string& text, Writer& w) {
 }  // namespace
 
 LoadedImage load_hex_image(const std::string& path, Bus& bus, uint32_t base) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open file: " + std::strerror(errno));
-  std::stringstream ss;
-  ss << in.rdbuf();
+  // A word takes at most 34 bytes of text (32 binary digits, a separator
+  // and a newline), so 16 bytes of text a byte of memory, plus room for a
+  // header and comments, bounds an image that fits: checked before reading.
+  const uint64_t room = uint64_t{bus.ram_size()} + (bus.code() != bus.ram() ? bus.code_size() : 0);
+  const size_t bound = static_cast<size_t>(room * 16 + (uint64_t{1} << 20));
+  std::string text, why;
+  if (!minrt::host::read_whole_file(path, text, why, bound)) throw std::runtime_error(path + ": cannot read: " + why);
   Writer w{path, bus, base};
   const bool coe = path.size() > 4 && path.compare(path.size() - 4, 4, ".coe") == 0;
-  if (coe) load_coe(ss.str(), w);
-  else load_readmemh(ss.str(), w);
+  if (coe) load_coe(text, w);
+  else load_readmemh(text, w);
   if (!w.any) throw std::runtime_error(path + ":1: no words");
   return w.out;
 }

@@ -27,11 +27,13 @@
 #include "machine.hpp"
 #include "memory_map.hpp"
 #include "output_check.hpp"
+#include "posix/input_file.hpp"
 #include "posix/output_file.hpp"
 #include "profile_writers.hpp"
 #include "pty_backend.hpp"
 #include "run_progress.hpp"
 #include "run_report.hpp"
+#include "trace_stream.hpp"
 
 #ifndef FWSIM_VERSION
 #define FWSIM_VERSION "0"
@@ -46,7 +48,20 @@ struct ExitNow {
 };
 
 [[noreturn]] void die(int status, const std::string& msg) {
-  std::fprintf(stderr, "firmware-sim: error: %s\n", msg.c_str());
+  // Messages quote the user's files (a board file's bad key): control bytes
+  // are escaped, so a file cannot write escape sequences to the terminal.
+  std::string shown;
+  for (const char ch : msg) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7f) {
+      shown.push_back(ch);
+    } else {
+      char esc[5];
+      std::snprintf(esc, sizeof esc, "\\x%02x", c);
+      shown += esc;
+    }
+  }
+  std::fprintf(stderr, "firmware-sim: error: %s\n", shown.c_str());
   throw ExitNow{status};
 }
 
@@ -64,12 +79,14 @@ int open_file(const std::string& path, int flags) {
   return fd;
 }
 
+// Board, machine, cycle-model and FPU-model files are a few kilobytes.
+constexpr size_t kMaxConfigFileBytes = size_t{1} << 20;
+
 std::string read_text(const std::string& path, const char* what) {
-  std::ifstream in(path);
-  if (!in) die(kExitUsage, path + ": cannot read " + what);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string text, why;
+  if (!minrt::host::read_whole_file(path, text, why, kMaxConfigFileBytes))
+    die(kExitUsage, path + ": cannot read " + what + ": " + why);
+  return text;
 }
 
 // Profiles go through posix/output_file.hpp: a unique temporary file next
@@ -123,9 +140,14 @@ int run(int argc, char** argv) {
   }
 
   // Output files are written after the run: check now that they can be.
+  // Profiles replace only a regular file or a new name (a FIFO or device
+  // is refused now, not after the run); the commit log is a stream and may
+  // go to a FIFO.
   for (const std::string* out : {&opt.profile_out, &opt.folded_out, &opt.flame_out, &opt.commit_log}) {
     if (out->empty()) continue;
-    const std::string problem = output_path_problem(*out);
+    std::string problem = output_path_problem(*out);
+    if (problem.empty() && out != &opt.commit_log && !minrt::host::check_output_target(*out, false, problem))
+      problem = problem.substr(0, problem.find(" (--write-through"));  // an option firmware-sim does not have
     if (!problem.empty()) die(kExitUsage, problem);
   }
 
@@ -144,11 +166,10 @@ int run(int argc, char** argv) {
   // The ELF argument must name a readable regular file (status 2 like any
   // bad argument); what it contains is the loader's business (status 3).
   {
-    struct stat st {};
-    if (::stat(opt.elf.c_str(), &st) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) die(kExitUsage, opt.elf + ": " + std::strerror(EISDIR));
-    if (!S_ISREG(st.st_mode)) die(kExitUsage, opt.elf + ": not a regular file");
-    if (::access(opt.elf.c_str(), R_OK) != 0) die(kExitUsage, opt.elf + ": " + std::strerror(errno));
+    std::string why;
+    const int fd = minrt::host::open_regular_file(opt.elf, why);
+    if (fd < 0) die(kExitUsage, opt.elf + ": " + why);
+    ::close(fd);
   }
   Machine m(map);
   if (board) m.set_isa(board->isa);
@@ -197,10 +218,17 @@ int run(int argc, char** argv) {
     }
     ucfg.interactive = true;
   }
-  if (!opt.uart_in.empty()) ucfg.in_fd = open_file(opt.uart_in, O_RDONLY);
+  if (!opt.uart_in.empty()) {
+    // A stream on purpose (a FIFO, a terminal), but not a directory; a FIFO
+    // without a writer does not block the open.
+    std::string why;
+    ucfg.in_fd = minrt::host::open_input_stream(opt.uart_in, why);
+    if (ucfg.in_fd < 0) die(kExitUsage, opt.uart_in + ": " + why);
+  }
   if (!opt.uart_out.empty()) ucfg.out_fd = open_file(opt.uart_out, O_WRONLY | O_CREAT | O_TRUNC);
   if (opt.baud) ucfg.cycles_per_byte = model_cfg.clock_hz * 10 / opt.baud;
   if (opt.baud && !ucfg.cycles_per_byte) ucfg.cycles_per_byte = 1;
+  ucfg.max_output = opt.max_output;
   Uart uart(ucfg);
   m.bus().attach_uart(&uart);
 
@@ -211,25 +239,25 @@ int run(int argc, char** argv) {
   m.set_profiler(profiler.get());
   // The trace goes to stderr through its own buffered stream: unbuffered
   // stderr would cost a system call per instruction.
-  std::FILE* trace = nullptr;
-  if (opt.trace) {
-    const int fd = ::dup(STDERR_FILENO);
-    trace = fd >= 0 ? ::fdopen(fd, "w") : nullptr;
-    if (!trace) die(kExitIo, std::string("cannot open the trace stream: ") + std::strerror(errno));
-    std::setvbuf(trace, nullptr, _IOFBF, 1 << 16);
-    m.set_trace(trace);
-  } else if (!opt.commit_log.empty()) {
-    trace = opt.commit_log == "-" ? ::fdopen(::dup(STDOUT_FILENO), "w") : std::fopen(opt.commit_log.c_str(), "w");
-    if (!trace) die(kExitIo, opt.commit_log + ": " + std::strerror(errno));
-    std::setvbuf(trace, nullptr, _IOFBF, 1 << 16);
-    m.set_trace(trace, true);
+  // Every write to it is checked (trace_stream.hpp).
+  TraceStream trace;
+  if (opt.trace || !opt.commit_log.empty()) {
+    const bool to_stdout = opt.commit_log == "-";
+    const int fd = opt.trace || to_stdout ? ::fcntl(opt.trace ? STDERR_FILENO : STDOUT_FILENO, F_DUPFD_CLOEXEC, 3)
+                                          : ::open(opt.commit_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const std::string name = opt.trace ? "the trace (standard error)" : to_stdout ? "the commit log (standard output)"
+                                                                               : "the commit log " + opt.commit_log;
+    if (fd < 0) die(kExitIo, "cannot open " + name + ": " + std::strerror(errno));
+    std::string why;
+    if (!trace.open(fd, name, why)) die(kExitIo, why);
+    m.set_trace(trace.file(), !opt.trace);
   }
   m.set_fpu_model(fpu_model.get());
   m.set_jit(opt.jit);
 
   const double cpu0 = cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
-  const uint64_t max_instructions = opt.max_instructions ? opt.max_instructions : UINT64_MAX;
+  const uint64_t max_instructions = opt.max_instructions;
   StopInfo stop;
   bool killed = false, interrupted = false;
   if (gdb) {
@@ -243,13 +271,18 @@ int run(int argc, char** argv) {
     // trace, nor over the firmware's own output on the same terminal.
     const bool uart_on_terminal = !opt.pty && opt.uart_out.empty() && ::isatty(STDOUT_FILENO);
     RunProgress progress(::isatty(STDERR_FILENO) && !opt.trace && !uart_on_terminal, stderr);
+    if (trace.file() != nullptr) progress.stop_when([&trace] { return trace.failed(); });
     stop = progress.run(m, max_instructions);
     interrupted = progress.interrupted() && stop.cause == StopCause::None;
   }
   const auto t1 = std::chrono::steady_clock::now();
   const double cpu1 = cpu_seconds();
+  // Lost output is an error (status 7 and a line), whatever the firmware's
+  // own status: a full disk, /dev/full, a reader gone.
   uart.flush();
-  if (trace) std::fclose(trace);
+  std::string trace_error;
+  const bool trace_ok = trace.close(trace_error);
+  m.set_trace(nullptr);
   if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
   if (!timed) m.hart().cycles = m.hart().instret;
   if (uart.bytes_dropped())
@@ -265,6 +298,22 @@ int run(int argc, char** argv) {
                  std::chrono::duration<double>(t1 - t0).count(),
                  static_cast<double>(m.hart().instret) / std::chrono::duration<double, std::micro>(t1 - t0).count());
     return kExitInterrupted;
+  }
+  if (uart.output_limited()) {
+    std::fprintf(stderr, "firmware-sim: error: output limit: the firmware sent %llu UART bytes at pc 0x%08x after %llu "
+                 "instructions (--max-output N, --no-limit)\n", static_cast<unsigned long long>(opt.max_output),
+                 m.hart().pc, static_cast<unsigned long long>(m.hart().instret));
+    return kExitLimit;
+  }
+  if (uart.write_errno() != 0 || !trace_ok) {
+    if (uart.write_errno() != 0)
+      std::fprintf(stderr, "firmware-sim: error: cannot write the UART output %s: %s [after %llu instructions]\n",
+                   opt.uart_out.empty() ? "(standard output)" : opt.uart_out.c_str(), std::strerror(uart.write_errno()),
+                   static_cast<unsigned long long>(m.hart().instret));
+    if (!trace_ok)
+      std::fprintf(stderr, "firmware-sim: error: %s [after %llu instructions]\n", trace_error.c_str(),
+                   static_cast<unsigned long long>(m.hart().instret));
+    return kExitIo;
   }
   if (killed) {
     std::fprintf(stderr, "firmware-sim: error: killed by gdb at pc 0x%08x [after %llu instructions, exit status %d]\n",

@@ -106,6 +106,14 @@ void check_memory_map(const MemoryMap& m) {
   // RAM must end below 4 GiB: a2 and the boot block hold its end address.
   if (uint64_t{m.ram_base} + m.ram_size >= (uint64_t{1} << 32))
     fail("RAM " + hex(m.ram_base) + "+" + hex(m.ram_size) + " must end below the top of the 32-bit address space");
+  // A generic UART's offsets are the board file's: reckoned in 64 bits, so
+  // uart_data = 0xffffffff cannot wrap the region round to a few bytes.
+  if (m.uart.kind == UartKind::Generic) {
+    const uint64_t span = uint64_t{m.uart.data > m.uart.status ? m.uart.data : m.uart.status} + m.uart.width;
+    if (uint64_t{m.uart_base} + span > (uint64_t{1} << 32))
+      fail("UART " + hex(m.uart_base) + " with registers at +" + hex(m.uart.data) + " and +" + hex(m.uart.status) +
+           " runs past the top of the 32-bit address space");
+  }
   const uint32_t uart_size = uart_region_size(m.uart);
   if (m.uart_base % 4 || uint64_t{m.uart_base} + uart_size > (uint64_t{1} << 32))
     fail("UART base " + hex(m.uart_base) + " must be 4-byte aligned and leave room for its registers");

@@ -4,7 +4,7 @@ namespace fwsim {
 
 Profiler::Profiler(const SymbolTable& symbols, uint32_t entry_pc) : symbols_(symbols) {
   names_.push_back("(no symbol)");
-  for (size_t i = 0; i < symbols.size(); ++i) names_.push_back(symbols.at(static_cast<int>(i)).name);
+  for (size_t i = 0; i < symbols.size(); ++i) names_.push_back(demangle(symbols.at(static_cast<int>(i)).name));
   active_.assign(names_.size(), 0);
   fn_inclusive_.assign(names_.size(), Cost{});
   for (auto& c : fn_cache_) c = {1u, 0};  // pc 1 is never a target

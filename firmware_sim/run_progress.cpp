@@ -51,7 +51,10 @@ bool RunProgress::interrupted() const { return g_interrupted != 0; }
 StopInfo RunProgress::run(Machine& m, uint64_t max_instructions) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  uint64_t slice = kFirstSlice;
+  // A traced run is slow (a line per instruction): smaller slices, so a
+  // trace whose writes fail stops it soon.
+  const uint64_t smallest = failed_ ? kFirstSlice / 64 : kFirstSlice / 4;
+  uint64_t slice = failed_ ? smallest : kFirstSlice;
   for (;;) {
     const uint64_t done = m.hart().instret;
     const bool last = max_instructions - done <= slice;
@@ -67,11 +70,15 @@ StopInfo RunProgress::run(Machine& m, uint64_t max_instructions) {
       clear();
       return StopInfo{StopCause::None, m.hart().pc};
     }
+    if (failed_ && failed_()) {
+      clear();
+      return StopInfo{StopCause::HostIo, m.hart().pc};
+    }
     const auto t1 = Clock::now();
     const double took = std::chrono::duration<double>(t1 - t0).count();
     const double target = show_ ? kShownSliceSeconds : kQuietSliceSeconds;
     const double scaled = static_cast<double>(slice) * target / std::max(took, 1e-6);
-    slice = std::clamp<uint64_t>(static_cast<uint64_t>(scaled), kFirstSlice / 4, kLargestSlice);
+    slice = std::clamp<uint64_t>(static_cast<uint64_t>(scaled), smallest, kLargestSlice);
     const double elapsed = std::chrono::duration<double>(t1 - start).count();
     if (show_ && elapsed >= kLineAfterSeconds && elapsed - last_draw_ >= kRedrawSeconds) draw(m.hart().instret, elapsed);
   }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 
 #include "machine.hpp"
 
@@ -27,6 +28,9 @@ class RunProgress {
   // interrupted() true.
   StopInfo run(Machine& m, uint64_t max_instructions);
   bool interrupted() const;
+  // Asked between slices: true stops the run with cause HostIo (a trace
+  // whose writes fail: a full disk, a closed pipe).
+  void stop_when(std::function<bool()> failed) { failed_ = std::move(failed); }
 
  private:
   void draw(uint64_t instructions, double seconds);
@@ -34,6 +38,7 @@ class RunProgress {
 
   bool show_;
   std::FILE* out_;
+  std::function<bool()> failed_;
   bool drawn_ = false;
   double last_draw_ = 0;
 };

@@ -75,6 +75,11 @@ int Uart::take_rx(uint64_t now) {
 
 void Uart::send(uint8_t value, uint64_t now) {
   eof_polls_ = idle_polls_ = 0;
+  if (bytes_out_ >= cfg_.max_output) {
+    // A program that prints without end stops here, not on a full disk.
+    output_limited_ = io_error_ = true;
+    return;
+  }
   out_buf_.push_back(value);
   ++bytes_out_;
   tx_free_at_ = (now > tx_free_at_ ? now : tx_free_at_) + cfg_.cycles_per_byte;
@@ -217,6 +222,7 @@ void Uart::flush() {
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       io_error_ = true;
+      if (write_errno_ == 0) write_errno_ = n < 0 ? errno : EIO;
       break;
     }
     done += static_cast<size_t>(n);

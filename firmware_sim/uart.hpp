@@ -21,6 +21,7 @@ class Uart {
     bool interactive = false;        // pty: flush output eagerly
     uint64_t cycles_per_byte = 0;    // 0 = no pacing
     uint64_t stall_polls = 2000000;  // status polls after input EOF before giving up
+    uint64_t max_output = UINT64_MAX;  // bytes sent before the run stops (--max-output)
     UartLayout layout;               // register interface
   };
 
@@ -34,7 +35,10 @@ class Uart {
   void write(uint32_t offset, uint32_t value, uint64_t now);
 
   bool stalled() const { return eof_polls_ >= cfg_.stall_polls; }
+  // The run must stop: a write failed, or --max-output was reached.
   bool io_error() const { return io_error_; }
+  bool output_limited() const { return output_limited_; }
+  int write_errno() const { return write_errno_; }  // of the failed write, 0 if none
   void flush();
 
   uint64_t bytes_out() const { return bytes_out_; }
@@ -72,6 +76,8 @@ class Uart {
   uint64_t dropped_ = 0;  // bytes sent or received while the UART was off
   uint64_t bytes_out_ = 0, bytes_in_ = 0;
   bool io_error_ = false;
+  bool output_limited_ = false;
+  int write_errno_ = 0;
 };
 
 }  // namespace fwsim

@@ -1,10 +1,11 @@
-// Reading a whole input file on the host with the system's reason on
-// failure: a directory, an unreadable file or one over a size bound gets a
-// message, never an exception or a silent empty read.
+// The host tools' scene-size bound and minrt's scene reading; the rule for
+// opening and reading every input file is posix/input_file.hpp's.
 #pragma once
 
 #include <cstddef>
 #include <string>
+
+#include "posix/input_file.hpp"  // open_regular_file, read_whole_file, read_whole_fd
 
 namespace minrt::host {
 
@@ -16,21 +17,6 @@ namespace minrt::host {
 // cannot reach the board; on the host the bound stops a wrong path to a huge
 // file at once with "larger than N bytes" rather than filling the memory.
 inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 28;
-
-// Opens `path` for reading without blocking (a FIFO with no writer would
-// block open() forever) and keeps it only when it is a regular file: -1
-// with the reason ("not a regular file (a FIFO)", the system's error)
-// otherwise. The descriptor is blocking again when returned.
-int open_regular_file(const std::string& path, std::string& error);
-
-// Reads `path` into `out` (a regular file only: open_regular_file). False with `error` set to the reason ("Is a
-// directory", "No such file or directory", "larger than N bytes", ...) when
-// it cannot; `max_bytes` bounds what is read (every caller names its bound).
-bool read_whole_file(const std::string& path, std::string& out, std::string& error, std::size_t max_bytes);
-
-// The same from an open descriptor (minrt's standard input), left open;
-// `out` is empty after a failure.
-bool read_whole_fd(int fd, std::string& out, std::string& error, std::size_t max_bytes);
 
 // minrt's scene files: reads `path` (unless it is "-", whose text the caller
 // already has) into `text`; on failure prints "minrt: error: cannot read

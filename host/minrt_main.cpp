@@ -157,7 +157,11 @@ int run(int argc, char** argv) {
           else if (v == "portable-fast") o.variant.shims = host::ShimSet::kPortableFast;
           else if (v == "portable-min") o.variant.shims = host::ShimSet::kPortableMin;
           else return "bad --shims '" + v + "': expected libm, portable, portable-fast or portable-min";
-        } else if (name == "output") o.output_path = v;
+        } else if (name == "output") {
+          // An empty name would mean "no -o" (standard output) further on.
+          if (v.empty()) return "bad -o '': expected a file name, or - for standard output";
+          o.output_path = v;
+        }
         else if (name == "write-through") o.write_through = true;
         else if (name == "allow-any-output") o.allow_any_output = true;
         else if (name == "sync") sync = true;

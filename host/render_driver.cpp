@@ -203,7 +203,8 @@ int run_driver(const DriverOptions& options) {
         rows_to_file.started() ? rows_to_file.finish(why) : write_image(output.file(), kind, image, why);
     if (!written || !output.commit(why)) {
       output.discard();
-      print_error(style, "minrt: error: cannot write " + target + ": " + (why.empty() ? "write error" : why));
+      // commit's reason already names the file; the writers' do not.
+      print_error(style, "minrt: error: " + (written ? why : "cannot write " + target + ": " + (why.empty() ? "write error" : why)));
       return io_status(style);
     }
   }

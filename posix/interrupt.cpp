@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <signal.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -16,6 +17,10 @@ char g_path[4096];
 volatile sig_atomic_t g_have_path = 0;
 volatile sig_atomic_t g_children[kMaxChildren] = {};
 volatile sig_atomic_t g_signal = 0;  // the interrupt that arrived while held, 0: none
+// The terminal settings put back on the way out (host-send's port).
+volatile sig_atomic_t g_restore_fd = -1;
+unsigned long g_restore_request = 0;
+unsigned char g_restore_arg[kMaxRestoreBytes];
 std::atomic<int> g_holds{0};
 
 // Every signal whose default action ends the process and that a handler
@@ -24,9 +29,19 @@ constexpr int kFatalSignals[] = {SIGINT,  SIGTERM, SIGHUP,    SIGQUIT, SIGUSR1, 
                                  SIGPIPE, SIGXCPU, SIGXFSZ,   SIGVTALRM, SIGPROF, SIGABRT, SIGSEGV,
                                  SIGBUS,  SIGILL,  SIGFPE,    SIGSYS,  SIGTRAP};
 
-bool is_interrupt(int sig) { return sig == SIGINT || sig == SIGTERM || sig == SIGHUP; }
+// The signals sent from outside (a key, kill, a timer): held like Ctrl-C.
+// The others (SIGSEGV, SIGABRT, ...) come from the program's own fault and
+// cannot wait; the handler still puts the port's settings back.
+constexpr int kInterrupts[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU};
+
+bool is_interrupt(int sig) {
+  for (int i : kInterrupts)
+    if (sig == i) return true;
+  return false;
+}
 
 void clean_up() {
+  if (g_restore_fd >= 0) ::ioctl(g_restore_fd, g_restore_request, g_restore_arg);
   if (g_have_path) ::unlink(g_path);
   for (volatile sig_atomic_t& c : g_children)
     if (c > 0) ::kill(static_cast<pid_t>(c), SIGTERM);
@@ -65,9 +80,7 @@ void install_signal_cleanup() {
     sigemptyset(&sa.sa_mask);
     // Each interrupt blocks the others while the handler runs: two of them
     // cannot clean up at once.
-    sigaddset(&sa.sa_mask, SIGINT);
-    sigaddset(&sa.sa_mask, SIGTERM);
-    sigaddset(&sa.sa_mask, SIGHUP);
+    for (int i : kInterrupts) sigaddset(&sa.sa_mask, i);
     ::sigaction(sig, &sa, nullptr);
   }
 }
@@ -82,6 +95,17 @@ void remove_on_signal(const char* path) {
 }
 
 void forget_removal() { g_have_path = 0; }
+
+void restore_on_signal(int fd, unsigned long request, const void* arg, std::size_t size) {
+  install_signal_cleanup();
+  if (size > sizeof g_restore_arg) return;
+  g_restore_fd = -1;
+  g_restore_request = request;
+  std::memcpy(g_restore_arg, arg, size);
+  g_restore_fd = fd;
+}
+
+void forget_restore() { g_restore_fd = -1; }
 
 void stop_on_signal(pid_t child) {
   install_signal_cleanup();

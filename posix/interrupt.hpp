@@ -6,15 +6,21 @@
 //
 // A tool with state to put back first (host-send: the serial port's
 // settings, the simulator's orderly stop) holds interrupts around that
-// work: SIGINT, SIGTERM and SIGHUP then only set a flag that its loops
-// poll (interrupted()); they unwind and call die_of_interrupt(). A signal
-// that arrives while nothing is held ends the process at once.
+// work: the signals sent from outside (SIGINT, SIGTERM, SIGHUP, SIGQUIT,
+// SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU) then only set a
+// flag that its loops poll (interrupted()); they unwind and call
+// die_of_interrupt(). A signal that arrives while nothing is held ends the
+// process at once, and so does a fault (SIGSEGV, SIGABRT, ...) even while
+// held; either way the handler first puts back the terminal settings
+// registered with restore_on_signal().
 //
 // Everything here is async-signal-safe on the handler's side: fixed
 // buffers, unlink and kill only.
 #pragma once
 
 #include <sys/types.h>
+
+#include <cstddef>
 
 namespace minrt::host {
 
@@ -28,13 +34,20 @@ void install_signal_cleanup();
 void remove_on_signal(const char* path);
 void forget_removal();
 
+// A terminal's settings put back by the handler before the process ends of
+// a signal: ioctl(fd, request, copy of arg) (host-send's port: TCSETS2 and
+// the termios2 found at open). One at a time; arg at most kMaxRestoreBytes.
+inline constexpr std::size_t kMaxRestoreBytes = 64;
+void restore_on_signal(int fd, unsigned long request, const void* arg, std::size_t size);
+void forget_restore();
+
 // A child process a signal stops with SIGTERM on the way out (its own
 // parent-death signal covers SIGKILL). Up to kMaxChildren at once.
 inline constexpr int kMaxChildren = 8;
 void stop_on_signal(pid_t child);
 void forget_child(pid_t child);
 
-// While at least one hold is in place, SIGINT, SIGTERM and SIGHUP only
+// While at least one hold is in place, the interrupts above only
 // set the flag; releasing the last hold with the flag set dies of the
 // signal, like a blocked signal delivered when unblocked.
 void hold_interrupts();
@@ -47,7 +60,7 @@ class InterruptsHeld {
   InterruptsHeld& operator=(const InterruptsHeld&) = delete;
 };
 
-// Whether SIGINT, SIGTERM or SIGHUP has arrived (while held).
+// Whether one of the interrupts has arrived (while held).
 bool interrupted();
 
 // Removes the file, stops the children and dies of the signal that

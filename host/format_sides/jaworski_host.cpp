@@ -32,8 +32,9 @@ class JaworskiScene final : public PreparedScene {
 template <class M>
 std::unique_ptr<PreparedScene> prepare_with(const SceneInput& in, std::string& error) {
   using R = typename M::real;
-  // Every item takes at least two bytes that are not blank.
-  int64_t capacity = static_cast<int64_t>(content_bytes(in.text) / 2 + 4);
+  // Every item takes at least two bytes that are neither blank nor in a
+  // comment (a guess too small grows below).
+  int64_t capacity = static_cast<int64_t>(content_bytes_outside_comments(in.text, '#') / 2 + 4);
   for (int growth = 0;; ++growth, capacity *= 2) {
     if (capacity > INT32_MAX / 2) capacity = INT32_MAX / 2;
     const auto n = static_cast<int32_t>(capacity);

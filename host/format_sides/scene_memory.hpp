@@ -23,6 +23,19 @@ inline std::size_t content_bytes(const std::string& text) {
   return n;
 }
 
+// The same outside comments that run from `marker` to the end of the line
+// (Jaworski's #): a scene of one sphere and a 10 MB comment is one sphere.
+inline std::size_t content_bytes_outside_comments(const std::string& text, char marker) {
+  std::size_t n = 0;
+  bool in_comment = false;
+  for (char c : text) {
+    if (c == '\n') in_comment = false;
+    else if (c == marker) in_comment = true;
+    n += !in_comment && c != ' ' && c != '\t' && c != '\r' && c != '\n';
+  }
+  return n;
+}
+
 // Lines with something other than blanks on them.
 inline std::size_t content_lines(const std::string& text) {
   std::size_t n = 0;

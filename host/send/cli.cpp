@@ -5,8 +5,11 @@
 #include <cstring>
 #include <vector>
 
+#include <unistd.h>
+
 #include "core/base/text_numbers.hpp"
 #include "posix/command_line.hpp"
+#include "posix/input_file.hpp"
 #include "verify.hpp"
 
 namespace minrt::send {
@@ -21,11 +24,13 @@ bool ends_with(const std::string& s, const char* tail) {
 }
 
 bool is_elf(const char* path) {
-  std::FILE* f = std::fopen(path, "rb");
-  if (f == nullptr) return false;
+  // Opened by the one input rule: a FIFO named here must not block.
+  std::string why;
+  const int fd = minrt::host::open_regular_file(path, why);
+  if (fd < 0) return false;
   unsigned char m[4] = {};
-  const bool ok = std::fread(m, 1, 4, f) == 4 && m[0] == 0x7f && m[1] == 'E' && m[2] == 'L' && m[3] == 'F';
-  std::fclose(f);
+  const bool ok = ::read(fd, m, 4) == 4 && m[0] == 0x7f && m[1] == 'E' && m[2] == 'L' && m[3] == 'F';
+  ::close(fd);
   return ok;
 }
 
@@ -112,6 +117,11 @@ const std::vector<Group>& option_groups() {
             "not ask for the reply's (the plain protocol bytes)"},
            {"first-byte-timeout", 0, "S", "wait for the reply at most S seconds (default 120)"},
            {"idle-timeout", 0, "S", "longest silence within the reply (default 30)"},
+           {"reply-timeout", 0, "S",
+            "raw, course: the whole reply within S seconds of the\n"
+            "upload (default: the first-byte timeout + 8 times the\n"
+            "image's time on the line, at least 20 s more)"},
+           {"sim-start-timeout", 0, "S", "--sim: wait at most S seconds for the simulator's pty\n(default 10)"},
            {"progress", 0, nullptr,
             "draw the progress line even when stderr is no\n"
             "terminal (on a terminal it is drawn unless -q)"},
@@ -207,10 +217,14 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
     o.expect_sha256 = v;
   } else if (name == "check") o.check = RawCheck::kRequire;
   else if (name == "no-check") o.check = RawCheck::kOff;
-  else if (name == "first-byte-timeout" || name == "idle-timeout") {
+  else if (name == "first-byte-timeout" || name == "idle-timeout" || name == "reply-timeout" ||
+           name == "sim-start-timeout") {
     double s = 0;
     if (!parse_seconds(v, s)) return "bad --" + name + " '" + v + "': expected seconds > 0";
-    (name == "idle-timeout" ? o.idle_timeout : o.first_byte_timeout) = s;
+    (name == "idle-timeout"        ? o.idle_timeout
+     : name == "reply-timeout"     ? o.reply_timeout
+     : name == "sim-start-timeout" ? o.sim_start_timeout
+                                   : o.first_byte_timeout) = s;
   } else if (name == "list") o.list = true;
   else if (name == "quiet") o.quiet = true;
   else if (name == "progress") o.progress_forced = true;

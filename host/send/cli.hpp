@@ -34,6 +34,8 @@ struct Options {
   bool as_received = false;    // --as-received: a PNG as the board streamed it (stored deflate)
   double first_byte_timeout = 120;
   double idle_timeout = 30;
+  double reply_timeout = 0;       // --reply-timeout; 0: from the image and the line speed
+  double sim_start_timeout = 10;  // --sim-start-timeout
   std::string verify_ref;
   std::string expect_sha256;
   RawCheck check = RawCheck::kAuto;  // raw: --check / --no-check (the CRC-32 trailer)

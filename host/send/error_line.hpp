@@ -9,6 +9,8 @@
 
 #include <minrt/serial_protocol.h>
 
+#include "terminal_text.hpp"
+
 namespace minrt::send {
 
 class ErrorLine {
@@ -18,7 +20,7 @@ class ErrorLine {
   void start(std::uint8_t c) { text_.assign(1, static_cast<char>(c)); }
 
   // After kMessage, text() is the firmware's message without the marker;
-  // after kNotMarker it is the whole line.
+  // after kNotMarker it is the whole line; either escaped for the terminal.
   Step feed(std::uint8_t c) {
     if (c == '\n') {
       const std::string marker = MINRT_ERROR_MARKER;
@@ -30,7 +32,7 @@ class ErrorLine {
     if (c != '\r') text_.push_back(static_cast<char>(c));
     return Step::kMore;
   }
-  const std::string& text() const { return text_; }
+  std::string text() const { return terminal_safe(text_); }
 
   // For the receivers: feeds `c`; true while the line goes on. At its end
   // `firmware` says whether it was the firmware's message (then `message`
@@ -40,11 +42,11 @@ class ErrorLine {
       case Step::kMore: return true;
       case Step::kMessage:
         firmware = true;
-        message = text_;
+        message = text();
         return false;
       case Step::kNotMarker:
         firmware = false;
-        message = "unexpected reply line: " + text_;
+        message = "unexpected reply line: " + text();
         return false;
       case Step::kTooLong:
         firmware = false;

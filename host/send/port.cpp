@@ -130,6 +130,8 @@ void SerialPort::open(const std::string& device, const PortSettings& settings) {
   std::memcpy(saved_, &t, sizeof t);
   saved_valid_ = true;
   fd_ = fd;
+  // Every signal that ends host-send puts them back too, a fault included.
+  minrt::host::restore_on_signal(fd, TCSETS2, saved_, sizeof t);
 
   make_raw(t);
   t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | CRTSCTS | CBAUD | (CBAUD << IBSHIFT));
@@ -171,6 +173,7 @@ void SerialPort::close() {
     ::ioctl(fd_, TCSETS2, reinterpret_cast<struct termios2*>(saved_));
     saved_valid_ = false;
   }
+  minrt::host::forget_restore();
   ::ioctl(fd_, TIOCNXCL);
   ::flock(fd_, LOCK_UN);
   ::close(fd_);

@@ -29,6 +29,7 @@ class Progress {
   void handshake(const std::string& what, int timeout_s, double waited_s);
   void sending_program(std::uint64_t sent, std::uint64_t total);
   void finish();                               // clears the line
+  std::uint64_t expected_bytes() const { return expected_; }
 
   // The lines' texts (for tests), independent of `enabled`. Rates in bytes
   // per second; seconds_left < 0: not known yet.

@@ -12,6 +12,7 @@
 
 #include "core/image/bmp_writer.hpp"
 #include "core/image/png_writer.hpp"
+#include "terminal_text.hpp"
 #include "core/image/ppm_writer.hpp"
 #include "posix/interrupt.hpp"
 #include "protocol/protocol_framed.hpp"
@@ -192,7 +193,8 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
           plain.push_back(static_cast<char>(buf[i]));
           const std::string marker = MINRT_ERROR_MARKER;
           if (buf[i] == '\n' && plain.compare(0, marker.size(), marker) == 0)
-            return fail(TransferResult::Status::kFirmwareError, plain.substr(marker.size(), plain.size() - marker.size() - 1));
+            return fail(TransferResult::Status::kFirmwareError,
+                        terminal_safe(plain.substr(marker.size(), plain.size() - marker.size() - 1)));
         }
         if (parser.feed(buf[i]) != framed::FrameParser::kFrame) continue;
         any_frame = true;
@@ -210,7 +212,7 @@ TransferResult run_framed_image(Exchange& ex, const std::string& scene_text, Fra
             break;
           case framed::kError:
             return fail(TransferResult::Status::kFirmwareError,
-                        std::string(reinterpret_cast<const char*>(parser.payload()), parser.length()));
+                        terminal_safe(std::string(reinterpret_cast<const char*>(parser.payload()), parser.length())));
           case framed::kHeader: {
             acked = true;
             if (parser.length() != 4) break;

@@ -3,6 +3,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -22,8 +23,16 @@ int ms_since(Clock::time_point t) {
 }
 }  // namespace
 
+long long reply_deadline_ms(const Timeouts& t, std::uint64_t image_bytes, std::uint32_t baud) {
+  const double line_ms = static_cast<double>(image_bytes) * 10.0 * 1000.0 / (baud != 0 ? baud : 115200);
+  return t.first_byte_ms + static_cast<long long>(std::max(20000.0, 8 * line_ms));
+}
+
 template <class Receiver>
 TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
+  long long reply_ms = ex.timeouts.reply_ms;
+  if (reply_ms == 0)
+    reply_ms = ex.progress != nullptr ? reply_deadline_ms(ex.timeouts, ex.progress->expected_bytes(), ex.port.applied_baud()) : -1;
   TransferResult r;
   const int fd = ex.port.fd();
   std::size_t sent = 0;
@@ -103,6 +112,22 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
       }
     }
     // Timeouts.
+    if (!sending && reply_ms > 0 && ms_since(sent > 0 ? last_tx : t0) > reply_ms) {
+      rx.finish();
+      if (rx.done()) {
+        t_end = last_rx;
+        break;
+      }
+      if (rx.firmware_error()) {
+        r.status = TransferResult::Status::kFirmwareError;
+        r.message = rx.message();
+        r.sent = sent;
+        r.received = rx.bytes();
+        return r;
+      }
+      return fail("the reply did not end within " + std::to_string(reply_ms / 1000) + " s of the upload (" +
+                  std::to_string(rx.bytes()) + " bytes received; --reply-timeout S)");
+    }
     if (sending) {
       if (ms_since(last_tx) > ex.timeouts.idle_ms)
         return fail("the board stopped reading the scene (" + std::to_string(sent) + " of " +

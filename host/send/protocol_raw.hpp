@@ -23,7 +23,16 @@ struct Timeouts {
   // After the image: listen this long for stray bytes, which mean the line
   // duplicated or inserted some and the image is damaged (0: do not wait).
   int trailing_ms = 250;
+  // The whole reply, from the end of sending to its last byte (a board that
+  // drips a byte just inside the idle timeout must still end): 0 for
+  // reply_deadline_ms() of the image the progress line expects, < 0 none.
+  long long reply_ms = 0;
 };
+
+// The default bound on a reply: the first-byte timeout (the board's render
+// time) plus 8 times the image's time on the line (10 bits a byte at
+// `baud`, 115200 when 0), at least 20 s more.
+long long reply_deadline_ms(const Timeouts& t, std::uint64_t image_bytes, std::uint32_t baud);
 
 struct TransferResult {
   enum class Status { kOk, kFirmwareError, kSceneError, kLinkError };

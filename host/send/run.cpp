@@ -182,6 +182,7 @@ SimConfig simulator_config(const Options& o) {
     if (o.sim_elf.empty()) cfg.firmware = MINRT_RTL_FIRMWARE_DEFAULT;
   }
   cfg.baud = o.baud_given ? o.port_settings.baud : 0;
+  cfg.startup_timeout_ms = static_cast<int>(o.sim_start_timeout * 1000);
   cfg.firmware_args = {"--size", std::to_string(o.spec.width) + "x" + std::to_string(o.spec.height), "--format",
                        o.spec.kind == PpmKind::kP3 ? "p3" : "p6"};
   if (o.sim_ram_bytes != 0) {
@@ -276,6 +277,7 @@ TransferResult transfer(const Options& o, const Job& job, Link& link, minrt::hos
               {static_cast<int>(o.first_byte_timeout * 1000), static_cast<int>(o.idle_timeout * 1000)},
               &progress};
   ex.check = o.check;
+  ex.timeouts.reply_ms = static_cast<long long>(o.reply_timeout * 1000);
   minrt::host::ImageStreamDecoder live(window);
   if (window.is_open()) ex.live = &live;
   TransferResult r = exchange_scene(o, job, ex);

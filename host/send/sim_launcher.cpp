@@ -1,6 +1,7 @@
 #include "sim_launcher.hpp"
 
 #include "posix/interrupt.hpp"
+#include "terminal_text.hpp"
 
 #include <fcntl.h>
 #include <sys/prctl.h>
@@ -9,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -25,6 +27,16 @@ namespace minrt::send {
 
 namespace {
 const char kPtyPrefix[] = "uart on ";
+// What is kept of the simulator's own output (its messages, shown when it
+// fails): a simulator that floods its standard error cannot fill the memory.
+constexpr std::size_t kMaxKeptOutput = std::size_t{1} << 20;
+// A start-up line longer than this is not the pty line: kept as output.
+constexpr std::size_t kMaxLine = 4096;
+constexpr std::size_t kMaxShownLine = 512;  // of a line shown to the user
+
+void append_capped(std::string& to, const char* bytes, std::size_t n) {
+  if (to.size() < kMaxKeptOutput) to.append(bytes, std::min(n, kMaxKeptOutput - to.size()));
+}
 long long now_ms() {
   using namespace std::chrono;
   return duration_cast<milliseconds>(steady_clock::now().time_since_epoch()).count();
@@ -163,25 +175,35 @@ bool SimLauncher::spawn(std::vector<std::string> args, int startup_timeout_ms, s
         drainer_ = std::thread([this] { drain(); });
         return true;
       }
-      output_ += line + "\n";
+      append_capped(output_, line.data(), line.size());
+      append_capped(output_, "\n", 1);
+    }
+    if (pending.size() > kMaxLine) {
+      append_capped(output_, pending.data(), pending.size());
+      pending.clear();
     }
     const long long left = deadline - now_ms();
     if (left <= 0) {
       error = "simulator did not announce its pty within " + std::to_string(startup_timeout_ms / 1000) + " s";
       break;
     }
+    // Read only what poll says is there: a simulator that prints nothing
+    // must not hold host-send past the deadline in a blocking read.
     pollfd p{err_fd_, POLLIN, 0};
-    ::poll(&p, 1, static_cast<int>(left));
-    char buf[512];
+    const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    if (ready <= 0) continue;  // timed out (the deadline is checked above) or EINTR
+    char buf[4096];
     const ssize_t n = ::read(err_fd_, buf, sizeof buf);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
     if (n > 0) {
       pending.append(buf, static_cast<std::size_t>(n));
-    } else if (n == 0) {
-      output_ += pending;
+    } else {
+      append_capped(output_, pending.data(), pending.size());
       std::string last = output_;
       while (!last.empty() && last.back() == '\n') last.pop_back();
       if (last.rfind('\n') != std::string::npos) last = last.substr(last.rfind('\n') + 1);
-      error = "simulator exited before opening its pty" + (last.empty() ? std::string() : ": " + last);
+      if (last.size() > kMaxShownLine) last = last.substr(0, kMaxShownLine) + "...";
+      error = "simulator exited before opening its pty" + (last.empty() ? std::string() : ": " + terminal_safe(last));
       break;
     }
   }
@@ -195,7 +217,7 @@ void SimLauncher::drain() {
     const ssize_t n = ::read(err_fd_, buf, sizeof buf);
     if (n > 0) {
       std::lock_guard<std::mutex> lock(mu_);
-      if (output_.size() < (1u << 20)) output_.append(buf, static_cast<std::size_t>(n));
+      append_capped(output_, buf, static_cast<std::size_t>(n));
       continue;
     }
     if (n < 0 && errno == EINTR) continue;
@@ -205,7 +227,18 @@ void SimLauncher::drain() {
 
 std::string SimLauncher::output() {
   std::lock_guard<std::mutex> lock(mu_);
-  return output_;
+  // Lines kept, every other byte escaped and long lines cut: it goes to
+  // the user's terminal.
+  std::string shown;
+  std::size_t from = 0;
+  while (from < output_.size()) {
+    const std::size_t nl = std::min(output_.find('\n', from), output_.size());
+    shown += terminal_safe(output_.substr(from, std::min(nl - from, kMaxShownLine)));
+    if (nl - from > kMaxShownLine) shown += "...";
+    if (nl < output_.size()) shown += '\n';
+    from = nl + 1;
+  }
+  return shown;
 }
 
 int SimLauncher::stop(int timeout_ms) {

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -282,4 +283,54 @@ TEST_CASE("an output name a scene chooses stays in the scene's or the working fo
   INFO(named.err);
   CHECK(named.status == 0);
   CHECK(::access(d.file("y.png").c_str(), F_OK) == 0);
+}
+
+TEST_CASE("a Jaworski scene of one sphere and a 10 MB comment renders in little memory") {
+  // The arena follows what the scene holds, not its bytes: a comment costs
+  // nothing (sized from the file, this took 873 MB).
+  const Dir d;
+  std::string scene = "# " + std::string(10u << 20, 'c') + "\n";
+  scene += "imWidth 16\nimHeight 12\ncanvWidth 4\ncanvHeight 3\ndepth 4\nlights\ndirectional 1 white 1 -1 2\n"
+           "objects\nsphere 0 0 6 2.5 diffusive white\n";
+  d.write("big-comment.txt", scene);
+  const Run r = run({HS_MINRT, "-o", "out.bmp", "big-comment.txt"}, d.path);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK(r.max_rss_kib < kMemoryBoundKiB);
+  // The same image as the scene without its comment.
+  d.write("plain.txt", scene.substr(scene.find('\n') + 1));
+  REQUIRE(run({HS_MINRT, "-o", "plain.bmp", "plain.txt"}, d.path).status == 0);
+  std::ifstream a(d.file("out.bmp"), std::ios::binary), b(d.file("plain.bmp"), std::ios::binary);
+  std::stringstream sa, sb;
+  sa << a.rdbuf();
+  sb << b.rdbuf();
+  CHECK(sa.str().size() > 54);
+  CHECK(sa.str() == sb.str());
+}
+
+TEST_CASE("minrt -o with an empty name is a usage error, not standard output") {
+  const Dir d;
+  d.write("s.txt", "imWidth 4\nimHeight 4\ncanvWidth 4\ncanvHeight 3\ndepth 1\nlights\nobjects\n");
+  const Run r = run({HS_MINRT, "-o", "", "s.txt"}, d.path);
+  CHECK(r.status == 2);
+  CHECK(r.err.find("expected a file name") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+TEST_CASE("a write error on minrt's standard output names it once") {
+  // /dev/full as standard output: every write fails with ENOSPC.
+  const Dir d;
+  d.write("s.txt", "imWidth 4\nimHeight 4\ncanvWidth 4\ncanvHeight 3\ndepth 1\nlights\nobjects\n");
+  const std::string err_path = d.file(".stderr");
+  const std::string cmd = std::string(HS_MINRT) + " -o - " + d.file("s.txt") + " >/dev/full 2>" + err_path;
+  const int rc = std::system(cmd.c_str());
+  std::ifstream f(err_path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string err = ss.str();
+  CHECK(WIFEXITED(rc));
+  CHECK(WEXITSTATUS(rc) != 0);
+  CHECK(err.find("cannot write -:") != std::string::npos);
+  CHECK(err.find("cannot write -: cannot write") == std::string::npos);
+  CHECK(std::count(err.begin(), err.end(), '\n') == 1);
 }

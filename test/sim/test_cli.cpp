@@ -125,7 +125,7 @@ TEST_CASE("bad usage is a one-line error with status 2", "[cli][usage]") {
   CHECK(dir.err == "firmware-sim: error: /tmp: Is a directory\n");
   Result dev = sim("/dev/zero");
   CHECK(dev.status == 2);
-  CHECK(dev.err == "firmware-sim: error: /dev/zero: not a regular file\n");
+  CHECK(dev.err == "firmware-sim: error: /dev/zero: not a regular file (a device)\n");
   // A file larger than the RAM it would load into: refused before reading.
   const std::string big = temp_path("big.elf");
   spit(big, slurp(kElf) + std::string(5u << 20, '\0'));

@@ -75,7 +75,7 @@ TEST_CASE("bad FPU options are a one-line error with status 2", "[cli][fpu][usag
   one_line(sim(kElf + " --fpu"));
   r = sim("--fpu-model /nonexistent/team.cfg " + kElf);
   one_line(r);
-  CHECK(r.err == "firmware-sim: error: /nonexistent/team.cfg: cannot read FPU model\n");
+  CHECK(r.err == "firmware-sim: error: /nonexistent/team.cfg: cannot read FPU model: No such file or directory\n");
   const std::string cfg = temp_path("bad.cfg");
   spit(cfg, "div = recip-mul\nsqrt = cordic\n");
   r = sim("--fpu-model " + cfg + " " + kElf);
