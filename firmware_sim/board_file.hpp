@@ -18,6 +18,7 @@ struct Board {
   uint32_t reset = 0;
   MemoryMap map;                          // RAM, ROM, UART, halt
   std::optional<uint32_t> uart_divisor;   // for the firmware's UART set-up
+  uint32_t clock_hz = 0;                  // 0: not given (the cycle model's clock)
 };
 
 // Throws std::runtime_error("ORIGIN:LINE: reason") for a bad line, a

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 
 #include <minrt/memory_map.h>
 
@@ -58,8 +59,17 @@ bool Uart::data_ready(uint64_t now) {
   return now >= rx_ready_at_;
 }
 
+namespace {
+long long wall_ns() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+}  // namespace
+
 bool Uart::poll_rx(uint64_t now) {
   if (data_ready(now)) return true;
+  if (cfg_.real_board && wait_since_ns_ == 0) wait_since_ns_ = wall_ns();
   if (eof_) ++eof_polls_;
   else if (++idle_polls_ == 64) flush();  // the firmware is waiting for input: show what it printed
   return false;
@@ -68,6 +78,15 @@ bool Uart::poll_rx(uint64_t now) {
 int Uart::take_rx(uint64_t now) {
   eof_polls_ = idle_polls_ = 0;
   if (!data_ready(now)) return -1;
+  if (wait_since_ns_ != 0) {
+    const double waited = static_cast<double>(wall_ns() - wait_since_ns_) / 1e9;
+    wait_since_ns_ = 0;
+    if (waited >= 1.0) {
+      std::fprintf(stderr, "firmware-sim: the board waited %.1f s for the host (%.0f cycles at %llu Hz)\n", waited,
+                   waited * static_cast<double>(cfg_.clock_hz), static_cast<unsigned long long>(cfg_.clock_hz));
+      std::fflush(stderr);
+    }
+  }
   holding_ = false;
   ++bytes_in_;
   return in_buf_[in_pos_++];
@@ -180,6 +199,13 @@ void Uart::flush() {
   while (done < out_buf_.size()) {
     ssize_t n = ::write(cfg_.out_fd, out_buf_.data() + done, out_buf_.size() - done);
     if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno == EAGAIN && cfg_.real_board) {
+      // A host that reads takes the bytes within a moment; none does.
+      pollfd p{cfg_.out_fd, POLLOUT, 0};
+      if (::poll(&p, 1, 200) > 0) continue;
+      dropped_ += out_buf_.size() - done;
+      break;
+    }
     if (n <= 0) {
       io_error_ = true;
       break;
