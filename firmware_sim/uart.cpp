@@ -20,6 +20,8 @@ constexpr uint32_t kSifiveTxdata = 0x00, kSifiveRxdata = 0x04, kSifiveTxctrl = 0
 constexpr uint32_t kSifiveFlag = 0x80000000u;  // txdata: full; rxdata: empty
 // Empty polls answered at full speed before the host is waited for.
 constexpr uint64_t kSpinPolls = 4096;
+// The same for --real-board: above the firmware's MINRT_IDLE_POLLS_DEFAULT.
+constexpr uint64_t kBoardSpinPolls = 4u << 20;
 }  // namespace
 
 bool Uart::fill_input() {
@@ -34,7 +36,12 @@ bool Uart::fill_input() {
   // once; simulated time is not affected.
   if (idle_polls_ % 64 != 0) return false;
   pollfd p{cfg_.in_fd, POLLIN, 0};
-  const timespec wait{0, idle_polls_ >= kSpinPolls ? 100000 : 0};
+  // A real board (--real-board) spins longer first, so a firmware's own
+  // idle count (an upload cut short by a host that died) runs out in
+  // about the time it would on hardware, not after thousands of sleeps
+  // whose length depends on the host's load.
+  const uint64_t spin = cfg_.real_board ? kBoardSpinPolls : kSpinPolls;
+  const timespec wait{0, idle_polls_ >= spin ? 100000 : 0};
   int r = ::ppoll(&p, 1, &wait, nullptr);
   if (r < 0 && errno == EINTR) return false;
   if (r == 0) return false;

@@ -209,6 +209,8 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
     if (!parse_seconds(v, s)) return "bad --" + name + " '" + v + "': expected seconds > 0";
     (name == "idle-timeout" ? o.idle_timeout : o.first_byte_timeout) = s;
   } else if (name == "list") o.list = true;
+  else if (name == "probe") o.probe = true;
+  else if (name == "no-handshake") o.handshake = false;
   else if (name == "quiet") o.quiet = true;
   else if (name == "progress") o.progress_forced = true;
   else if (name == "show") o.show = true;
