@@ -18,8 +18,10 @@
  *   - one text line: MINRT_ERROR_MARKER, then "LINE:COL: message" for a scene
  *     error or just "message" for anything else, then '\n'. Nothing else
  *     follows.
- *   The machine then halts with one of the MINRT_STATUS_* codes (through the
- *   test finisher, so a simulator or QEMU exits with it).
+ *   With boot arguments the machine then halts with one of the
+ *   MINRT_STATUS_* codes (through the test finisher, so a simulator or QEMU
+ *   exits with it); a board without any waits for the next scene instead
+ *   (unless its board file says after_image = halt; the session below).
  *   A host that asks for it first (MINRT_CHECK_REQUEST, below) gets the
  *   image between an announce byte and a CRC-32 trailer.
  */
