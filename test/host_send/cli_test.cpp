@@ -176,7 +176,7 @@ const std::map<std::string, Sample>& samples() {
 
 }  // namespace
 
-TEST_CASE("--board with --port names the board expected there; --probe takes a port and no scene", "[cli]") {
+TEST_CASE("host-send --board with --port names the board expected there, --probe takes a port and no scene", "[cli]") {
   Options o;
   std::string error;
   REQUIRE(parse({"--board", "b.board", "--port", "/dev/ttyUSB3", "scene.sld"}, o, error) == ParseResult::kRun);
