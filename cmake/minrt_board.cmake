@@ -12,7 +12,11 @@
 #       given), BOARD_UART_INIT (generic: "OFFSET, VALUE, ..." start-up
 #       writes, may be empty), BOARD_UART_ENABLE (generic: "OFFSET:MASK",
 #       for firmware-sim only, may be empty),
-#       BOARD_HALT (finisher|ecall|store|loop), BOARD_HALT_ADDR (may be empty);
+#       BOARD_HALT (finisher|ecall|store|loop), BOARD_HALT_ADDR (may be empty),
+#       BOARD_ZIFENCEI (1/0, default 0), BOARD_CLOCK_HZ (0: not known),
+#       BOARD_AFTER_IMAGE (serve|halt, default serve), BOARD_WAIT_POLLS
+#       (empty UART polls before the firmware gives up waiting for a host;
+#       0, the default: wait forever);
 #       ISA replaces the file's isa (the soft-float and rv32i variants of the
 #       reference board).
 #   minrt_write_board_header(BOARD out/minrt/board.h)
@@ -26,7 +30,7 @@ cmake_policy(PUSH)
 cmake_policy(VERSION 3.20)
 set(_minrt_board_keys name mirrors isa zicsr reset ram_base ram_size rom_base rom_size uart uart_base
     uart_divisor uart_data uart_status uart_tx_ready uart_rx_ready uart_width uart_tx_idle uart_init
-    uart_enable halt)
+    uart_enable halt zifencei clock_hz after_image wait_polls)
 set(_minrt_board_isas rv32i rv32im rv32imc rv32imf rv32imfc rv32e rv32em rv32emc)
 
 # A number (decimal or 0x hex, 32 bits) as 0x%08x into `out`, or a fatal error.
@@ -142,8 +146,24 @@ function(minrt_read_board file prefix)
     message(FATAL_ERROR "${file}:${_seen_zicsr}: zicsr = no with isa '${_isa}': the F extension's fcsr is a CSR")
   endif()
 
+  set(_zifencei 0)
+  if(DEFINED _v_zifencei)
+    if(_v_zifencei STREQUAL "yes")
+      set(_zifencei 1)
+    elseif(NOT _v_zifencei STREQUAL "no")
+      message(FATAL_ERROR "${file}:${_seen_zifencei}: zifencei must be yes or no, got '${_v_zifencei}'")
+    endif()
+  endif()
+  set(_after serve)
+  if(DEFINED _v_after_image)
+    if(NOT _v_after_image MATCHES "^(serve|halt)$")
+      message(FATAL_ERROR "${file}:${_seen_after_image}: after_image must be serve or halt, got '${_v_after_image}'")
+    endif()
+    set(_after "${_v_after_image}")
+  endif()
+
   foreach(_key reset ram_base ram_size rom_base rom_size uart_base uart_divisor uart_data uart_status
-          uart_tx_ready uart_rx_ready uart_width uart_tx_idle)
+          uart_tx_ready uart_rx_ready uart_width uart_tx_idle clock_hz wait_polls)
     if(DEFINED _v_${_key})
       _minrt_board_number("${file}:${_seen_${_key}}" ${_key} "${_v_${_key}}" _v_${_key})
     else()
@@ -265,6 +285,17 @@ function(minrt_read_board file prefix)
   set(${prefix}_HAS_M ${_has_m} PARENT_SCOPE)
   set(${prefix}_HAS_F ${_has_f} PARENT_SCOPE)
   set(${prefix}_ZICSR ${_zicsr} PARENT_SCOPE)
+  set(${prefix}_ZIFENCEI ${_zifencei} PARENT_SCOPE)
+  set(${prefix}_AFTER_IMAGE ${_after} PARENT_SCOPE)
+  foreach(_key clock_hz wait_polls)
+    string(TOUPPER "${_key}" _up)
+    if("${_v_${_key}}" STREQUAL "")
+      set(${prefix}_${_up} 0 PARENT_SCOPE)
+    else()
+      math(EXPR _dec "${_v_${_key}}")
+      set(${prefix}_${_up} ${_dec} PARENT_SCOPE)
+    endif()
+  endforeach()
   foreach(_key reset ram_base ram_size rom_base rom_size uart uart_base uart_divisor uart_data uart_status
           uart_tx_ready uart_rx_ready uart_width uart_tx_idle)
     string(TOUPPER "${_key}" _up)
@@ -286,6 +317,12 @@ function(minrt_write_board_header prefix out)
   string(APPEND _h "#ifndef MINRT_BOARD_H\n#define MINRT_BOARD_H\n\n")
   string(APPEND _h "#define MINRT_BOARD_NAME \"${${prefix}_NAME}\"\n")
   string(APPEND _h "#define MINRT_BOARD_ZICSR ${${prefix}_ZICSR}\n")
+  string(APPEND _h "#define MINRT_BOARD_ZIFENCEI ${${prefix}_ZIFENCEI}\n")
+  string(APPEND _h "#define MINRT_BOARD_ISA \"${${prefix}_ISA}\"\n")
+  string(APPEND _h "#define MINRT_BOARD_CLOCK_HZ ${${prefix}_CLOCK_HZ}u\n")
+  string(TOUPPER "${${prefix}_AFTER_IMAGE}" _after)
+  string(APPEND _h "#define MINRT_BOARD_AFTER_IMAGE MINRT_AFTER_IMAGE_${_after}\n")
+  string(APPEND _h "#define MINRT_BOARD_WAIT_POLLS ${${prefix}_WAIT_POLLS}u\n")
   string(APPEND _h "#define MINRT_BOARD_RESET ${${prefix}_RESET}\n")
   string(APPEND _h "#define MINRT_RAM_BASE ${${prefix}_RAM_BASE}\n")
   string(APPEND _h "#define MINRT_RAM_DEFAULT_SIZE ${${prefix}_RAM_SIZE}\n")

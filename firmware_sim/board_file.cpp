@@ -66,6 +66,7 @@ void parse_uart_init(const std::string& v, std::vector<std::pair<uint32_t, uint3
 
 Board parse_board_file(const std::string& text, const std::string& origin) {
   Board b;
+  b.isa.zifencei = false;  // a board has Zifencei only when its file says so
   std::map<std::string, unsigned> seen;  // key -> line
   std::istringstream in(text);
   std::string line;
@@ -92,6 +93,17 @@ Board parse_board_file(const std::string& text, const std::string& origin) {
       } else if (key == "zicsr") {
         if (v != "yes" && v != "no") throw BadLine("zicsr must be yes or no, got '" + v + "'");
         b.isa.zicsr = v == "yes";
+      } else if (key == "zifencei") {
+        if (v != "yes" && v != "no") throw BadLine("zifencei must be yes or no, got '" + v + "'");
+        b.isa.zifencei = v == "yes";
+      } else if (key == "clock_hz") {
+        b.clock_hz = number(key, v);
+        if (b.clock_hz == 0) throw BadLine("clock_hz must not be 0");
+      } else if (key == "after_image") {
+        // The firmware's business (serve or halt after an image); checked here too.
+        if (v != "serve" && v != "halt") throw BadLine("after_image must be serve or halt, got '" + v + "'");
+      } else if (key == "wait_polls") {
+        number(key, v);  // the firmware's wait for a host; the simulator only checks it
       } else if (key == "reset") b.reset = number(key, v);
       else if (key == "ram_base") m.ram_base = number(key, v);
       else if (key == "ram_size") m.ram_size = number(key, v);

@@ -23,6 +23,7 @@ struct Board {
   // Generic UART: the register writes (offset, value) the firmware makes at
   // start-up (the simulator models their effect through map.uart's enable).
   std::vector<std::pair<uint32_t, uint32_t>> uart_init;
+  uint32_t clock_hz = 0;                  // 0: not given (the cycle model's clock)
 };
 
 // Throws std::runtime_error("ORIGIN:LINE: reason") for a bad line, a

@@ -44,6 +44,9 @@ a long run shows its progress on stderr; Ctrl-C stops it with a summary (status 
           {"uart-in", 0, "FILE", "UART input from FILE (default stdin)"},
           {"uart-out", 0, "FILE", "UART output to FILE (default stdout)"},
           {"pty", 0, nullptr, "UART on a new pseudo-terminal (path printed on stderr)"},
+          {"real-board", 0, nullptr,
+           "run as a real board: no boot arguments, and with --pty start at once and keep running as hosts "
+           "open and close the pty (output nobody reads is lost, as on a serial line)"},
           {"baud", 0, "N", "pace the UART at N baud, 8N1, in simulated time"},
           {"cycle-model", 0, "FILE", "cycle model file ('default' = built-in model)"},
           {"fpu-model", 0, "FILE", "FPU model file (approximate div/sqrt, truncation...)"},
@@ -98,6 +101,7 @@ void check_combination(const CliOptions& o) {
     throw UsageError("--board and --machine cannot be combined (the board file holds the map)");
   if (o.trace && !o.commit_log.empty()) throw UsageError("--trace and --commit-log cannot be combined");
   if (o.gdb_port >= 0 && o.pty) throw UsageError("--gdb cannot be combined with --pty");
+  if (o.real_board && !o.args.empty()) throw UsageError("--real-board passes no boot arguments: drop the ones after --");
 }
 
 }  // namespace
@@ -118,6 +122,7 @@ bool parse_cli(int argc, char** argv, const char* version, CliOptions& o, int& s
           if (name == "uart-in") o.uart_in = v;
           else if (name == "uart-out") o.uart_out = v;
           else if (name == "pty") o.pty = true;
+          else if (name == "real-board") o.real_board = true;
           else if (name == "baud") o.baud = parse_count(a, v, false);
           else if (name == "cycle-model") o.cycle_model = v;
           else if (name == "fpu-model") o.fpu_model = v;

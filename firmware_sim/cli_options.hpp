@@ -21,6 +21,7 @@ struct CliOptions {
   std::vector<std::string> args;  // after "--", passed to main(argc, argv)
   std::string uart_in, uart_out;  // empty = stdin / stdout
   bool pty = false;
+  bool real_board = false;        // --real-board: no boot arguments; with --pty, hosts come and go
   uint64_t baud = 0;              // 0 = no pacing
   std::string cycle_model;        // file, or "default"
   std::string fpu_model;          // FPU model file; empty = IEEE

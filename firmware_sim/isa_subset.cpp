@@ -60,6 +60,7 @@ const char* missing_extension(const IsaSpec& isa, uint32_t word, const DecodedIn
       break;
     default: break;
   }
+  if (d.op == Op::FENCE_I && !isa.zifencei) return "the Zifencei extension";
   if (isa.rv32e && uses_high_register(d)) return "registers x16..x31 (the E base has x0..x15)";
   return nullptr;
 }

@@ -13,9 +13,10 @@ struct IsaSpec {
   bool rv32e = false;  // E base: only x0..x15
   bool m = true, f = true, c = false;
   bool zicsr = true;
+  bool zifencei = true;  // a board file says yes or (by default) no
 };
 
-// The simulator's full set, the reference board's: rv32imf + Zicsr.
+// The simulator's full set, the reference board's: rv32imf + Zicsr + Zifencei.
 inline constexpr IsaSpec kReferenceIsa{};
 
 // "rv32i", "rv32imf", "rv32emc"...: the names the board format allows.

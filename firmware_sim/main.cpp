@@ -161,6 +161,8 @@ int run(int argc, char** argv) {
   } catch (const std::runtime_error& e) {
     die(kExitUsage, e.what());
   }
+  // A board file's clock, unless a cycle model names its own.
+  if (board && board->clock_hz != 0 && opt.cycle_model.empty()) model_cfg.clock_hz = board->clock_hz;
   if (timed) model = std::make_unique<CycleModel>(model_cfg);
 
   // The ELF argument must name a readable regular file (status 2 like any
@@ -185,9 +187,13 @@ int run(int argc, char** argv) {
     } else {
       elf = load_elf(opt.elf, m.bus());
     }
-    std::vector<std::string> fw_args{opt.elf};
-    fw_args.insert(fw_args.end(), opt.args.begin(), opt.args.end());
-    place_boot_args(m.bus(), m.hart(), fw_args);
+    // A real board gets no boot arguments: a3 is not the magic, and crt0
+    // calls main(0, NULL), the build-time defaults.
+    if (!opt.real_board) {
+      std::vector<std::string> fw_args{opt.elf};
+      fw_args.insert(fw_args.end(), opt.args.begin(), opt.args.end());
+      place_boot_args(m.bus(), m.hart(), fw_args);
+    }
   } catch (const std::runtime_error& e) {
     die(kExitLoad, e.what());
   }
@@ -210,9 +216,12 @@ int run(int argc, char** argv) {
 
   Uart::Config ucfg;
   ucfg.layout = map.uart;
+  ucfg.real_board = opt.real_board;
+  ucfg.clock_hz = model_cfg.clock_hz;
+  int held_slave = -1;
   if (opt.pty) {
     try {
-      ucfg.in_fd = ucfg.out_fd = open_uart_pty();
+      ucfg.in_fd = ucfg.out_fd = opt.real_board ? open_uart_pty_for_board(held_slave) : open_uart_pty();
     } catch (const std::runtime_error& e) {
       die(kExitIo, e.what());
     }
@@ -283,7 +292,8 @@ int run(int argc, char** argv) {
   std::string trace_error;
   const bool trace_ok = trace.close(trace_error);
   m.set_trace(nullptr);
-  if (opt.pty) drain_uart_pty(ucfg.in_fd, 2000);
+  if (opt.pty && !opt.real_board) drain_uart_pty(ucfg.in_fd, 2000);
+  if (held_slave >= 0) ::close(held_slave);
   if (!timed) m.hart().cycles = m.hart().instret;
   if (uart.bytes_dropped())
     std::fprintf(stderr,

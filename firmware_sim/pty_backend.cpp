@@ -54,6 +54,23 @@ int open_uart_pty(const char* who) {
   return master;
 }
 
+int open_uart_pty_for_board(int& held_slave) {
+  int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
+  if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
+    throw std::runtime_error(std::string("cannot create pty: ") + std::strerror(errno));
+  const char* name = ::ptsname(master);
+  if (!name) throw std::runtime_error("cannot name pty");
+  const std::string slave = name;
+  make_raw(slave);
+  // Held open for the whole run: the slave's settings stay raw between
+  // hosts, and a host's close is silence on the line, not end of input.
+  held_slave = ::open(slave.c_str(), O_RDWR | O_NOCTTY);
+  if (held_slave < 0) throw std::runtime_error("cannot open " + slave + ": " + std::strerror(errno));
+  std::fprintf(stderr, "firmware-sim: uart on %s\n", slave.c_str());
+  std::fflush(stderr);
+  return master;
+}
+
 void drain_uart_pty(int master, int timeout_ms) {
   const char* name = ::ptsname(master);
   if (!name) return;

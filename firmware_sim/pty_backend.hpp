@@ -11,6 +11,12 @@ namespace fwsim {
 // failure.
 int open_uart_pty(const char* who = "firmware-sim");
 
+// For --real-board: the same pty, but returns at once and keeps a slave
+// descriptor of its own open (in `held_slave`), so hosts can open and close
+// the port as often as they like without the master seeing a hang-up; the
+// master is non-blocking.
+int open_uart_pty_for_board(int& held_slave);
+
 // Waits (at most `timeout_ms`) until the host has read everything written to
 // the pty, so closing the master does not discard the firmware's last output.
 void drain_uart_pty(int master, int timeout_ms);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 
 #include <minrt/memory_map.h>
 
@@ -19,6 +20,8 @@ constexpr uint32_t kSifiveTxdata = 0x00, kSifiveRxdata = 0x04, kSifiveTxctrl = 0
 constexpr uint32_t kSifiveFlag = 0x80000000u;  // txdata: full; rxdata: empty
 // Empty polls answered at full speed before the host is waited for.
 constexpr uint64_t kSpinPolls = 4096;
+// The same for --real-board: above the firmware's MINRT_IDLE_POLLS_DEFAULT.
+constexpr uint64_t kBoardSpinPolls = 4u << 20;
 }  // namespace
 
 bool Uart::fill_input() {
@@ -33,7 +36,12 @@ bool Uart::fill_input() {
   // once; simulated time is not affected.
   if (idle_polls_ % 64 != 0) return false;
   pollfd p{cfg_.in_fd, POLLIN, 0};
-  const timespec wait{0, idle_polls_ >= kSpinPolls ? 100000 : 0};
+  // A real board (--real-board) spins longer first, so a firmware's own
+  // idle count (an upload cut short by a host that died) runs out in
+  // about the time it would on hardware, not after thousands of sleeps
+  // whose length depends on the host's load.
+  const uint64_t spin = cfg_.real_board ? kBoardSpinPolls : kSpinPolls;
+  const timespec wait{0, idle_polls_ >= spin ? 100000 : 0};
   int r = ::ppoll(&p, 1, &wait, nullptr);
   if (r < 0 && errno == EINTR) return false;
   if (r == 0) return false;
@@ -58,8 +66,17 @@ bool Uart::data_ready(uint64_t now) {
   return now >= rx_ready_at_;
 }
 
+namespace {
+long long wall_ns() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+}  // namespace
+
 bool Uart::poll_rx(uint64_t now) {
   if (data_ready(now)) return true;
+  if (cfg_.real_board && wait_since_ns_ == 0) wait_since_ns_ = wall_ns();
   if (eof_) ++eof_polls_;
   else if (++idle_polls_ == 64) flush();  // the firmware is waiting for input: show what it printed
   return false;
@@ -68,6 +85,15 @@ bool Uart::poll_rx(uint64_t now) {
 int Uart::take_rx(uint64_t now) {
   eof_polls_ = idle_polls_ = 0;
   if (!data_ready(now)) return -1;
+  if (wait_since_ns_ != 0) {
+    const double waited = static_cast<double>(wall_ns() - wait_since_ns_) / 1e9;
+    wait_since_ns_ = 0;
+    if (waited >= 1.0) {
+      std::fprintf(stderr, "firmware-sim: the board waited %.1f s for the host (%.0f cycles at %llu Hz)\n", waited,
+                   waited * static_cast<double>(cfg_.clock_hz), static_cast<unsigned long long>(cfg_.clock_hz));
+      std::fflush(stderr);
+    }
+  }
   holding_ = false;
   ++bytes_in_;
   return in_buf_[in_pos_++];
@@ -220,6 +246,13 @@ void Uart::flush() {
   while (done < out_buf_.size()) {
     ssize_t n = ::write(cfg_.out_fd, out_buf_.data() + done, out_buf_.size() - done);
     if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno == EAGAIN && cfg_.real_board) {
+      // A host that reads takes the bytes within a moment; none does.
+      pollfd p{cfg_.out_fd, POLLOUT, 0};
+      if (::poll(&p, 1, 200) > 0) continue;
+      dropped_ += out_buf_.size() - done;
+      break;
+    }
     if (n <= 0) {
       io_error_ = true;
       if (write_errno_ == 0) write_errno_ = n < 0 ? errno : EIO;

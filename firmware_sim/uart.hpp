@@ -23,6 +23,12 @@ class Uart {
     uint64_t stall_polls = 2000000;  // status polls after input EOF before giving up
     uint64_t max_output = UINT64_MAX;  // bytes sent before the run stops (--max-output)
     UartLayout layout;               // register interface
+    // --real-board: output the host does not take within a moment is lost
+    // (a serial line keeps nothing for a host that is not there), and a
+    // long wait for the host is reported on stderr, in seconds and in
+    // cycles at clock_hz (the board waits in real time).
+    bool real_board = false;
+    uint64_t clock_hz = 0;
   };
 
   explicit Uart(const Config& cfg) : cfg_(cfg) {}
@@ -78,6 +84,8 @@ class Uart {
   bool io_error_ = false;
   bool output_limited_ = false;
   int write_errno_ = 0;
+  uint64_t dropped_ = 0;         // real board: output bytes no host took
+  long long wait_since_ns_ = 0;  // real board: when the firmware began to poll an empty line
 };
 
 }  // namespace fwsim

@@ -34,6 +34,12 @@
 #define MINRT_FW_DEFAULT_P6 0
 #endif
 
+// What a board does after an image: the board file's after_image, unless
+// the build says otherwise (the -small.elf for QEMU halts, so QEMU ends).
+#ifndef MINRT_FW_AFTER_IMAGE
+#define MINRT_FW_AFTER_IMAGE MINRT_BOARD_AFTER_IMAGE
+#endif
+
 namespace minrt::fw {
 
 enum class Protocol { kRaw, kCourse, kFramed };

@@ -19,6 +19,7 @@
 #include "core/base/diagnostic.hpp"
 #include "core/base/peek_source.hpp"
 #include "board_formats.hpp"
+#include "board_session.hpp"
 #include "firmware_args.hpp"
 #include "firmware_layout.h"
 #include "footprint.hpp"
@@ -220,38 +221,10 @@ int serve_framed(minrt::fw::Uart uart, const minrt::fw::FirmwareOptions& options
   }
 }
 
-}  // namespace
-
-// Called by crt0; extern "C" because freestanding C++ does not treat main
-// specially (it would be mangled).
-extern "C" int main(int argc, char** argv) {
-  minrt::fw::Uart uart = minrt::fw::console_uart();
-  uart.init();
-
-  minrt::fw::FirmwareOptions options;
-  minrt::Diagnostic error;
-  if (!minrt::fw::parse_arguments(argc, argv, options, error)) {
-    minrt::Diagnostic usage;
-    usage.text("usage: ").text(error.message);
-    send_error(uart, usage);
-    return MINRT_STATUS_USAGE;
-  }
-
-  minrt::fw::ArenaRegion region = minrt::fw::arena_region();
-  // A machine with more RAM than the board (firmware-sim --ram-size): the
-  // RAM above the linked 4 MiB, when larger. The simulator's sp sits just
-  // below the boot arguments at the top of that RAM, so the stack's share
-  // stays out of the arena.
-  const uint32_t ram = options.ram_mib << 20;
-  if (ram > MINRT_RAM_DEFAULT_SIZE + MINRT_BOOT_ARGS_MAX + MINRT_FW_STACK_SIZE) {
-    const size_t above = ram - MINRT_RAM_DEFAULT_SIZE - MINRT_BOOT_ARGS_MAX - MINRT_FW_STACK_SIZE;
-    if (above > region.size)
-      region = {reinterpret_cast<void*>(static_cast<uintptr_t>(MINRT_RAM_BASE + MINRT_RAM_DEFAULT_SIZE)), above};
-  }
-  minrt::Arena arena(region.base, region.size);
-  if (options.protocol == minrt::fw::Protocol::kCourse || (minrt::fw::program_handoff() & MINRT_PROGRAM_LOADED) != 0)
-    return serve_course(uart, argc, argv, options, arena, error);
-  if (options.protocol == minrt::fw::Protocol::kFramed) return serve_framed(uart, options, arena, error);
+// Raw protocol: the scene as text (a checked upload or a CRC-32 request
+// first, textures ahead of the text), the format's image back.
+int serve_raw(minrt::fw::Uart uart, const minrt::fw::FirmwareOptions& options, minrt::Arena& arena,
+              minrt::Diagnostic& error) {
   minrt::fw::SerialInput input(uart, options.idle_polls);
   minrt::fw::SerialOutput uart_out(uart, options.footprint);
   // The host's request for the CRC-32 trailer comes first (protocol/raw_check.hpp).
@@ -319,4 +292,78 @@ extern "C" int main(int argc, char** argv) {
   output.end();
   if (options.footprint) minrt::fw::print_footprint(uart, arena.used(), uart_out.bytes());
   return MINRT_STATUS_OK;
+}
+
+// One exchange in the protocol `options` names (a byte the wait took off
+// the line is put back for it).
+int serve(minrt::fw::Uart uart, int argc, char** argv, const minrt::fw::FirmwareOptions& options,
+          minrt::Arena& arena, minrt::Diagnostic& error) {
+  if (options.protocol == minrt::fw::Protocol::kCourse) return serve_course(uart, argc, argv, options, arena, error);
+  if (options.protocol == minrt::fw::Protocol::kFramed) return serve_framed(uart, options, arena, error);
+  return serve_raw(uart, options, arena, error);
+}
+
+}  // namespace
+
+// Called by crt0; extern "C" because freestanding C++ does not treat main
+// specially (it would be mangled).
+//
+// With boot arguments (firmware-sim's runs: argv[0] is the ELF) the
+// firmware serves one exchange and halts with its status. Without any (a
+// real board, QEMU, firmware-sim --real-board) it is a board: it waits for
+// a host for as long as it takes (board key wait_polls may set a limit),
+// answers the session's greeting and options (protocol/session.hpp),
+// serves the exchange, and waits again, unless the board file says
+// after_image = halt. With --protocol=course the board speaks first
+// (0x99), as the course's server expects.
+extern "C" int main(int argc, char** argv) {
+  minrt::fw::Uart uart = minrt::fw::console_uart();
+  uart.init();
+
+  minrt::fw::FirmwareOptions options;
+  minrt::Diagnostic error;
+  if (!minrt::fw::parse_arguments(argc, argv, options, error)) {
+    minrt::Diagnostic usage;
+    usage.text("usage: ").text(error.message);
+    send_error(uart, usage);
+    return MINRT_STATUS_USAGE;
+  }
+
+  minrt::fw::ArenaRegion region = minrt::fw::arena_region();
+  // A machine with more RAM than the board (firmware-sim --ram-size): the
+  // RAM above the linked 4 MiB, when larger. The simulator's sp sits just
+  // below the boot arguments at the top of that RAM, so the stack's share
+  // stays out of the arena.
+  const uint32_t ram = options.ram_mib << 20;
+  if (ram > MINRT_RAM_DEFAULT_SIZE + MINRT_BOOT_ARGS_MAX + MINRT_FW_STACK_SIZE) {
+    const size_t above = ram - MINRT_RAM_DEFAULT_SIZE - MINRT_BOOT_ARGS_MAX - MINRT_FW_STACK_SIZE;
+    if (above > region.size)
+      region = {reinterpret_cast<void*>(static_cast<uintptr_t>(MINRT_RAM_BASE + MINRT_RAM_DEFAULT_SIZE)), above};
+  }
+  if ((minrt::fw::program_handoff() & MINRT_PROGRAM_LOADED) != 0) {
+    minrt::Arena arena(region.base, region.size);
+    return serve_course(uart, argc, argv, options, arena, error);
+  }
+  const minrt::fw::BoardFacts facts{ram > MINRT_RAM_DEFAULT_SIZE ? ram : MINRT_RAM_DEFAULT_SIZE,
+                                    static_cast<uint32_t>(region.size)};
+  const bool board = argc == 0;
+  for (;;) {
+    minrt::Arena arena(region.base, region.size);
+    minrt::fw::FirmwareOptions run = options;
+    minrt::Diagnostic failure;
+    // The course protocol's board speaks first (0x99): no wait.
+    if (run.protocol != minrt::fw::Protocol::kCourse) {
+      const uint32_t wait = board ? MINRT_BOARD_WAIT_POLLS : options.idle_polls;
+      const minrt::fw::HostEvent e = minrt::fw::wait_for_host(uart, wait, board, facts, run);
+      // A board that waited out its limit stops as a run without input
+      // does: the raw reader finds the input ended.
+      if (e == minrt::fw::HostEvent::kWaitedOut && board) return MINRT_STATUS_SCENE_ERROR;
+      // A run that got nothing: the protocol finds the input ended at once
+      // (not after a second idle count).
+      if (e == minrt::fw::HostEvent::kWaitedOut) minrt::fw::SerialInput::put_back(MINRT_END_OF_INPUT);
+    }
+    const int status = serve(uart, argc, argv, run, arena, failure);
+    if (!board || MINRT_FW_AFTER_IMAGE == MINRT_AFTER_IMAGE_HALT) return status;
+    minrt::fw::console_uart().drain();
+  }
 }

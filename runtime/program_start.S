@@ -10,7 +10,13 @@
   .globl minrt_start_program
   .type minrt_start_program, @function
 minrt_start_program:
+#if MINRT_BOARD_ZIFENCEI
   fence.i                /* the code arrived through stores: resync fetch */
+#endif
+  /* Without Zifencei (board file: zifencei = no) the stores and this jump
+   * are all there is: enough on a core that fetches from the same memory
+   * the stores reach, with no instruction cache or prefetch buffer holding
+   * old words of the program region (docs/porting.md). */
   mv sp, a2
   li a4, MINRT_PROGRAM_HANDOFF_MAGIC
   mv a5, a3

@@ -24,6 +24,11 @@ class SerialInput {
   ByteSource source() { return ByteSource{&read_fn, this}; }
   bool ended() const { return ended_; }
 
+  // A byte taken off the line before the protocol that owns it was chosen
+  // (the session's wait for a host): the next read of any SerialInput
+  // returns it first.
+  static void put_back(uint8_t byte);
+
  private:
   static int read_fn(void* ctx);
   int next();

@@ -66,7 +66,7 @@ const std::vector<Group>& option_groups() {
            {"board", 0, "FILE",
             "the simulated board's description (boards/*.board:\n"
             "memory map, UART, halt, ISA; implies --sim; default\n"
-            "the reference)"},
+            "the reference); with -p the board expected there"},
            {"sim-binary", 0, "PATH",
             "simulator to run (default: $MINRT_FIRMWARE_SIM, else\n"
             "the firmware-sim next to host-send, else the build's)"},
@@ -77,6 +77,13 @@ const std::vector<Group>& option_groups() {
             "flow control (default none; xonxoff is unsafe for\n"
             "binary P6 and the framed protocol)"},
            {"list", 0, nullptr, "list serial ports with their USB identities"},
+           {"probe", 0, nullptr,
+            "greet the board on -p and print its identity\n"
+            "(firmware, board, ISA, memory, defaults); no scene"},
+           {"no-handshake", 0, nullptr,
+            "-p: send at once, without greeting the board and\n"
+            "sending the run's options (a firmware without the\n"
+            "session: it renders at its build-time defaults)"},
        }},
       {"protocol and image",
        {
@@ -164,8 +171,7 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
     o.sim = o.rtl = true;  // the harness takes firmware-sim's command line
     o.sim_elf = v;
   } else if (name == "board") {
-    o.sim_board = v;
-    o.sim = true;  // a board file describes the simulated board
+    o.sim_board = v;  // with -p the board expected; else the simulated one (parse_command_line)
   } else if (name == "sim-binary") {
     o.sim_binary = v;
     o.sim = true;  // naming a simulator asks for one
@@ -226,6 +232,8 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
      : name == "sim-start-timeout" ? o.sim_start_timeout
                                    : o.first_byte_timeout) = s;
   } else if (name == "list") o.list = true;
+  else if (name == "probe") o.probe = true;
+  else if (name == "no-handshake") o.handshake = false;
   else if (name == "quiet") o.quiet = true;
   else if (name == "progress") o.progress_forced = true;
   else if (name == "show") o.show = true;
@@ -235,6 +243,12 @@ std::string take_option(const std::string& name, const std::string& v, Options& 
 // The combinations the options cannot make; "" when the run can go ahead.
 std::string check_combination(const Options& o) {
   if (!o.port.empty() && o.sim) return "--port and --sim exclude each other";
+  if (o.probe) {
+    if (o.port.empty()) return "--probe needs the board's port (-p DEV)";
+    if (!o.handshake) return "--probe and --no-handshake exclude each other";
+    if (!o.scene.empty()) return "--probe takes no scene ('" + o.scene + "')";
+    return "";
+  }
   if (o.scene.empty()) return "no scene file given";
   // Never render on the simulator without being asked: a student with a
   // board must not believe the board rendered the image.
@@ -261,6 +275,7 @@ std::string default_output(const std::string& scene, const char* extension) {
 void print_help() {
   std::fputs(
       "Usage: host-send (-p DEV | --sim [ELF]) [OPTIONS] SCENE [-o OUT]\n"
+      "   or: host-send --probe -p DEV\n"
       "   or: host-send --list\n"
       "Sends a scene to the renderer firmware over a serial line and receives the\n"
       "image it renders: from a board (--port) or from firmware-sim started on a\n"
@@ -296,6 +311,8 @@ ParseResult parse_command_line(int argc, char** argv, Options& o, std::string& e
   if (help) return ParseResult::kHelp;
   if (version) return ParseResult::kVersion;
   if (o.list) return ParseResult::kRun;
+  // A board file describes the simulated board, unless a real one is named.
+  if (!o.sim_board.empty() && o.port.empty()) o.sim = true;
   error = check_combination(o);
   if (!error.empty()) return ParseResult::kError;
   if (o.output.empty()) o.output = default_output(o.scene, ".ppm");

@@ -18,7 +18,7 @@ struct Options {
   bool sim = false;          // --sim: firmware-sim on a pty (one of --port and --sim is required)
   std::string sim_elf;       // --sim ELF
   bool rtl = false;          // --rtl: the RTL harness (minrt-rtl) in firmware-sim's place
-  std::string sim_board;     // --board FILE: the simulated board's description
+  std::string sim_board;     // --board FILE: the simulated board's description (with -p: the board expected)
   std::string sim_binary;    // --sim-binary
   std::uint64_t sim_ram_bytes = 0;  // --sim-ram-size (0: the board's 4 MiB)
   bool baud_given = false;
@@ -43,6 +43,8 @@ struct Options {
   bool big_endian = false;   // course: --endian
   bool full_textures = false;  // --full-textures: every texel (default: those the render reads, CS418)
   bool list = false;
+  bool probe = false;        // --probe: print the board's identity and exit
+  bool handshake = true;     // --no-handshake: a board (-p) without the session
   bool quiet = false;
   bool progress_forced = false;  // --progress: draw even without a terminal
   bool show = false;             // --show: the received image in a window

@@ -26,6 +26,7 @@
 #include "protocol_framed_host.hpp"
 #include "protocol_raw.hpp"
 #include "scene_upload.hpp"
+#include "session_host.hpp"
 #include "sim_launcher.hpp"
 #include "verify.hpp"
 
@@ -229,6 +230,91 @@ int open_port(const Options& o, Link& link) {
   return kExitOk;
 }
 
+// The `name = ...` of a board file, or "" with the reason in `error`.
+std::string board_file_name(const std::string& path, std::string& error) {
+  std::string text, why;
+  if (!minrt::host::read_whole_file(path, text, why, 1 << 20)) {
+    error = "cannot read " + path + ": " + why;
+    return "";
+  }
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t nl = text.find('\n', at);
+    if (nl == std::string::npos) nl = text.size();
+    std::string line = text.substr(at, nl - at);
+    at = nl + 1;
+    line = line.substr(0, line.find('#'));
+    const std::size_t eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    auto trim = [](std::string v) {
+      const std::size_t b = v.find_first_not_of(" \t\r");
+      const std::size_t e = v.find_last_not_of(" \t\r");
+      return b == std::string::npos ? std::string() : v.substr(b, e - b + 1);
+    };
+    if (trim(line.substr(0, eq)) == "name") return trim(line.substr(eq + 1));
+  }
+  error = path + ": no 'name = ...' line";
+  return "";
+}
+
+// The session (-p): the greeting, the identity checked against --board,
+// the run's options. kOk, or the one line that says what to check.
+TransferResult handshake(const Options& o, SerialPort& port, BoardIdentity* identity_out) {
+  TransferResult r;
+  const GreetResult g = greet_board(port, o.port_settings.baud);
+  if (g.status != GreetResult::Status::kOk) {
+    r.message = g.message;
+    return r;
+  }
+  if (!g.note.empty() && !o.quiet) warn(g.note);
+  if (identity_out != nullptr) *identity_out = g.identity;
+  if (!o.sim_board.empty()) {
+    std::string err;
+    const std::string want = board_file_name(o.sim_board, err);
+    if (want.empty()) {
+      r.message = err;
+      return r;
+    }
+    if (g.identity.get("board") != want) {
+      r.message = "the board on " + port.device() + " runs firmware built for board '" + g.identity.get("board") +
+                  "', not '" + want + "' (" + o.sim_board + "): load the firmware built for " + want +
+                  ", or give the board file it was built for";
+      return r;
+    }
+  }
+  if (identity_out != nullptr) {
+    r.status = TransferResult::Status::kOk;
+    return r;
+  }
+  RunOptions run;
+  run.width = o.spec.width;
+  run.height = o.spec.height;
+  run.p6 = o.spec.kind == PpmKind::kP6;
+  run.protocol = o.protocol == Protocol::kCourse ? "course" : o.protocol == Protocol::kFramed ? "framed" : "raw";
+  run.big_endian = o.big_endian;
+  bool refused = false;
+  if (!send_run_options(port, run, r.message, refused)) {
+    if (refused) r.status = TransferResult::Status::kFirmwareError;
+    return r;
+  }
+  r.status = TransferResult::Status::kOk;
+  return r;
+}
+
+// --probe: the board's identity on stdout.
+int probe_command(const Options& o) {
+  Link link;
+  if (const int status = find_device(o, link); status != kExitOk) return status;
+  minrt::host::InterruptsHeld held;
+  if (const int status = open_port(o, link); status != kExitOk) return status;
+  BoardIdentity id;
+  const TransferResult r = handshake(o, link.port, &id);
+  link.port.close();
+  if (r.status != TransferResult::Status::kOk) return fail(kExitLink, r.message);
+  std::fputs(describe_identity(id).c_str(), stdout);
+  return kExitOk;
+}
+
 // The protocol's exchange for the scene's format.
 TransferResult exchange_scene(const Options& o, const Job& job, Exchange& ex) {
   CourseHostOptions course;
@@ -280,6 +366,13 @@ TransferResult transfer(const Options& o, const Job& job, Link& link, minrt::hos
   ex.timeouts.reply_ms = static_cast<long long>(o.reply_timeout * 1000);
   minrt::host::ImageStreamDecoder live(window);
   if (window.is_open()) ex.live = &live;
+  if (!o.sim && o.handshake) {
+    TransferResult h = handshake(o, link.port, nullptr);
+    if (h.status != TransferResult::Status::kOk) {
+      progress.finish();
+      return h;
+    }
+  }
   TransferResult r = exchange_scene(o, job, ex);
   progress.finish();
   return r;
@@ -409,6 +502,7 @@ int run(const Options& options) {
   ::signal(SIGPIPE, SIG_IGN);
   minrt::host::install_signal_cleanup();
   if (options.list) return list_ports_command();
+  if (options.probe) return probe_command(options);
 
   Options o = options;
   Job job;

@@ -25,7 +25,29 @@
 #define MINRT_UART_KIND_CMSDK 5
 #define MINRT_HALT_KIND_SEMIHOSTING 5
 
+/* What the firmware does after an image (MINRT_BOARD_AFTER_IMAGE, board
+ * file key after_image): wait for the next scene, or halt. */
+#define MINRT_AFTER_IMAGE_SERVE 0
+#define MINRT_AFTER_IMAGE_HALT 1
+
 #include <minrt/board.h>
+
+/* A board header written by hand (the Cortex-M port's) may leave these out. */
+#ifndef MINRT_BOARD_ZIFENCEI
+#define MINRT_BOARD_ZIFENCEI 0
+#endif
+#ifndef MINRT_BOARD_ISA
+#define MINRT_BOARD_ISA "unknown"
+#endif
+#ifndef MINRT_BOARD_CLOCK_HZ
+#define MINRT_BOARD_CLOCK_HZ 0u
+#endif
+#ifndef MINRT_BOARD_AFTER_IMAGE
+#define MINRT_BOARD_AFTER_IMAGE MINRT_AFTER_IMAGE_SERVE
+#endif
+#ifndef MINRT_BOARD_WAIT_POLLS
+#define MINRT_BOARD_WAIT_POLLS 0u
+#endif
 
 /* Program region of the course protocol's boot stage (runtime/program_loader.*):
  * a program uploaded after 0x99 is a flat binary (code and data, entry at its

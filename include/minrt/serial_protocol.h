@@ -18,8 +18,10 @@
  *   - one text line: MINRT_ERROR_MARKER, then "LINE:COL: message" for a scene
  *     error or just "message" for anything else, then '\n'. Nothing else
  *     follows.
- *   The machine then halts with one of the MINRT_STATUS_* codes (through the
- *   test finisher, so a simulator or QEMU exits with it).
+ *   With boot arguments the machine then halts with one of the
+ *   MINRT_STATUS_* codes (through the test finisher, so a simulator or QEMU
+ *   exits with it); a board without any waits for the next scene instead
+ *   (unless its board file says after_image = halt; the session below).
  *   A host that asks for it first (MINRT_CHECK_REQUEST, below) gets the
  *   image between an announce byte and a CRC-32 trailer.
  */
@@ -127,6 +129,30 @@
  * different versions must agree. */
 #define MINRT_SCENE_FORMAT_SLD 0
 #define MINRT_SCENE_FORMAT_TAG_LIMIT 256 /* tags are below it */
+
+/* Session (host-send's handshake, protocol/session.hpp has both ends and
+ * the whole exchange). A board that got no boot arguments waits for the
+ * host for as long as it takes, and between scenes takes:
+ *   MINRT_SESSION_GREETING  -> the board answers with its identity line
+ *   MINRT_SESSION_OPTIONS   -> the run's options line; the board answers
+ *                              MINRT_SESSION_ACCEPTED (or an error line), then
+ *                              the chosen protocol runs as it does alone
+ *   any other first byte    -> raw, course or framed as before, with the
+ *                              board's build-time defaults
+ * Every session message starts with MINRT_SESSION_LEAD (ASCII SYN), which no
+ * scene format, course word stream (the host's first word is a program
+ * length) or framed frame (0xA5 0x5A) begins with. Lines are text, fields
+ * `key=value` separated by one space, ending in ` crc=XXXXXXXX` (CRC-32/IEEE
+ * of the bytes after the lead up to the space before `crc`, 8 lower-case
+ * hex digits) and '\n'. */
+#define MINRT_SESSION_LEAD 0x16 /* ASCII SYN */
+#define MINRT_SESSION_GREETING "\026mrt?"  /* SYN m r t ? */
+#define MINRT_SESSION_GREETING_SIZE 5
+#define MINRT_SESSION_IDENTITY "\026minrt-board" /* SYN, then the identity's fields */
+#define MINRT_SESSION_OPTIONS "\026o"              /* SYN o, then the options' fields */
+#define MINRT_SESSION_ACCEPTED "\026ok\n"
+#define MINRT_SESSION_VERSION 1
+#define MINRT_SESSION_LINE_MAX 480 /* bytes of a session line, lead to '\n' */
 
 /* Halt status. */
 #define MINRT_STATUS_OK 0

@@ -4,7 +4,8 @@
   check_isa.py LLVM-OBJDUMP ELF --forbid GROUP... | --require GROUP...
 
 GROUP: m (multiply/divide), f (single/double float, FP CSR access), csr
-(Zicsr: csrr*/csrw*/csrs*/csrc*, fscsr/frcsr and friends). The ELF is
+(Zicsr: csrr*/csrw*/csrs*/csrc*, fscsr/frcsr and friends), fencei
+(Zifencei: fence.i). The ELF is
 disassembled with every extension enabled, so an instruction the ELF's own
 attributes would not name is still decoded.
 """
@@ -15,6 +16,7 @@ import sys
 GROUPS = {
     "m": re.compile(r"^(mul|mulh|mulhu|mulhsu|div|divu|rem|remu)$"),
     "f": re.compile(r"^(f(?!ence)[a-z0-9]*(\.[a-z0-9]+)*|c\.f(lw|sw|lwsp|swsp|ld|sd|ldsp|sdsp))$"),
+    "fencei": re.compile(r"^fence\.i$"),
     "csr": re.compile(r"^(csr[a-z]*|fscsr|frcsr|fsrm|frrm|fsflags|frflags|fsrmi|fsflagsi|rdcycle|rdtime|rdinstret)$"),
 }
 

@@ -146,6 +146,8 @@ const std::map<std::string, Sample>& samples() {
       {"baud", {{"--baud", "921600"}, [](const Options& o) { return o.baud_given && o.port_settings.baud == 921600; }}},
       {"flow", {{"--flow", "rtscts"}, [](const Options& o) { return o.port_settings.flow == Flow::kRtsCts; }}},
       {"list", {{"--list"}, [](const Options& o) { return o.list; }}},
+      {"probe", {{"--probe", "--port", "/dev/ttyUSB3"}, [](const Options& o) { return o.probe && !o.sim; }}},
+      {"no-handshake", {{"--no-handshake"}, [](const Options& o) { return !o.handshake; }}},
       {"protocol", {{"--protocol", "course"}, [](const Options& o) { return o.protocol == Protocol::kCourse; }}},
       {"size", {{"--size", "64x32"}, [](const Options& o) { return o.size_given && o.spec.width == 64 && o.spec.height == 32; }}},
       {"format", {{"--format", "p6"}, [](const Options& o) { return o.spec.kind == minrt::send::PpmKind::kP6; }}},
@@ -177,6 +179,20 @@ const std::map<std::string, Sample>& samples() {
 
 }  // namespace
 
+TEST_CASE("host-send --board with --port names the board expected there, --probe takes a port and no scene", "[cli]") {
+  Options o;
+  std::string error;
+  REQUIRE(parse({"--board", "b.board", "--port", "/dev/ttyUSB3", "scene.sld"}, o, error) == ParseResult::kRun);
+  CHECK(!o.sim);
+  CHECK(o.sim_board == "b.board");
+  Options p;
+  CHECK(parse({"--probe"}, p, error) == ParseResult::kError);
+  CHECK(error == "--probe needs the board's port (-p DEV)");
+  Options q;
+  CHECK(parse({"--probe", "-p", "/dev/ttyUSB3", "scene.sld"}, q, error) == ParseResult::kError);
+  CHECK(error == "--probe takes no scene ('scene.sld')");
+}
+
 TEST_CASE("every option --help lists is accepted and sets what it says", "[cli]") {
   const auto help = run({HS_HOST_SEND, "--help"});
   REQUIRE(help.status == 0);
@@ -200,9 +216,9 @@ TEST_CASE("every option --help lists is accepted and sets what it says", "[cli]"
     INFO("--" << name);
     std::vector<std::string> args = sample.args;
     if (name != "port" && name != "list" && name != "sim" && name != "board" && name != "sim-binary" &&
-        name != "sim-ram-size")
+        name != "sim-ram-size" && name != "probe")
       args.push_back("--sim");
-    args.push_back("scene.sld");
+    if (name != "probe") args.push_back("scene.sld");  // --probe takes none
     Options o;
     std::string error;
     const ParseResult result = parse(args, o, error);

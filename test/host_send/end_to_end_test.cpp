@@ -69,7 +69,7 @@ TEST_CASE("raw protocol over --port with a separately started board", "[e2e][raw
   hs_test::start_standin(board, "24x16", "p6");
   hs_test::TempDir dir;
   const std::string out = dir.file("ball.ppm");
-  const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), "--baud", "921600", "--size", "24x16", "--format",
+  const RunResult r = run({HS_HOST_SEND, "--no-handshake", "--port", board.pty_path(), "--baud", "921600", "--size", "24x16", "--format",
                            "p6", ball(), "-o", out});
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -105,7 +105,7 @@ TEST_CASE("a size mismatch between board and host is detected", "[e2e][raw]") {
   minrt::send::SimLauncher board;
   hs_test::start_standin(board, "16x16", "p6");
   hs_test::TempDir dir;
-  const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), "--size", "32x32", "--format", "p6", ball(), "-o",
+  const RunResult r = run({HS_HOST_SEND, "--no-handshake", "--port", board.pty_path(), "--size", "32x32", "--format", "p6", ball(), "-o",
                            dir.file("x.ppm")});
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("image is 16x16, expected 32x32"));
@@ -118,7 +118,7 @@ TEST_CASE("a port held by another process is refused with its holder", "[e2e]") 
   minrt::send::SerialPort holder;
   holder.open(board.pty_path(), minrt::send::PortSettings{});
   // The holder is this test process; host-send is another process.
-  const RunResult r = run({HS_HOST_SEND, "--port", board.pty_path(), ball(), "-o", "/tmp/never.ppm"});
+  const RunResult r = run({HS_HOST_SEND, "--no-handshake", "--port", board.pty_path(), ball(), "-o", "/tmp/never.ppm"});
   CHECK(r.status == 1);
   CHECK_THAT(r.err, Catch::Contains("locked by pid"));
   holder.close();

@@ -83,7 +83,7 @@ void run_column(const Column& col) {
       if (col.to_board) relay.push_back("--to-board");
       hs_test::DamagedLine line(hs_test::Board::kFirmware, col.protocol, relay, kSize, col.format);
       const std::string out = dir.file(std::string(f.name) + std::to_string(seed) + ".img");
-      std::vector<std::string> argv{HS_HOST_SEND, "--port",     line.port, "--protocol", col.protocol, "--size",
+      std::vector<std::string> argv{HS_HOST_SEND, "--no-handshake", "--port",     line.port, "--protocol", col.protocol, "--size",
                                     kSize,        "--format",   col.format, scene,       "-o",         out,
                                     "--idle-timeout", col.protocol == "framed" ? "20" : "1", "--first-byte-timeout",
                                     "30"};
@@ -162,7 +162,7 @@ TEST_CASE("one flipped bit in the uploaded scene is refused by the board, raw an
   for (const std::string protocol : {"raw", "course"}) {
     hs_test::DamagedLine line(hs_test::Board::kFirmware, protocol, {"--to-board-flip-at", "40"}, kSize, "p6");
     const std::string out = dir.file(protocol + ".ppm");
-    const hs_test::RunResult r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", protocol, "--size",
+    const hs_test::RunResult r = hs_test::run({HS_HOST_SEND, "--no-handshake", "--port", line.port, "--protocol", protocol, "--size",
                                                kSize, "--format", "p6", scene, "-o", out, "--idle-timeout", "5"},
                                               120);
     const std::string report = line.report();
@@ -204,7 +204,7 @@ TEST_CASE("fault matrix, full: raw, course and framed x drop, dup, flip, stall x
           const std::string out = dir.file(protocol + fault + rate + ".ppm");
           const auto t0 = std::chrono::steady_clock::now();
           const hs_test::RunResult r =
-              hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", protocol, "--size", kSize, "--format",
+              hs_test::run({HS_HOST_SEND, "--no-handshake", "--port", line.port, "--protocol", protocol, "--size", kSize, "--format",
                             "p6", scene, "-o", out, "--idle-timeout", protocol == "framed" ? "20" : "1",
                             "--first-byte-timeout", "30"},
                            150);

@@ -28,7 +28,7 @@ void check_framed_over_damage(Board who) {
     if (seed > 4) faults.push_back("--both-ways");
     DamagedLine line(who, "framed", faults);
     const std::string out = dir.file("f" + std::to_string(seed) + ".ppm");
-    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--protocol", "framed", "--size", "32x32",
+    const auto r = hs_test::run({HS_HOST_SEND, "--no-handshake", "--port", line.port, "--protocol", "framed", "--size", "32x32",
                                  "--format", "p6", ball(), "-o", out, "--idle-timeout", "20"});
     INFO("seed " << seed << "\n" << r.err << line.relay.output());
     REQUIRE(r.status == 0);
@@ -56,7 +56,7 @@ void check_raw_over_damage(Board who) {
     faults.insert(faults.end(), f.begin(), f.end());
     DamagedLine line(who, "raw", faults);
     const std::string out = dir.file("r" + std::to_string(seed) + ".ppm");
-    const auto r = hs_test::run({HS_HOST_SEND, "--port", line.port, "--size", "32x32", "--format", "p6", ball(), "-o",
+    const auto r = hs_test::run({HS_HOST_SEND, "--no-handshake", "--port", line.port, "--size", "32x32", "--format", "p6", ball(), "-o",
                                  out, "--idle-timeout", "1"});
     INFO("run " << seed << "\n" << r.err << line.relay.output());
     if (r.status == 0) {

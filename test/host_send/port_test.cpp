@@ -186,7 +186,7 @@ TEST_CASE("host-send restores the port's settings when it is interrupted", "[por
     const int devnull = ::open("/dev/null", O_RDWR);
     ::dup2(devnull, 1);
     ::dup2(devnull, 2);
-    ::execl(HS_HOST_SEND, HS_HOST_SEND, "--port", pty.name.c_str(), "--baud", "3000000", HS_DATA_DIR "/../standin_board.cpp",
+    ::execl(HS_HOST_SEND, HS_HOST_SEND, "--no-handshake", "--port", pty.name.c_str(), "--baud", "3000000", HS_DATA_DIR "/../standin_board.cpp",
             "-o", "/tmp/host_send_never.ppm", static_cast<char*>(nullptr));
     ::_exit(127);
   }

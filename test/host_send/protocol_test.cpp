@@ -290,7 +290,7 @@ TEST_CASE("framed mode reports a plain error line from a board that does not fra
   minrt::send::SimLauncher board;
   hs_test::start_standin(board, "16x16", "p6", "raw");
   hs_test::TempDir dir;
-  const auto r = hs_test::run({HS_HOST_SEND, "--port", board.pty_path(), "--protocol", "framed", "--size", "16x16",
+  const auto r = hs_test::run({HS_HOST_SEND, "--no-handshake", "--port", board.pty_path(), "--protocol", "framed", "--size", "16x16",
                                "--format", "p6", ball(), "-o", dir.file("x.ppm"), "--first-byte-timeout", "10"});
   INFO(r.err);
   CHECK(r.status == 3);

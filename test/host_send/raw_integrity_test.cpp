@@ -228,7 +228,7 @@ std::string ball() { return hs_test::shared_dir() + "/scenes/ball.sld"; }
 hs_test::RunResult send_over(hs_test::Board who, const std::string& format, const std::vector<std::string>& fault,
                              const std::vector<std::string>& extra, const std::string& out) {
   hs_test::DamagedLine line(who, "raw", fault, "32x32", format);
-  std::vector<std::string> argv{HS_HOST_SEND, "--port", line.port, "--size", "32x32", "--format", format, ball(),
+  std::vector<std::string> argv{HS_HOST_SEND, "--no-handshake", "--port", line.port, "--size", "32x32", "--format", format, ball(),
                                 "-o",         out,      "--idle-timeout", "2"};
   argv.insert(argv.end(), extra.begin(), extra.end());
   hs_test::RunResult r = hs_test::run(argv, 60);

@@ -300,7 +300,7 @@ TEST_CASE("sparse textures end to end: a read of a texel not sent is caught, and
   std::string why;
   REQUIRE(board.start(cfg, why));
   const std::string got = dir.file("port.png");
-  const RunResult p = run({HS_HOST_SEND, "-q", "-p", board.pty_path(), scene, "-o", got});
+  const RunResult p = run({HS_HOST_SEND, "-q", "--no-handshake", "-p", board.pty_path(), scene, "-o", got});
   board.stop(2000);
   INFO(p.err);
   CHECK(p.status == 3);

@@ -261,7 +261,7 @@ TEST_CASE("framed mode delivers CS418 and Jaworski images exactly over a damaged
                        "200",          "--delay", "0.001",              board.pty_path()};
       REQUIRE(relay.start(rc, err));
       const std::string out = dir.file(png ? "got.png" : "got.bmp");
-      const RunResult r = run({HS_HOST_SEND, "--port", relay.pty_path(), "--protocol", "framed", scene, "-o", out,
+      const RunResult r = run({HS_HOST_SEND, "--no-handshake", "--port", relay.pty_path(), "--protocol", "framed", scene, "-o", out,
                                "--idle-timeout", "20"});
       INFO(scene << " seed " << seed << "\n" << r.err << relay.output());
       CHECK(r.status == 0);

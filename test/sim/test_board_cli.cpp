@@ -99,6 +99,8 @@ TEST_CASE("each missing extension traps with its name", "[cli][board][isa]") {
       {"rv32imfc", "isa-probe-4", 10, ""},  // c.addi runs
       {"rv32im", "isa-probe-5", 4, "fcvt.s.w ft0, a0, dyn: needs the F extension"},
       {"qemu-virt", "isa-probe-5", 12, ""},
+      {"rv32im", "isa-probe-6", 4, "needs the Zifencei extension"},
+      {"qemu-virt", "isa-probe-6", 13, ""},
   };
   for (const Case& c : cases) {
     INFO(c.board << " " << c.elf);

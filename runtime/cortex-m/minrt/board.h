@@ -10,6 +10,9 @@
 
 #define MINRT_BOARD_NAME "mps2-an386"
 #define MINRT_BOARD_ZICSR 0
+#define MINRT_BOARD_ISA "armv7e-m+fp"
+/* QEMU runs it once per scene (its test): halt after the image. */
+#define MINRT_BOARD_AFTER_IMAGE MINRT_AFTER_IMAGE_HALT
 #define MINRT_BOARD_RESET 0x00000000
 #define MINRT_RAM_BASE 0x20000000
 #define MINRT_RAM_DEFAULT_SIZE 0x00400000

@@ -1,7 +1,7 @@
 /* Board ISA test program: runs one instruction from an extension, then
  * exits through the finisher at 0x100000 with the result as status.
  * -DPROBE=1 mul (M), 2 x16 (not in rv32e), 3 csrr (Zicsr), 4 a compressed
- * c.addi (C), 5 fadd.s (F). */
+ * c.addi (C), 5 fadd.s (F), 6 fence.i (Zifencei). */
   .section .text.start, "ax"
   .globl _start
 _start:
@@ -22,6 +22,9 @@ _start:
   fcvt.s.w ft0, a0
   fadd.s ft0, ft0, ft0
   fcvt.w.s a0, ft0       /* 12 */
+#elif PROBE == 6
+  .word 0x0000100f       /* fence.i, spelled out: assemblers differ on Zifencei */
+  add a0, a0, a1         /* 13 */
 #endif
   slli a0, a0, 16
   li t0, 0x3333
