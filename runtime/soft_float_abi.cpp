@@ -1,0 +1,55 @@
+// The compiler's float library calls (the libgcc ABI: __addsf3, __mulsf3,
+// the comparisons, ...) for a CPU without F, implemented by
+// core/math/soft_float.hpp instead of libgcc's generic routines: the same
+// bits for every operation, fewer instructions (docs/firmware.md,
+// "Instruction counts and profile"). Linked ahead of libgcc.a, so its
+// members for these symbols are never pulled. With M the mantissa products
+// and quotients use mul/mulhu and divu/remu; without, quarter squares and
+// shift-subtract division, so nothing here calls __mulsi3 or __udivsi3.
+#include <stdint.h>
+
+#include "core/math/soft_float.hpp"
+
+namespace sf = minrt::soft_float;
+
+namespace {
+
+#if defined(__riscv_mul) || defined(__ARM_FEATURE_DSP)
+using Mul = sf::Mul64Native;
+#else
+using Mul = sf::MulQuarterSquares;
+#endif
+#if defined(__riscv_div) || defined(__ARM_FEATURE_IDIV)
+using Div = sf::DivNative;
+#else
+using Div = sf::DivShift;
+#endif
+
+uint32_t bits(float x) { return __builtin_bit_cast(uint32_t, x); }
+float value(uint32_t b) { return __builtin_bit_cast(float, b); }
+
+}  // namespace
+
+extern "C" {
+
+float __addsf3(float a, float b) { return value(sf::add(bits(a), bits(b))); }
+float __subsf3(float a, float b) { return value(sf::sub(bits(a), bits(b))); }
+float __mulsf3(float a, float b) { return value(sf::mul<Mul>(bits(a), bits(b))); }
+float __divsf3(float a, float b) { return value(sf::div<Div>(bits(a), bits(b))); }
+
+// libgcc's contracts: eq/ne give 0 iff equal; lt/le give <= 0 iff a <= b
+// and 1 when unordered; gt/ge give >= 0 iff a >= b and -1 when unordered.
+int __eqsf2(float a, float b) { return sf::compare(bits(a), bits(b), 1); }
+int __nesf2(float a, float b) { return sf::compare(bits(a), bits(b), 1); }
+int __ltsf2(float a, float b) { return sf::compare(bits(a), bits(b), 1); }
+int __lesf2(float a, float b) { return sf::compare(bits(a), bits(b), 1); }
+int __gtsf2(float a, float b) { return sf::compare(bits(a), bits(b), -1); }
+int __gesf2(float a, float b) { return sf::compare(bits(a), bits(b), -1); }
+int __unordsf2(float a, float b) { return sf::unordered(bits(a), bits(b)) ? 1 : 0; }
+
+float __floatsisf(int32_t i) { return value(sf::from_int(i)); }
+float __floatunsisf(uint32_t i) { return value(sf::from_uint(i)); }
+int32_t __fixsfsi(float a) { return sf::to_int(bits(a)); }
+uint32_t __fixunssfsi(float a) { return sf::to_uint(bits(a)); }
+
+}  // extern "C"
