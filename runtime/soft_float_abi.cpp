@@ -28,13 +28,37 @@ using Div = sf::DivShift;
 uint32_t bits(float x) { return __builtin_bit_cast(uint32_t, x); }
 float value(uint32_t b) { return __builtin_bit_cast(float, b); }
 
+// The general paths (zeros, subnormals, infinities, NaN) as functions of
+// the calls' own signature, entered by a tail jump: the normal-operand
+// path then needs no stack frame.
+[[gnu::noinline]] float add_general(float a, float b) { return value(sf::add_general(bits(a), bits(b))); }
+[[gnu::noinline]] float mul_general(float a, float b) { return value(sf::mul_general<Mul>(bits(a), bits(b))); }
+
 }  // namespace
+
+#if defined(__clang__)
+#define MINRT_TAIL [[clang::musttail]]
+#else
+#define MINRT_TAIL
+#endif
 
 extern "C" {
 
-float __addsf3(float a, float b) { return value(sf::add(bits(a), bits(b))); }
-float __subsf3(float a, float b) { return value(sf::sub(bits(a), bits(b))); }
-float __mulsf3(float a, float b) { return value(sf::mul<Mul>(bits(a), bits(b))); }
+float __addsf3(float a, float b) {
+  const uint32_t x = bits(a), y = bits(b);
+  if (sf::add_needs_general(x, y)) MINRT_TAIL return add_general(a, b);
+  return value(sf::add_normal(x, y));
+}
+float __subsf3(float a, float b) {
+  const uint32_t x = bits(a), y = bits(b) ^ sf::kSign;
+  if (sf::add_needs_general(x, y)) MINRT_TAIL return add_general(a, value(y));
+  return value(sf::add_normal(x, y));
+}
+float __mulsf3(float a, float b) {
+  const uint32_t x = bits(a), y = bits(b);
+  if (sf::mul_needs_general(x, y)) MINRT_TAIL return mul_general(a, b);
+  return value(sf::mul_normal<Mul>(x, y));
+}
 float __divsf3(float a, float b) { return value(sf::div<Div>(bits(a), bits(b))); }
 
 // libgcc's contracts: eq/ne give 0 iff equal; lt/le give <= 0 iff a <= b

@@ -149,7 +149,7 @@ struct DivShift {
 // smaller when e <= 1, a subnormal result), bits 6..0 are the guard bits and
 // bit 0 also holds the sticky or of everything below. Rounds to nearest
 // even; overflow gives infinity, e < 1 a subnormal (or zero).
-constexpr u32 round_pack_general(u32 sign, i32 e, u32 m) {
+MINRT_SOFT_INLINE constexpr u32 round_pack_general(u32 sign, i32 e, u32 m) {
   if (e >= 255) return sign | kInf;
   if (e < 1) {
     m = shift_right_sticky(m, u32(1 - e));
@@ -218,41 +218,44 @@ constexpr u32 add_general(u32 a, u32 b) {
   return round_pack_general(sign, e, m);
 }
 
-MINRT_SOFT_NOINLINE constexpr u32 add_slow(u32 a, u32 b) { return add_general(a, b); }
+// Zeros, subnormals, infinities and NaN go to add_general.
+MINRT_SOFT_INLINE constexpr bool add_needs_general(u32 a, u32 b) {
+  // (x << 1) - 2^24 below 0xfe000000: exponent field in 1..254.
+  return ((a << 1) - (kHidden << 1)) >= 0xfe000000u || ((b << 1) - (kHidden << 1)) >= 0xfe000000u;
+}
 
-MINRT_SOFT_INLINE constexpr u32 add(u32 a, u32 b) {
+// a + b for normal finite a and b.
+MINRT_SOFT_INLINE constexpr u32 add_normal(u32 a, u32 b) {
   u32 ax = a << 1, bx = b << 1;  // magnitudes, exponent at bits 31..24
   if (ax < bx) {
     const u32 t = a; a = b; b = t;
-    const u32 tx = ax; ax = bx; bx = tx;
+    ax = bx;
   }
-  // Fast path: |a| >= |b|, both normal and finite.
-  if (ax >= (kInf << 1) || bx < (kHidden << 1)) return add_slow(a, b);
-  const u32 ea = ax >> 24, d = ea - (bx >> 24);
+  const u32 ea = ax >> 24, d = ea - ((b << 1) >> 24);
   const u32 ma = ((a << 8) | kSign) >> 1;  // hidden bit at 30, 7 guard bits
   const u32 mb = shift_right_sticky(((b << 8) | kSign) >> 1, d);
   const u32 top = a >> 23;                 // sign and exponent field
   u32 m;
-  i32 e = i32(ea);
   if (((a ^ b) & kSign) == 0) {
     m = ma + mb;
-    if ((m & kSign) != 0) {
+    if ((m & kSign) != 0) {  // carry: one more exponent
       m = (m >> 1) | (m & 1u);
       if (ea == 254) return (a & kSign) | kInf;
-      return (((top) << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7));
+      return (top << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7);
     }
   } else {
     m = ma - mb;
-    if (m < 0x40000000u) {
+    if (m < 0x40000000u) {  // cancellation: exact when it is more than one bit
       if (m == 0) return 0;
       const int s = clz(m) - 1;
-      m <<= s;
-      e -= s;
-      if (e < 1) return round_pack_general(a & kSign, e, m);
-      return (a & kSign) | ((u32(e - 1) << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7));
+      return round_pack_general(a & kSign, i32(ea) - s, m << s);
     }
   }
   return ((top - 1) << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7);
+}
+
+MINRT_SOFT_INLINE constexpr u32 add(u32 a, u32 b) {
+  return add_needs_general(a, b) ? add_general(a, b) : add_normal(a, b);
 }
 
 MINRT_SOFT_INLINE constexpr u32 sub(u32 a, u32 b) { return add(a, b ^ kSign); }
@@ -263,9 +266,9 @@ template <class Mul>
 constexpr u32 mul_general(u32 a, u32 b) {
   const u32 sign = (a ^ b) & kSign;
   const u32 ax = a & kAbs, bx = b & kAbs;
+  if ((ax == 0 || bx == 0) && ax < kInf && bx < kInf) return sign;  // the common case here
   if (ax > kInf || bx > kInf) return kQuietNaN;
   if (ax == kInf || bx == kInf) return (ax == 0 || bx == 0) ? kQuietNaN : (sign | kInf);
-  if (ax == 0 || bx == 0) return sign;
   const Unpacked ua = unpack(ax), ub = unpack(bx);
   const Wide p = Mul::mul(ua.m << 8, ub.m << 8);
   i32 e = ua.e + ub.e - 126;
@@ -280,17 +283,15 @@ constexpr u32 mul_general(u32 a, u32 b) {
   return round_pack(sign, e, m);
 }
 
-template <class Mul>
-MINRT_SOFT_NOINLINE constexpr u32 mul_slow(u32 a, u32 b) {
-  return mul_general<Mul>(a, b);
+MINRT_SOFT_INLINE constexpr bool mul_needs_general(u32 a, u32 b) {
+  return ((a << 1) - (kHidden << 1)) >= 0xfe000000u || ((b << 1) - (kHidden << 1)) >= 0xfe000000u;
 }
 
+// a b for normal finite a and b.
 template <class Mul>
-MINRT_SOFT_INLINE constexpr u32 mul(u32 a, u32 b) {
-  const u32 ea = (a >> 23) & 0xffu, eb = (b >> 23) & 0xffu;
-  if (ea - 1u >= 254u || eb - 1u >= 254u) return mul_slow<Mul>(a, b);
+MINRT_SOFT_INLINE constexpr u32 mul_normal(u32 a, u32 b) {
   const Wide p = Mul::mul((a << 8) | kSign, (b << 8) | kSign);
-  i32 e = i32(ea + eb) - 126;
+  i32 e = i32(((a >> 23) & 0xffu) + ((b >> 23) & 0xffu)) - 126;
   u32 m = p.hi;
   const u32 sticky = p.lo != 0 ? 1u : 0u;
   if ((m & kSign) != 0) {
@@ -300,6 +301,11 @@ MINRT_SOFT_INLINE constexpr u32 mul(u32 a, u32 b) {
     --e;
   }
   return round_pack((a ^ b) & kSign, e, m);
+}
+
+template <class Mul>
+MINRT_SOFT_INLINE constexpr u32 mul(u32 a, u32 b) {
+  return mul_needs_general(a, b) ? mul_general<Mul>(a, b) : mul_normal<Mul>(a, b);
 }
 
 // -------------------------------------------------------------------- divide
@@ -384,18 +390,19 @@ constexpr u32 sqrt(u32 a) {
 constexpr bool is_nan(u32 a) { return (a & kAbs) > kInf; }
 constexpr bool unordered(u32 a, u32 b) { return is_nan(a) || is_nan(b); }
 
-// A signed integer with the floats' order (both zeros map to 0), for
-// non-NaN operands.
-constexpr i32 order_key(u32 a) {
-  const u32 neg = u32(i32(a) >> 31);
-  return i32(((a & kAbs) ^ neg) - neg);
-}
-
 // -1, 0, 1 for a < b, a == b, a > b; `unord` when either is NaN.
 MINRT_SOFT_INLINE constexpr int compare(u32 a, u32 b, int unord) {
-  if (unordered(a, b)) return unord;
-  const i32 ka = order_key(a), kb = order_key(b);
-  return int(ka > kb) - int(ka < kb);
+  if ((a << 1) > (kInf << 1) || (b << 1) > (kInf << 1)) return unord;
+  if (((a | b) << 1) == 0) return 0;  // +0 == -0
+  // Sign and magnitude order as two's complement integers, reversed when
+  // both are negative.
+  i32 sa = i32(a), sb = i32(b);
+  if ((sa & sb) < 0) {
+    const i32 t = sa;
+    sa = sb;
+    sb = t;
+  }
+  return int(sa > sb) - int(sa < sb);
 }
 
 // ---------------------------------------------------------------- conversions
