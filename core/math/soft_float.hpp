@@ -80,24 +80,28 @@ struct Mul64Native {
   }
 };
 
-// floor(n^2 / 4) for 0 <= n < 2^13, the 12-bit halves' sums and differences.
+// floor(n^2 / 4) for -2^12 < n < 2^13: the sums and differences of two
+// 12-bit halves, differences indexed directly (no absolute value).
+inline constexpr int kQuarterSquaresLow = 4095;
 struct QuarterSquares {
-  u32 v[8192];
+  u32 v[kQuarterSquaresLow + 8192];
   constexpr QuarterSquares() : v{} {
+    // n^2/4 by additions only: floor(n^2/4) - floor((n-1)^2/4) = floor(n/2).
+    u32 q = 0;
     for (u32 n = 0; n < 8192; ++n) {
-      // n^2/4 by additions only, so no multiply call appears even if the
-      // table is computed at run time by a compiler that does not fold it.
-      v[n] = n == 0 ? 0u : v[n - 1] + (n >> 1);
+      if (n != 0) q += n >> 1;
+      v[kQuarterSquaresLow + n] = q;
+      if (n != 0 && n <= u32(kQuarterSquaresLow)) v[kQuarterSquaresLow - n] = q;
     }
   }
 };
 inline constexpr QuarterSquares kQuarterSquares{};
 
 struct MulQuarterSquares {
-  // a b for a, b < 2^12: table lookups, one subtraction.
+  // a b for a, b < 2^12: two table loads, one subtraction.
   static constexpr u32 mul12(u32 a, u32 b) {
-    const u32 d = a >= b ? a - b : b - a;
-    return kQuarterSquares.v[a + b] - kQuarterSquares.v[d];
+    const u32* t = kQuarterSquares.v + kQuarterSquaresLow;
+    return t[a + b] - t[i32(a) - i32(b)];
   }
   static constexpr Wide mul(u32 x, u32 y) {
     const u32 a = x >> 8, b = y >> 8;  // 24-bit mantissas
