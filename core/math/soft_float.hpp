@@ -287,8 +287,10 @@ constexpr u32 mul_general(u32 a, u32 b) {
   return round_pack(sign, e, m);
 }
 
+// Written with the exponent fields mul_normal uses, so that the compiler
+// extracts them once.
 MINRT_SOFT_INLINE constexpr bool mul_needs_general(u32 a, u32 b) {
-  return ((a << 1) - (kHidden << 1)) >= 0xfe000000u || ((b << 1) - (kHidden << 1)) >= 0xfe000000u;
+  return ((a >> 23) & 0xffu) - 1u >= 254u || ((b >> 23) & 0xffu) - 1u >= 254u;
 }
 
 // a b for normal finite a and b.
