@@ -98,21 +98,21 @@ struct QuarterSquares {
 inline constexpr QuarterSquares kQuarterSquares{};
 
 struct MulQuarterSquares {
-  // a b for a, b < 2^12: two table loads, one subtraction.
-  static constexpr u32 mul12(u32 a, u32 b) {
-    const u32* t = kQuarterSquares.v + kQuarterSquaresLow;
-    return t[a + b] - t[i32(a) - i32(b)];
-  }
   static constexpr Wide mul(u32 x, u32 y) {
-    const u32 a = x >> 8, b = y >> 8;  // 24-bit mantissas
-    const u32 a1 = a >> 12, a0 = a & 0xfffu, b1 = b >> 12, b0 = b & 0xfffu;
-    const u32 p11 = mul12(a1, b1), p00 = mul12(a0, b0);
-    const u32 mid = mul12(a1, b0) + mul12(a0, b1);  // < 2^25
-    // P = p11 2^24 + mid 2^12 + p00 (48 bits) in two words; x y = P 2^16.
-    const u32 lo1 = p00 + (mid << 12);
-    const u32 lo = lo1 + (p11 << 24);
-    const u32 hi = (p11 >> 8) + (mid >> 20) + (lo1 < p00 ? 1u : 0u) + (lo < lo1 ? 1u : 0u);
-    return {(hi << 16) | (lo >> 16), lo << 16};
+    // The 12-bit halves of the 24-bit mantissas x >> 8 and y >> 8.
+    const u32 a1 = x >> 20, a0 = (x << 12) >> 20;
+    const i32 b1 = i32(y >> 20), b0 = i32((y << 12) >> 20);
+    // a_i b_j = t[a_i + b_j] - t[a_i - b_j]: one row pointer per half of a,
+    // each half of b scaled once for the four lookups that use it.
+    const u32* t1 = kQuarterSquares.v + kQuarterSquaresLow + a1;
+    const u32* t0 = kQuarterSquares.v + kQuarterSquaresLow + a0;
+    const u32 p11 = t1[b1] - t1[-b1], p00 = t0[b0] - t0[-b0];
+    const u32 mid = (t1[b0] - t1[-b0]) + (t0[b1] - t0[-b1]);  // < 2^25
+    // P = p11 2^24 + mid 2^12 + p00 (48 bits); x y = P 2^16, so the high
+    // word is P >> 16 and the low word P's low 16 bits, shifted up.
+    const u32 hi = (p11 << 8) + ((mid + (p00 >> 12)) >> 4);
+    const u32 lo = ((mid << 12) + p00) << 16;
+    return {hi, lo};
   }
 };
 
