@@ -45,14 +45,16 @@ float value(uint32_t b) { return __builtin_bit_cast(float, b); }
 extern "C" {
 
 float __addsf3(float a, float b) {
-  const uint32_t x = bits(a), y = bits(b);
-  if (sf::add_needs_general(x, y)) MINRT_TAIL return add_general(a, b);
-  return value(sf::add_normal(x, y));
+  uint32_t x = bits(a), y = bits(b);
+  sf::order_for_add(x, y);  // addition commutes, the general path too
+  if (sf::add_ordered_needs_general(x, y)) MINRT_TAIL return add_general(value(x), value(y));
+  return value(sf::add_ordered(x, y));
 }
 float __subsf3(float a, float b) {
-  const uint32_t x = bits(a), y = bits(b) ^ sf::kSign;
-  if (sf::add_needs_general(x, y)) MINRT_TAIL return add_general(a, value(y));
-  return value(sf::add_normal(x, y));
+  uint32_t x = bits(a), y = bits(b) ^ sf::kSign;
+  sf::order_for_add(x, y);
+  if (sf::add_ordered_needs_general(x, y)) MINRT_TAIL return add_general(value(x), value(y));
+  return value(sf::add_ordered(x, y));
 }
 float __mulsf3(float a, float b) {
   const uint32_t x = bits(a), y = bits(b);

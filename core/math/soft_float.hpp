@@ -222,20 +222,15 @@ constexpr u32 add_general(u32 a, u32 b) {
   return round_pack_general(sign, e, m);
 }
 
-// Zeros, subnormals, infinities and NaN go to add_general.
-MINRT_SOFT_INLINE constexpr bool add_needs_general(u32 a, u32 b) {
-  // (x << 1) - 2^24 below 0xfe000000: exponent field in 1..254.
-  return ((a << 1) - (kHidden << 1)) >= 0xfe000000u || ((b << 1) - (kHidden << 1)) >= 0xfe000000u;
+// For |a| >= |b|: zeros, subnormals, infinities and NaN go to add_general
+// (the larger decides infinity and NaN, the smaller zero and subnormal).
+MINRT_SOFT_INLINE constexpr bool add_ordered_needs_general(u32 a, u32 b) {
+  return (a << 1) >= (kInf << 1) || (b << 1) < (kHidden << 1);
 }
 
-// a + b for normal finite a and b.
-MINRT_SOFT_INLINE constexpr u32 add_normal(u32 a, u32 b) {
-  u32 ax = a << 1, bx = b << 1;  // magnitudes, exponent at bits 31..24
-  if (ax < bx) {
-    const u32 t = a; a = b; b = t;
-    ax = bx;
-  }
-  const u32 ea = ax >> 24, d = ea - ((b << 1) >> 24);
+// a + b for normal finite a and b with |a| >= |b|.
+MINRT_SOFT_INLINE constexpr u32 add_ordered(u32 a, u32 b) {
+  const u32 ea = a << 1 >> 24, d = ea - (b << 1 >> 24);
   const u32 ma = ((a << 8) | kSign) >> 1;  // hidden bit at 30, 7 guard bits
   const u32 mb = shift_right_sticky(((b << 8) | kSign) >> 1, d);
   const u32 top = a >> 23;                 // sign and exponent field
@@ -258,8 +253,18 @@ MINRT_SOFT_INLINE constexpr u32 add_normal(u32 a, u32 b) {
   return ((top - 1) << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7);
 }
 
+// Puts the operand of larger magnitude first.
+MINRT_SOFT_INLINE constexpr void order_for_add(u32& a, u32& b) {
+  if ((a << 1) < (b << 1)) {
+    const u32 t = a;
+    a = b;
+    b = t;
+  }
+}
+
 MINRT_SOFT_INLINE constexpr u32 add(u32 a, u32 b) {
-  return add_needs_general(a, b) ? add_general(a, b) : add_normal(a, b);
+  order_for_add(a, b);
+  return add_ordered_needs_general(a, b) ? add_general(a, b) : add_ordered(a, b);
 }
 
 MINRT_SOFT_INLINE constexpr u32 sub(u32 a, u32 b) { return add(a, b ^ kSign); }
