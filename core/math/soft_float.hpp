@@ -132,10 +132,13 @@ struct DivNative {
   }
 };
 
+// 26 quotient bits (the 24 of the mantissa, a rounding bit and one more),
+// placed like DivNative's 31 with the sticky bit at 0: rounding sees the
+// same result.
 struct DivShift {
   static constexpr u32 quotient(u32 n, u32 d) {
     u32 q = 0, r = n;
-    for (int i = 0; i < 31; ++i) {
+    for (int i = 0; i < 26; ++i) {
       q <<= 1;
       if (r >= d) {
         r -= d;
@@ -143,7 +146,7 @@ struct DivShift {
       }
       r <<= 1;
     }
-    return q | (r != 0 ? 1u : 0u);
+    return (q << 5) | (r != 0 ? 1u : 0u);
   }
 };
 
@@ -403,16 +406,13 @@ constexpr bool unordered(u32 a, u32 b) { return is_nan(a) || is_nan(b); }
 
 // -1, 0, 1 for a < b, a == b, a > b; `unord` when either is NaN.
 MINRT_SOFT_INLINE constexpr int compare(u32 a, u32 b, int unord) {
-  if ((a << 1) > (kInf << 1) || (b << 1) > (kInf << 1)) return unord;
-  if (((a | b) << 1) == 0) return 0;  // +0 == -0
+  const u32 ax = a << 1, bx = b << 1;  // magnitudes, shifted
+  if (ax > (kInf << 1) || bx > (kInf << 1)) return unord;
+  if ((ax | bx) == 0) return 0;  // +0 == -0
   // Sign and magnitude order as two's complement integers, reversed when
   // both are negative.
-  i32 sa = i32(a), sb = i32(b);
-  if ((sa & sb) < 0) {
-    const i32 t = sa;
-    sa = sb;
-    sb = t;
-  }
+  const i32 sa = i32(a), sb = i32(b);
+  if ((sa & sb) < 0) return int(sb > sa) - int(sb < sa);
   return int(sa > sb) - int(sa < sb);
 }
 
