@@ -47,18 +47,27 @@ extern "C" {
 float __addsf3(float a, float b) {
   uint32_t x = bits(a), y = bits(b);
   sf::order_for_add(x, y);  // addition commutes, the general path too
-  if (sf::add_ordered_needs_general(x, y)) MINRT_TAIL return add_general(value(x), value(y));
+  if (sf::add_ordered_needs_general(x, y)) {
+    if (sf::add_ordered_gives_a(x, y)) return value(x);
+    MINRT_TAIL return add_general(value(x), value(y));
+  }
   return value(sf::add_ordered(x, y));
 }
 float __subsf3(float a, float b) {
   uint32_t x = bits(a), y = bits(b) ^ sf::kSign;
   sf::order_for_add(x, y);
-  if (sf::add_ordered_needs_general(x, y)) MINRT_TAIL return add_general(value(x), value(y));
+  if (sf::add_ordered_needs_general(x, y)) {
+    if (sf::add_ordered_gives_a(x, y)) return value(x);
+    MINRT_TAIL return add_general(value(x), value(y));
+  }
   return value(sf::add_ordered(x, y));
 }
 float __mulsf3(float a, float b) {
   const uint32_t x = bits(a), y = bits(b);
-  if (sf::mul_needs_general(x, y)) MINRT_TAIL return mul_general(a, b);
+  if (sf::mul_needs_general(x, y)) {
+    if (sf::mul_gives_zero(x, y)) return value((x ^ y) & sf::kSign);
+    MINRT_TAIL return mul_general(a, b);
+  }
   return value(sf::mul_normal<Mul>(x, y));
 }
 float __divsf3(float a, float b) { return value(sf::div<Div>(bits(a), bits(b))); }

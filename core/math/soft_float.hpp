@@ -265,9 +265,16 @@ MINRT_SOFT_INLINE constexpr void order_for_add(u32& a, u32& b) {
   }
 }
 
+// For |a| >= |b|, the general case the renderer meets most (x + 0): b is
+// a zero and a neither zero nor NaN, so a + b = a.
+MINRT_SOFT_INLINE constexpr bool add_ordered_gives_a(u32 a, u32 b) {
+  return (b << 1) == 0 && (a << 1) - 1u < (kInf << 1);
+}
+
 MINRT_SOFT_INLINE constexpr u32 add(u32 a, u32 b) {
   order_for_add(a, b);
-  return add_ordered_needs_general(a, b) ? add_general(a, b) : add_ordered(a, b);
+  if (add_ordered_needs_general(a, b)) return add_ordered_gives_a(a, b) ? a : add_general(a, b);
+  return add_ordered(a, b);
 }
 
 MINRT_SOFT_INLINE constexpr u32 sub(u32 a, u32 b) { return add(a, b ^ kSign); }
@@ -317,9 +324,16 @@ MINRT_SOFT_INLINE constexpr u32 mul_normal(u32 a, u32 b) {
   return round_pack((a ^ b) & kSign, e, m);
 }
 
+// The general case the renderer meets most: a zero times a finite number.
+MINRT_SOFT_INLINE constexpr bool mul_gives_zero(u32 a, u32 b) {
+  const u32 ax = a << 1, bx = b << 1;
+  return (ax == 0 && bx < (kInf << 1)) || (bx == 0 && ax < (kInf << 1));
+}
+
 template <class Mul>
 MINRT_SOFT_INLINE constexpr u32 mul(u32 a, u32 b) {
-  return mul_needs_general(a, b) ? mul_general<Mul>(a, b) : mul_normal<Mul>(a, b);
+  if (mul_needs_general(a, b)) return mul_gives_zero(a, b) ? (a ^ b) & kSign : mul_general<Mul>(a, b);
+  return mul_normal<Mul>(a, b);
 }
 
 // -------------------------------------------------------------------- divide
