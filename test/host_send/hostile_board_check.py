@@ -133,7 +133,7 @@ def main():
     for sig in (signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM, signal.SIGSEGV):
         master, slave = pty.openpty()
         before = termios.tcgetattr(slave)
-        p = subprocess.Popen([host_send, "--port", os.ttyname(slave), scene, "--size", "16x16", "--no-check",
+        p = subprocess.Popen([host_send, "--port", os.ttyname(slave), "--no-handshake", scene, "--size", "16x16", "--no-check",
                               "--quiet", "-o", out], stdin=subprocess.DEVNULL, stderr=subprocess.PIPE,
                              preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_CORE, (0, 0)))  # no core files
         got = b""
