@@ -277,7 +277,7 @@ TEST_CASE("eastray output: back_mode 1 and 2 without input: the sky behind, one 
   // image; mode 1 hides the e_light's disc, 2 shows it, as 0 does.
   const std::string path = scenes() + "/back_sky_disc.ray";
   const std::string text = minrt::test::read_file(path);
-  REQUIRE(text.find("input") == std::string::npos);
+  REQUIRE(text.find("\ninput ") == std::string::npos);  // no input statement
   const std::string dir = temp_dir();
   write(dir + "/b1.ray", text);
   const Run r = minrt_in(dir, "b1.ray -o b1.png");
