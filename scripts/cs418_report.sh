@@ -8,7 +8,7 @@
 # --write-docs regenerates the tracked docs/cs418/ instead (the table's
 # figures differ a little between runs and machines).
 # Usage: scripts/cs418_report.sh [--shared DIR] [--out DIR | --write-docs]
-# Needs build/release (scripts/render.sh or scripts/test.sh builds it).
+# Needs build/release with minrt and image-compare (scripts/test.sh builds them).
 . "$(dirname "$0")/help.sh"
 . "$(dirname "$0")/common.sh"
 set -euo pipefail

@@ -12,7 +12,7 @@
 # of the scenes says what each must show; test/eastray/eastray_test.cpp
 # probes it).
 # Usage: scripts/eastray_report.sh [--shared DIR] [--out DIR | --write-docs]
-# Needs build/release (scripts/render.sh or scripts/test.sh builds it).
+# Needs build/release with minrt and image-compare (scripts/test.sh builds them).
 . "$(dirname "$0")/help.sh"
 . "$(dirname "$0")/common.sh"
 set -euo pipefail

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Renders a scene end to end: sets up and builds, then sends SCENE to the
-# embedded default (the RV32IMF firmware running in firmware-sim, over a
-# pseudo-terminal) with host-send. Extra arguments go to host-send.
+# Renders a scene end to end: installs the render's packages and builds what
+# it runs (scripts/setup.sh --render: host-send, firmware-sim and the
+# default firmware, nothing else), then sends SCENE to the embedded default
+# (the RV32IMF firmware running in firmware-sim, over a pseudo-terminal)
+# with host-send. Extra arguments go to host-send.
 #   scripts/render.sh ../shared/scenes/contest.sld -o contest.ppm --size 128x128
 . "$(dirname "$0")/help.sh"
 set -euo pipefail
@@ -14,7 +16,7 @@ fi
 # happen; the full output goes to a log, printed only when they fail.
 log=$(mktemp)
 set +e
-"$root/scripts/setup.sh" 2>&1 | tee "$log" |
+"$root/scripts/setup.sh" --render 2>&1 | tee "$log" |
   grep --line-buffered -E '^setup:|^\[ *[0-9]+%\] (Built target|Linking|Performing build step|Training)' >&2
 setup_status=${PIPESTATUS[0]}
 set -e
@@ -25,9 +27,4 @@ if [[ $setup_status -ne 0 ]]; then
   exit 1
 fi
 rm -f "$log"
-bin=$root/build/release
-if [[ -x $bin/host/send/host-send ]]; then
-  exec "$bin/host/send/host-send" --sim "$@"
-fi
-echo "render: host-send is not built; rendering with the host build instead" >&2
-exec "$bin/host/minrt" "$@"
+exec "$root/build/release/host/send/host-send" --sim "$@"

@@ -84,8 +84,12 @@ class Reader {
       if (!items(w, Affine<R>{}, scene_.root, ']', mains_[i].pos, 0)) return false;
     }
     finish_vertex_normals();
+    // back_mode 1 or 2 with no image to composite (lines 212-216): the sky
+    // stands in for the image, and the mode still decides whether the
+    // infinite lights' discs are seen (docs/eastray.md, "Statements").
     if (scene_.background != 0 && scene_.input[0] == 0)
-      return fail_at(back_at_, "back_mode 1 and 2 composite the input image, and the scene names none ('input FILE ;')");
+      warn_at(back_at_, "warning: back_mode 1 and 2 composite the input image, and the scene names none "
+                        "('input FILE ;'): the sky is the background");
     return true;
   }
 

@@ -35,6 +35,17 @@ void print_warning(void* ctx, const Diagnostic& d) {
   std::fprintf(stderr, "%s: %s\n", w->expanded->at(d.pos.line, d.pos.col).c_str(), d.message);
 }
 
+// host-send's: the lines kept, printed with its own output.
+struct WarningLines {
+  const ExpandedEastray* expanded;
+  std::vector<std::string>* lines;
+};
+
+void keep_warning(void* ctx, const Diagnostic& d) {
+  const auto* w = static_cast<const WarningLines*>(ctx);
+  w->lines->push_back(w->expanded->at(d.pos.line, d.pos.col) + ": " + d.message);
+}
+
 // Reads the expanded text into `scene`, in an arena (in `storage`) sized for
 // capacities from the text's content plus `extra(caps)` bytes, doubling the
 // capacities while the reader finds a table full. `arena` is the arena the
@@ -212,12 +223,16 @@ bool eastray_board_text(const std::string& path, const std::string& text, std::s
   ArenaStorage storage;
   std::unique_ptr<Arena> arena;
   eastray::Scene<M::real> scene;
-  if (!read_growing<M>(x, path, WarningSink{}, vertex_index, storage, arena, scene, error)) return false;
+  std::vector<std::string> warnings;
+  WarningLines lines{&x, &warnings};
+  if (!read_growing<M>(x, path, WarningSink{&keep_warning, &lines}, vertex_index, storage, arena, scene, error))
+    return false;
   width = scene.width;
   height = scene.height;
   output_statement = scene.output;
   if (output != nullptr)
-    *output = EastrayBoardOutput{scene.stereo, scene.x0, scene.y0, scene.x1, scene.y1, scene.output_bits, scene.dither};
+    *output = EastrayBoardOutput{scene.stereo, scene.x0,          scene.y0,     scene.x1,
+                                 scene.y1,     scene.output_bits, scene.dither, std::move(warnings)};
   if (maps != nullptr) {
     maps->clear();
     for (int32_t i = 0; i < scene.map_file_count; ++i)

@@ -32,6 +32,7 @@ struct EastrayBoardOutput {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the display window (inclusive)
   int bits = 24;             // output_mode
   bool dither = false;
+  std::vector<std::string> warnings;  // the scene's warnings, each a "FILE:LINE:COL: warning: ..." line
 };
 bool eastray_board_text(const std::string& path, const std::string& text, std::string& board_text, int& width,
                         int& height, std::string& output_statement, std::string& error,

@@ -94,6 +94,8 @@ int prepare_scene(Options& o, Job& job) {
   Upload upload;
   if (!upload_format(format.id).prepare(request, scene, upload, why))
     return fail(kExitFirmware, "scene rejected before sending: " + why);
+  if (!o.quiet)
+    for (const std::string& w : upload.scene_warnings) std::fprintf(stderr, "%s\n", w.c_str());
   job.bytes = std::move(upload.bytes);
   job.sparse = upload.sparse;
   job.note = upload.note;

@@ -91,6 +91,7 @@ bool prepare_eastray(const UploadRequest& r, std::string scene, Upload& out, std
   host::EastrayBoardOutput how;
   if (!host::eastray_board_text(r.path, scene, text, out.width, out.height, statement, error, &maps, &how))
     return false;
+  out.scene_warnings = std::move(how.warnings);
   out.stereo = how.stereo;
   if (out.stereo) out.height *= 2;  // rmode 1: the right image above the left
   // TIFF or PNG by the name, output_mode, the window kept in an existing file.

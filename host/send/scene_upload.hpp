@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "formats/registry.hpp"
 
@@ -31,6 +32,7 @@ struct Upload {
   std::string output;           // where the image goes without -o ("": the scene's stem with the reply's extension)
   std::string warning;          // printed before the transfer, when no -o names the output
   std::string refusal;          // why the default output cannot be written (a format we do not write)
+  std::vector<std::string> scene_warnings;  // the scene's own, located lines, printed before the transfer (not under -q)
   bool stereo = false;          // the reply is EASTRAY's pair, right above left: written as _r and _l files
   // The file written at a path from the board's PNG (each of a stereo pair
   // alone); empty: the PNG recompressed.

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checks that the commands written in README.md and docs/*.md run as written
-from the repository root, after the README's first command (set-up and build).
+from the repository root, after the README's two commands (set-up and build).
 
 Usage: check_doc_commands.py --root REPO --build BUILD --shared SHARED [--no-run] [FILE.md...]
 
@@ -64,7 +64,7 @@ WRITTEN_LATER = {"build/release/bench-firmware/"}
 OUTPUT_OPTIONS = {"-o", "--output", "--uart-out", "--profile-out", "--folded-out", "--out", "--sheet", ">"}
 # Commands that are not run, with the reason. Their paths are still checked.
 SKIP = [
-    (r"^scripts/(render|test|setup)\.sh\b", "sets up and builds: the README's first command, run before this test"),
+    (r"^scripts/(render|test|setup)\.sh\b", "sets up and builds: the README's commands, run before this test"),
     (r"^scripts/fuzz\.sh\b", "fuzzing runs for minutes"),
     (r"^scripts/cs418_report\.sh\b", "regenerates docs/cs418 (minutes)"),
     (r"^cmake (--preset|--build|-S)\b", "configures or builds: the build is done before this test"),
