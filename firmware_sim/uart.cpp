@@ -250,7 +250,7 @@ void Uart::flush() {
       // A host that reads takes the bytes within a moment; none does.
       pollfd p{cfg_.out_fd, POLLOUT, 0};
       if (::poll(&p, 1, 200) > 0) continue;
-      dropped_ += out_buf_.size() - done;
+      unread_ += out_buf_.size() - done;
       break;
     }
     if (n <= 0) {

@@ -84,7 +84,7 @@ class Uart {
   bool io_error_ = false;
   bool output_limited_ = false;
   int write_errno_ = 0;
-  uint64_t dropped_ = 0;         // real board: output bytes no host took
+  uint64_t unread_ = 0;          // real board: output bytes no host took
   long long wait_since_ns_ = 0;  // real board: when the firmware began to poll an empty line
 };
 
