@@ -143,6 +143,7 @@ const std::map<std::string, Sample>& samples() {
       {"sim-ram-size", {{"--sim-ram-size", "16M"}, [](const Options& o) { return o.sim && o.sim_ram_bytes == 16u << 20; }}},
       {"board", {{"--board", "b.board"}, [](const Options& o) { return o.sim && o.sim_board == "b.board"; }}},
       {"sim-binary", {{"--sim-binary", "/x/sim"}, [](const Options& o) { return o.sim && o.sim_binary == "/x/sim"; }}},
+      {"rtl", {{"--rtl", "fw.elf"}, [](const Options& o) { return o.sim && o.rtl && o.sim_elf == "fw.elf"; }}},
       {"baud", {{"--baud", "921600"}, [](const Options& o) { return o.baud_given && o.port_settings.baud == 921600; }}},
       {"flow", {{"--flow", "rtscts"}, [](const Options& o) { return o.port_settings.flow == Flow::kRtsCts; }}},
       {"list", {{"--list"}, [](const Options& o) { return o.list; }}},
