@@ -217,7 +217,7 @@ TEST_CASE("every option --help lists is accepted and sets what it says", "[cli]"
     INFO("--" << name);
     std::vector<std::string> args = sample.args;
     if (name != "port" && name != "list" && name != "sim" && name != "board" && name != "sim-binary" &&
-        name != "sim-ram-size" && name != "probe")
+        name != "sim-ram-size" && name != "probe" && name != "rtl")
       args.push_back("--sim");
     if (name != "probe") args.push_back("scene.sld");  // --probe takes none
     Options o;
