@@ -41,13 +41,16 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
   Clock::time_point t0 = Clock::now(), last_rx = Clock::now(), last_tx = Clock::now(), t_end = Clock::now();
   if (ex.progress) ex.progress->start();
   std::uint8_t buf[8192];
-  auto fail = [&](std::string msg) {
-    r.status = TransferResult::Status::kLinkError;
+  auto ended = [&](TransferResult::Status status, std::string msg) {
+    r.status = status;
     r.message = std::move(msg);
     r.sent = sent;
     r.received = rx.bytes();
     return r;
   };
+  auto fail = [&](std::string msg) { return ended(TransferResult::Status::kLinkError, std::move(msg)); };
+  // The board's own error line ends the exchange with its message.
+  auto board_error = [&] { return ended(TransferResult::Status::kFirmwareError, rx.message()); };
   for (;;) {
     if (minrt::host::interrupted()) return fail("interrupted");
     // Stop sending once the board has started to answer: it has read all it
@@ -90,13 +93,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
           trailing = static_cast<std::size_t>(n) - used;
           break;
         }
-        if (rx.firmware_error()) {
-          r.status = TransferResult::Status::kFirmwareError;
-          r.message = rx.message();
-          r.sent = sent;
-          r.received = rx.bytes();
-          return r;
-        }
+        if (rx.firmware_error()) return board_error();
         if (rx.failed()) return fail(rx.message());
         continue;
       }
@@ -118,13 +115,7 @@ TransferResult exchange(Exchange& ex, const std::string& out, Receiver& rx) {
         t_end = last_rx;
         break;
       }
-      if (rx.firmware_error()) {
-        r.status = TransferResult::Status::kFirmwareError;
-        r.message = rx.message();
-        r.sent = sent;
-        r.received = rx.bytes();
-        return r;
-      }
+      if (rx.firmware_error()) return board_error();
       return fail("the reply did not end within " + std::to_string(reply_ms / 1000) + " s of the upload (" +
                   std::to_string(rx.bytes()) + " bytes received; --reply-timeout S)");
     }
