@@ -54,7 +54,7 @@ float __addsf3(float a, float b) {
   return value(sf::add_ordered(x, y));
 }
 float __subsf3(float a, float b) {
-  uint32_t x = bits(a), y = bits(b) ^ sf::kSign;
+  uint32_t x = bits(a), y = bits(b) ^ sf::kSignBit;
   sf::order_for_add(x, y);
   if (sf::add_ordered_needs_general(x, y)) {
     if (sf::add_ordered_gives_a(x, y)) return value(x);
@@ -65,7 +65,7 @@ float __subsf3(float a, float b) {
 float __mulsf3(float a, float b) {
   const uint32_t x = bits(a), y = bits(b);
   if (sf::mul_needs_general(x, y)) {
-    if (sf::mul_gives_zero(x, y)) return value((x ^ y) & sf::kSign);
+    if (sf::mul_gives_zero(x, y)) return value((x ^ y) & sf::kSignBit);
     MINRT_TAIL return mul_general(a, b);
   }
   return value(sf::mul_normal<Mul>(x, y));

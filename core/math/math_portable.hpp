@@ -28,6 +28,7 @@
 #include <stdint.h>
 
 #include "core/base/bit_cast.hpp"
+#include "core/math/binary32_bits.hpp"
 #include "core/math/math_policy.hpp"
 
 namespace minrt {
@@ -37,12 +38,12 @@ using u32 = uint32_t;
 using i32 = int32_t;
 using u64 = uint64_t;
 
-inline constexpr u32 kSignBit = 0x80000000u;
-inline constexpr u32 kAbsMask = 0x7fffffffu;
-inline constexpr u32 kInfBits = 0x7f800000u;
-inline constexpr u32 kFracMask = 0x007fffffu;
-inline constexpr u32 kHiddenBit = 0x00800000u;
-inline constexpr u32 kQuietNaN = 0x7fc00000u;
+using binary32::kAbsMask;
+using binary32::kFracMask;
+using binary32::kHiddenBit;
+using binary32::kInfBits;
+using binary32::kQuietNaN;
+using binary32::kSignBit;
 
 constexpr u32 bits_of(float x) { return bit_cast<u32>(x); }
 constexpr float float_of(u32 b) { return bit_cast<float>(b); }

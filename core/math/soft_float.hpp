@@ -23,18 +23,20 @@
 
 #include <stdint.h>
 
+#include "core/math/binary32_bits.hpp"
+
 namespace minrt::soft_float {
 
 using u32 = uint32_t;
 using i32 = int32_t;
 using u64 = uint64_t;
 
-inline constexpr u32 kSign = 0x80000000u;
-inline constexpr u32 kAbs = 0x7fffffffu;
-inline constexpr u32 kInf = 0x7f800000u;
-inline constexpr u32 kFrac = 0x007fffffu;
-inline constexpr u32 kHidden = 0x00800000u;
-inline constexpr u32 kQuietNaN = 0x7fc00000u;
+using binary32::kAbsMask;
+using binary32::kFracMask;
+using binary32::kHiddenBit;
+using binary32::kInfBits;
+using binary32::kQuietNaN;
+using binary32::kSignBit;
 
 
 #if defined(__GNUC__)
@@ -157,7 +159,7 @@ struct DivShift {
 // bit 0 also holds the sticky or of everything below. Rounds to nearest
 // even; overflow gives infinity, e < 1 a subnormal (or zero).
 MINRT_SOFT_INLINE constexpr u32 round_pack_general(u32 sign, i32 e, u32 m) {
-  if (e >= 255) return sign | kInf;
+  if (e >= 255) return sign | kInfBits;
   if (e < 1) {
     m = shift_right_sticky(m, u32(1 - e));
     e = 1;
@@ -182,7 +184,7 @@ struct Unpacked {
 };
 constexpr Unpacked unpack(u32 ax) {
   const i32 e = i32(ax >> 23);
-  if (e != 0) return {e, (ax & kFrac) | kHidden};
+  if (e != 0) return {e, (ax & kFracMask) | kHiddenBit};
   const int s = clz(ax) - 8;
   return {1 - s, ax << s};
 }
@@ -190,28 +192,28 @@ constexpr Unpacked unpack(u32 ax) {
 // ------------------------------------------------------------- add, subtract
 
 constexpr u32 add_general(u32 a, u32 b) {
-  u32 ax = a & kAbs, bx = b & kAbs;
+  u32 ax = a & kAbsMask, bx = b & kAbsMask;
   if (ax < bx) {
     const u32 t = a; a = b; b = t;
     const u32 tx = ax; ax = bx; bx = tx;
   }
-  if (ax >= kInf) {
-    if (ax > kInf) return kQuietNaN;
-    if (bx == kInf && ((a ^ b) & kSign) != 0) return kQuietNaN;  // inf - inf
+  if (ax >= kInfBits) {
+    if (ax > kInfBits) return kQuietNaN;
+    if (bx == kInfBits && ((a ^ b) & kSignBit) != 0) return kQuietNaN;  // inf - inf
     return a;
   }
   if (bx == 0) return ax == 0 ? (a & b) : a;  // -0 + -0 = -0, else +0
   const i32 ea = i32(ax >> 23), eb = i32(bx >> 23);
   // Subnormals: no hidden bit, exponent field 0 weighs like 1.
-  u32 ma = ((ax & kFrac) | (ea != 0 ? kHidden : 0u)) << 7;
-  u32 mb = ((bx & kFrac) | (eb != 0 ? kHidden : 0u)) << 7;
+  u32 ma = ((ax & kFracMask) | (ea != 0 ? kHiddenBit : 0u)) << 7;
+  u32 mb = ((bx & kFracMask) | (eb != 0 ? kHiddenBit : 0u)) << 7;
   i32 e = ea != 0 ? ea : 1;
   mb = shift_right_sticky(mb, u32(e - (eb != 0 ? eb : 1)));
-  const u32 sign = a & kSign;
+  const u32 sign = a & kSignBit;
   u32 m;
-  if (((a ^ b) & kSign) == 0) {
+  if (((a ^ b) & kSignBit) == 0) {
     m = ma + mb;
-    if ((m & kSign) != 0) {
+    if ((m & kSignBit) != 0) {
       m = (m >> 1) | (m & 1u);
       ++e;
     }
@@ -228,21 +230,21 @@ constexpr u32 add_general(u32 a, u32 b) {
 // For |a| >= |b|: zeros, subnormals, infinities and NaN go to add_general
 // (the larger decides infinity and NaN, the smaller zero and subnormal).
 MINRT_SOFT_INLINE constexpr bool add_ordered_needs_general(u32 a, u32 b) {
-  return (a << 1) >= (kInf << 1) || (b << 1) < (kHidden << 1);
+  return (a << 1) >= (kInfBits << 1) || (b << 1) < (kHiddenBit << 1);
 }
 
 // a + b for normal finite a and b with |a| >= |b|.
 MINRT_SOFT_INLINE constexpr u32 add_ordered(u32 a, u32 b) {
   const u32 ea = a << 1 >> 24, d = ea - (b << 1 >> 24);
-  const u32 ma = ((a << 8) | kSign) >> 1;  // hidden bit at 30, 7 guard bits
-  const u32 mb = shift_right_sticky(((b << 8) | kSign) >> 1, d);
+  const u32 ma = ((a << 8) | kSignBit) >> 1;  // hidden bit at 30, 7 guard bits
+  const u32 mb = shift_right_sticky(((b << 8) | kSignBit) >> 1, d);
   const u32 top = a >> 23;                 // sign and exponent field
   u32 m;
-  if (((a ^ b) & kSign) == 0) {
+  if (((a ^ b) & kSignBit) == 0) {
     m = ma + mb;
-    if ((m & kSign) != 0) {  // carry: one more exponent
+    if ((m & kSignBit) != 0) {  // carry: one more exponent
       m = (m >> 1) | (m & 1u);
-      if (ea == 254) return (a & kSign) | kInf;
+      if (ea == 254) return (a & kSignBit) | kInfBits;
       return (top << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7);
     }
   } else {
@@ -250,7 +252,7 @@ MINRT_SOFT_INLINE constexpr u32 add_ordered(u32 a, u32 b) {
     if (m < 0x40000000u) {  // cancellation: exact when it is more than one bit
       if (m == 0) return 0;
       const int s = clz(m) - 1;
-      return round_pack_general(a & kSign, i32(ea) - s, m << s);
+      return round_pack_general(a & kSignBit, i32(ea) - s, m << s);
     }
   }
   return ((top - 1) << 23) + ((m + 0x3fu + ((m >> 7) & 1u)) >> 7);
@@ -268,7 +270,7 @@ MINRT_SOFT_INLINE constexpr void order_for_add(u32& a, u32& b) {
 // For |a| >= |b|, the general case the renderer meets most (x + 0): b is
 // a zero and a neither zero nor NaN, so a + b = a.
 MINRT_SOFT_INLINE constexpr bool add_ordered_gives_a(u32 a, u32 b) {
-  return (b << 1) == 0 && (a << 1) - 1u < (kInf << 1);
+  return (b << 1) == 0 && (a << 1) - 1u < (kInfBits << 1);
 }
 
 MINRT_SOFT_INLINE constexpr u32 add(u32 a, u32 b) {
@@ -277,23 +279,23 @@ MINRT_SOFT_INLINE constexpr u32 add(u32 a, u32 b) {
   return add_ordered(a, b);
 }
 
-MINRT_SOFT_INLINE constexpr u32 sub(u32 a, u32 b) { return add(a, b ^ kSign); }
+MINRT_SOFT_INLINE constexpr u32 sub(u32 a, u32 b) { return add(a, b ^ kSignBit); }
 
 // ------------------------------------------------------------------ multiply
 
 template <class Mul>
 constexpr u32 mul_general(u32 a, u32 b) {
-  const u32 sign = (a ^ b) & kSign;
-  const u32 ax = a & kAbs, bx = b & kAbs;
-  if ((ax == 0 || bx == 0) && ax < kInf && bx < kInf) return sign;  // the common case here
-  if (ax > kInf || bx > kInf) return kQuietNaN;
-  if (ax == kInf || bx == kInf) return (ax == 0 || bx == 0) ? kQuietNaN : (sign | kInf);
+  const u32 sign = (a ^ b) & kSignBit;
+  const u32 ax = a & kAbsMask, bx = b & kAbsMask;
+  if ((ax == 0 || bx == 0) && ax < kInfBits && bx < kInfBits) return sign;  // the common case here
+  if (ax > kInfBits || bx > kInfBits) return kQuietNaN;
+  if (ax == kInfBits || bx == kInfBits) return (ax == 0 || bx == 0) ? kQuietNaN : (sign | kInfBits);
   const Unpacked ua = unpack(ax), ub = unpack(bx);
   const Wide p = Mul::mul(ua.m << 8, ub.m << 8);
   i32 e = ua.e + ub.e - 126;
   u32 m = p.hi;  // leading one at 31 or 30
   const u32 sticky = p.lo != 0 ? 1u : 0u;
-  if ((m & kSign) != 0) {
+  if ((m & kSignBit) != 0) {
     m = (m >> 1) | (m & 1u) | sticky;
   } else {
     m |= sticky;
@@ -311,28 +313,28 @@ MINRT_SOFT_INLINE constexpr bool mul_needs_general(u32 a, u32 b) {
 // a b for normal finite a and b.
 template <class Mul>
 MINRT_SOFT_INLINE constexpr u32 mul_normal(u32 a, u32 b) {
-  const Wide p = Mul::mul((a << 8) | kSign, (b << 8) | kSign);
+  const Wide p = Mul::mul((a << 8) | kSignBit, (b << 8) | kSignBit);
   i32 e = i32(((a >> 23) & 0xffu) + ((b >> 23) & 0xffu)) - 126;
   u32 m = p.hi;
   const u32 sticky = p.lo != 0 ? 1u : 0u;
-  if ((m & kSign) != 0) {
+  if ((m & kSignBit) != 0) {
     m = (m >> 1) | (m & 1u) | sticky;
   } else {
     m |= sticky;
     --e;
   }
-  return round_pack((a ^ b) & kSign, e, m);
+  return round_pack((a ^ b) & kSignBit, e, m);
 }
 
 // The general case the renderer meets most: a zero times a finite number.
 MINRT_SOFT_INLINE constexpr bool mul_gives_zero(u32 a, u32 b) {
   const u32 ax = a << 1, bx = b << 1;
-  return (ax == 0 && bx < (kInf << 1)) || (bx == 0 && ax < (kInf << 1));
+  return (ax == 0 && bx < (kInfBits << 1)) || (bx == 0 && ax < (kInfBits << 1));
 }
 
 template <class Mul>
 MINRT_SOFT_INLINE constexpr u32 mul(u32 a, u32 b) {
-  if (mul_needs_general(a, b)) return mul_gives_zero(a, b) ? (a ^ b) & kSign : mul_general<Mul>(a, b);
+  if (mul_needs_general(a, b)) return mul_gives_zero(a, b) ? (a ^ b) & kSignBit : mul_general<Mul>(a, b);
   return mul_normal<Mul>(a, b);
 }
 
@@ -340,18 +342,18 @@ MINRT_SOFT_INLINE constexpr u32 mul(u32 a, u32 b) {
 
 template <class Div>
 MINRT_SOFT_INLINE constexpr u32 div(u32 a, u32 b) {
-  const u32 sign = (a ^ b) & kSign;
-  const u32 ax = a & kAbs, bx = b & kAbs;
+  const u32 sign = (a ^ b) & kSignBit;
+  const u32 ax = a & kAbsMask, bx = b & kAbsMask;
   const u32 ea = ax >> 23, eb = bx >> 23;
   Unpacked ua, ub;
   if (ea - 1u < 254u && eb - 1u < 254u) {
-    ua = {i32(ea), (ax & kFrac) | kHidden};
-    ub = {i32(eb), (bx & kFrac) | kHidden};
+    ua = {i32(ea), (ax & kFracMask) | kHiddenBit};
+    ub = {i32(eb), (bx & kFracMask) | kHiddenBit};
   } else {
-    if (ax > kInf || bx > kInf) return kQuietNaN;
-    if (ax == kInf) return bx == kInf ? kQuietNaN : (sign | kInf);
-    if (bx == kInf) return sign;
-    if (bx == 0) return ax == 0 ? kQuietNaN : (sign | kInf);
+    if (ax > kInfBits || bx > kInfBits) return kQuietNaN;
+    if (ax == kInfBits) return bx == kInfBits ? kQuietNaN : (sign | kInfBits);
+    if (bx == kInfBits) return sign;
+    if (bx == 0) return ax == 0 ? kQuietNaN : (sign | kInfBits);
     if (ax == 0) return sign;
     ua = unpack(ax);
     ub = unpack(bx);
@@ -372,11 +374,11 @@ MINRT_SOFT_INLINE constexpr u32 div(u32 a, u32 b) {
 // Correctly rounded (there are no ties: a square root of a float is never
 // halfway between two floats). Digit by digit, two radicand bits a step.
 constexpr u32 sqrt(u32 a) {
-  const u32 ax = a & kAbs;
-  if (ax > kInf) return kQuietNaN;
+  const u32 ax = a & kAbsMask;
+  if (ax > kInfBits) return kQuietNaN;
   if (ax == 0) return a;  // +0, -0
-  if ((a & kSign) != 0) return kQuietNaN;
-  if (ax == kInf) return a;
+  if ((a & kSignBit) != 0) return kQuietNaN;
+  if (ax == kInfBits) return a;
   Unpacked u = unpack(ax);
   // value = m 2^(e - 150); make e - 150 even, so sqrt = sqrt(m') 2^((e-150)/2).
   i32 e = u.e - 150;
@@ -415,13 +417,13 @@ constexpr u32 sqrt(u32 a) {
 
 // ---------------------------------------------------------------- comparisons
 
-constexpr bool is_nan(u32 a) { return (a & kAbs) > kInf; }
+constexpr bool is_nan(u32 a) { return (a & kAbsMask) > kInfBits; }
 constexpr bool unordered(u32 a, u32 b) { return is_nan(a) || is_nan(b); }
 
 // -1, 0, 1 for a < b, a == b, a > b; `unord` when either is NaN.
 MINRT_SOFT_INLINE constexpr int compare(u32 a, u32 b, int unord) {
   const u32 ax = a << 1, bx = b << 1;  // magnitudes, shifted
-  if (ax > (kInf << 1) || bx > (kInf << 1)) return unord;
+  if (ax > (kInfBits << 1) || bx > (kInfBits << 1)) return unord;
   if ((ax | bx) == 0) return 0;  // +0 == -0
   // Sign and magnitude order as two's complement integers, reversed when
   // both are negative.
@@ -434,7 +436,7 @@ MINRT_SOFT_INLINE constexpr int compare(u32 a, u32 b, int unord) {
 
 // int32 -> float, round to nearest even.
 constexpr u32 from_int(i32 i) {
-  const u32 sign = i < 0 ? kSign : 0u;
+  const u32 sign = i < 0 ? kSignBit : 0u;
   const u32 mag = i < 0 ? 0u - u32(i) : u32(i);
   if (mag == 0) return 0;
   const int s = clz(mag);
@@ -453,13 +455,13 @@ constexpr u32 from_uint(u32 mag) {
 // float -> int32, truncation toward zero; out of range and NaN: saturated
 // (NaN to INT32_MAX), as RISC-V fcvt.w.s.
 constexpr i32 to_int(u32 a) {
-  const u32 ax = a & kAbs;
-  if (ax > kInf) return INT32_MAX;
+  const u32 ax = a & kAbsMask;
+  if (ax > kInfBits) return INT32_MAX;
   const i32 e = i32(ax >> 23) - 127;
   if (e < 0) return 0;
-  const bool neg = (a & kSign) != 0;
+  const bool neg = (a & kSignBit) != 0;
   if (e >= 31) return neg ? INT32_MIN : INT32_MAX;
-  const u32 m = (ax & kFrac) | kHidden;
+  const u32 m = (ax & kFracMask) | kHiddenBit;
   const u32 mag = e >= 23 ? m << (e - 23) : m >> (23 - e);
   return neg ? i32(0u - mag) : i32(mag);
 }
@@ -467,13 +469,13 @@ constexpr i32 to_int(u32 a) {
 // float -> uint32, truncation; negative gives 0, too large and NaN give
 // UINT32_MAX (fcvt.wu.s).
 constexpr u32 to_uint(u32 a) {
-  const u32 ax = a & kAbs;
-  if (ax > kInf) return UINT32_MAX;
+  const u32 ax = a & kAbsMask;
+  if (ax > kInfBits) return UINT32_MAX;
   const i32 e = i32(ax >> 23) - 127;
   if (e < 0) return 0;
-  if ((a & kSign) != 0) return 0;
+  if ((a & kSignBit) != 0) return 0;
   if (e >= 32) return UINT32_MAX;
-  const u32 m = (ax & kFrac) | kHidden;
+  const u32 m = (ax & kFracMask) | kHiddenBit;
   return e >= 23 ? m << (e - 23) : m >> (23 - e);
 }
 
